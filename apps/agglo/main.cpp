@@ -1,0 +1,38 @@
+// agglo command-line front end. Exit codes: 0 ok, 1 internal error, 2 bad input, 3 numerical failure.
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "agglo/core/error.hpp"
+#include "agglo/core/progress.hpp"
+#include "agglo/core/version.hpp"
+#include "command.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "agglo - adhesive DEM with surface-resolved electrostatics, and DSMC acoustic agglomeration.\n"
+      "Run `agglo <command> --help` for the options of a command."};
+  app.set_version_flag("-V,--version", fmt::format("agglo {} (git {})", agglo::kVersion, agglo::kGitHash));
+  app.add_flag_callback("-q,--quiet", [] { agglo::Progress::quiet() = true; }, "No progress line on stderr");
+  app.require_subcommand(1);
+  app.fallthrough();
+  for (auto& reg : agglo::cli::registry()) reg(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  } catch (const agglo::ConfigError& e) {
+    std::fprintf(stderr, "agglo: error: %s\n", e.what());
+    return 2;
+  } catch (const agglo::NumericalError& e) {
+    std::fprintf(stderr, "agglo: numerical failure: %s\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "agglo: internal error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

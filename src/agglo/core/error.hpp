@@ -1,0 +1,17 @@
+#pragma once
+// Error types. ConfigError -> exit code 2 (bad input); NumericalError -> exit code 3
+// (blow-up detected during a run: NaN, energy explosion, violated probability bound).
+#include <stdexcept>
+#include <string>
+
+namespace agglo {
+
+struct ConfigError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct NumericalError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace agglo

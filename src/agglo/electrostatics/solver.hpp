@@ -1,0 +1,83 @@
+#pragma once
+// Electrostatics of charged dielectric spheres: one interface, several solvers (MODEL.md Part B).
+//
+// Input: sphere centres [m], radii [m], free charges q [C] (uniform sigma_f = q/(4 pi r^2)),
+// relative permittivities kappa_p, the medium permittivity kappa_0 and an applied field [V/m].
+// Output: force [N] and torque [N m] on each sphere (about its centre), the energy
+// U = 1/2 \int phi sigma_f dS [J] (MODEL B.1), and solver statistics.
+//
+// Solvers are selected by name ("coulomb", "spectral", "bem") through make_solver().
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "agglo/core/vec3.hpp"
+
+namespace agglo::es {
+
+struct Sphere {
+  Vec3 center;              // [m]
+  double radius = 0.0;      // [m], the electrostatic radius (after any min-gap shrinking)
+  double charge = 0.0;      // free charge [C]
+  double permittivity = 1;  // relative permittivity kappa_p (> 0)
+};
+
+struct Problem {
+  std::vector<Sphere> spheres;
+  double medium_permittivity = 1.0;  // kappa_0
+  Vec3 external_field;               // [V/m]
+};
+
+struct SolverStats {
+  int iterations = 0;        // GMRES iterations (0 for direct/closed-form solvers)
+  double residual = 0.0;     // final relative residual
+  double seconds = 0.0;      // wall time of the solve
+  int degree = 0;            // spectral: expansion degree L used; bem: patches per sphere
+  nlohmann::json extra;      // solver specific
+};
+
+struct Solution {
+  std::vector<Vec3> force;   // [N]
+  std::vector<Vec3> torque;  // [N m], about each sphere's centre
+  double energy = 0.0;       // [J]
+  SolverStats stats;
+};
+
+// Surface sample for output (.vtu): position, outward normal, patch area, charge densities [C/m^2].
+struct SurfaceSample {
+  Vec3 position, normal;
+  double area = 0.0;
+  double sigma_free = 0.0, sigma_bound = 0.0;
+  int body = 0;
+};
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+  virtual std::string name() const = 0;
+  // Solve; implementations may keep state to warm-start the next call (same number of spheres).
+  virtual Solution solve(const Problem& p) = 0;
+  // Surface charge of the last solve (for output). Solvers without a surface return point samples.
+  virtual std::vector<SurfaceSample> surface() const = 0;
+};
+
+struct SolverOptions {
+  std::string solver = "spectral";  // "coulomb" | "spectral" | "bem"
+  // spectral
+  int max_degree = 0;               // 0 = choose L from the smallest gap for `target_accuracy`
+  double target_accuracy = 1e-4;    // relative force accuracy used to pick L
+  int max_degree_limit = 80;        // hard cap on automatically chosen L
+  // bem
+  int patches_per_sphere = 2000;
+  double tolerance = 1e-6;          // GMRES relative residual
+  int max_iterations = 200;
+  std::string matvec = "fmm";       // "fmm" | "direct"
+  int fmm_order = 0;                // 0 = chosen from tolerance (1-2 digits tighter than GMRES)
+  int fmm_leaf_size = 64;
+};
+
+std::unique_ptr<Solver> make_solver(const SolverOptions& opt);
+
+}  // namespace agglo::es
