@@ -1,0 +1,95 @@
+#include "agglo/acoustics/drag.hpp"
+
+#include <cmath>
+
+namespace agglo::acoustics {
+
+double Motion::effective_tau(const ParticleSet& p, std::size_t i, double t) const {
+  if (!inertia_correction) return p.tau[i];
+  const double ug = sound.u_amp * std::sin(sound.omega * t - sound.wavenumber * p.x[i]);
+  const double sx = ug - p.vx[i];
+  const double slip = std::sqrt(sx * sx + p.vy[i] * p.vy[i] + p.vz[i] * p.vz[i]);
+  return p.tau[i] / Gas::inertia_correction(gas.reynolds(slip, p.d[i]));
+}
+
+void Motion::set_steady_velocity(ParticleSet& p, std::size_t i, double t) const {
+  // Iterate tau_e <-> velocity twice so that C_I matches the steady slip.
+  double te = p.tau[i];
+  const double a = gas.gravity * (p.rho[i] - gas.density) / p.rho[i];
+  for (int it = 0; it < 3; ++it) {
+    const double q = sound.omega * te;
+    const double psi = sound.omega * t - sound.wavenumber * p.x[i];
+    p.vx[i] = sound.u_amp * (std::sin(psi) - q * std::cos(psi)) / (1.0 + q * q);
+    p.vy[i] = 0.0;
+    p.vz[i] = -a * te;
+    te = effective_tau(p, i, t);
+  }
+}
+
+void Motion::wrap(ParticleSet& p, std::size_t i) const {
+  double* c[3] = {&p.x[i], &p.y[i], &p.z[i]};
+  for (int k = 0; k < 3; ++k) {
+    double& v = *c[k];
+    if (v < 0.0 || v >= domain.L[k]) {
+      v -= domain.L[k] * std::floor(v / domain.L[k]);
+      if (v >= domain.L[k]) v = 0.0;  // rounding of -tiny + L
+    }
+  }
+}
+
+void Motion::advance_exact(ParticleSet& p, std::size_t i, double t, double h) const {
+  const double te = effective_tau(p, i, t);
+  const double E = std::exp(-h / te);
+  const double omE = -std::expm1(-h / te);
+  // x: forcing u_amp sin(psi), psi = omega t - k x0 (x frozen in the phase over the step).
+  if (sound.u_amp > 0.0) {
+    const double w = sound.omega, A = sound.u_amp;
+    const double q = w * te, D = 1.0 + q * q;
+    const double psi0 = w * t - sound.wavenumber * p.x[i];
+    const double s0 = std::sin(psi0), c0 = std::cos(psi0);
+    const double s1 = std::sin(psi0 + w * h), c1 = std::cos(psi0 + w * h);
+    const double vs0 = A * (s0 - q * c0) / D, vs1 = A * (s1 - q * c1) / D;
+    const double X0 = -A * (c0 + q * s0) / (w * D), X1 = -A * (c1 + q * s1) / (w * D);
+    const double dv = p.vx[i] - vs0;
+    p.x[i] += (X1 - X0) + dv * te * omE;
+    p.vx[i] = vs1 + dv * E;
+  } else {
+    p.x[i] += p.vx[i] * te * omE;
+    p.vx[i] *= E;
+  }
+  p.y[i] += p.vy[i] * te * omE;
+  p.vy[i] *= E;
+  const double vt = -gas.gravity * (p.rho[i] - gas.density) / p.rho[i] * te;  // terminal velocity
+  const double dz = p.vz[i] - vt;
+  p.z[i] += vt * h + dz * te * omE;
+  p.vz[i] = vt + dz * E;
+  wrap(p, i);
+}
+
+void Motion::advance_explicit(ParticleSet& p, std::size_t i, double t, double h) const {
+  const double te = effective_tau(p, i, t);
+  const double ug = sound.u_amp * std::sin(sound.omega * t - sound.wavenumber * p.x[i]);
+  const double a = gas.gravity * (p.rho[i] - gas.density) / p.rho[i];
+  p.vx[i] += h * (ug - p.vx[i]) / te;
+  p.vy[i] += h * (-p.vy[i]) / te;
+  p.vz[i] += h * (-p.vz[i] / te - a);
+  p.x[i] += h * p.vx[i];
+  p.y[i] += h * p.vy[i];
+  p.z[i] += h * p.vz[i];
+  wrap(p, i);
+}
+
+void Motion::advance(ParticleSet& p, std::size_t begin, std::size_t end, double t, double h, int substeps) const {
+  if (integrator == Integrator::none) return;
+  if (integrator == Integrator::exact) {
+    const double hs = h / substeps;
+    for (std::size_t i = begin; i < end; ++i)
+      for (int s = 0; s < substeps; ++s) advance_exact(p, i, t + s * hs, hs);
+    return;
+  }
+  const double hs = h / substeps;
+  for (std::size_t i = begin; i < end; ++i)
+    for (int s = 0; s < substeps; ++s) advance_explicit(p, i, t + s * hs, hs);
+}
+
+}  // namespace agglo::acoustics

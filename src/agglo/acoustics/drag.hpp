@@ -1,0 +1,49 @@
+#pragma once
+// Particle motion in the sound field (MODEL C.2; seed eqs. 3-5):
+//   m dv/dt = 3 pi mu_g d (u_g - v) C_I / C_c + (rho - rho_g) pi d^3 g / 6
+// i.e. dv/dt = (u_g - v)/tau_e + a,  tau_e = tau / C_I,  a = -g (rho - rho_g)/rho e_z.
+// Integrators over a step h:
+//  - exact: C_I frozen at the start of the step and x frozen in the wave phase; the linear ODE
+//    with sinusoidal forcing is then solved in closed form (velocity and position), so h may be
+//    much larger than tau (default).
+//  - explicit: the seed's explicit scheme (forward Euler for v, then x += h v_new); stable only
+//    for h < 2 tau_e (the engine checks this).
+//  - none: particles keep their positions and velocities (test kernels).
+#include <cstddef>
+
+#include "agglo/acoustics/gas.hpp"
+#include "agglo/acoustics/particles.hpp"
+#include "agglo/acoustics/sound.hpp"
+
+namespace agglo::acoustics {
+
+enum class Integrator { exact, explicit_euler, none };
+
+struct Domain {
+  double L[3] = {0, 0, 0};  // periodic box lengths [m]
+  int cells[3] = {1, 1, 1};
+  double volume() const { return L[0] * L[1] * L[2]; }
+  double cell_volume() const { return volume() / (cells[0] * cells[1] * cells[2]); }
+  int num_cells() const { return cells[0] * cells[1] * cells[2]; }
+};
+
+struct Motion {
+  Gas gas;
+  Sound sound;
+  Domain domain;
+  Integrator integrator = Integrator::exact;
+  bool inertia_correction = true;
+
+  // Effective relaxation time tau/C_I of sample i for its current slip at time t.
+  double effective_tau(const ParticleSet& p, std::size_t i, double t) const;
+  // Steady periodic response to the wave plus terminal settling velocity at time t (initial state).
+  void set_steady_velocity(ParticleSet& p, std::size_t i, double t) const;
+  // Advance samples [begin, end) from t to t + h with the chosen integrator using `substeps`
+  // sub-steps (explicit scheme) or one closed-form step (exact). Positions are wrapped.
+  void advance(ParticleSet& p, std::size_t begin, std::size_t end, double t, double h, int substeps) const;
+  void advance_exact(ParticleSet& p, std::size_t i, double t, double h) const;
+  void advance_explicit(ParticleSet& p, std::size_t i, double t, double h) const;
+  void wrap(ParticleSet& p, std::size_t i) const;
+};
+
+}  // namespace agglo::acoustics

@@ -1,0 +1,64 @@
+#include "agglo/acoustics/particles.hpp"
+
+#include <cmath>
+
+#include "agglo/core/constants.hpp"
+
+namespace agglo::acoustics {
+
+const char* phase_name(Phase p) {
+  switch (p) {
+    case Phase::solid: return "solid";
+    case Phase::liquid: return "liquid";
+    case Phase::mixed: return "mixed";
+  }
+  return "?";
+}
+
+void ParticleSet::resize(std::size_t n) {
+  for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
+                  &slip_l, &cphi, &sphi, &phase_code})
+    v->resize(n, 0.0);
+  pop.resize(n, 0);
+  id.resize(n, 0);
+}
+
+std::size_t ParticleSet::add(double x_, double y_, double z_, double vs, double vl, double m, double w_, int p,
+                             const Gas& gas, const Sound& sound) {
+  const std::size_t i = size();
+  resize(i + 1);
+  x[i] = x_;
+  y[i] = y_;
+  z[i] = z_;
+  vol_s[i] = vs;
+  vol_l[i] = vl;
+  mass[i] = m;
+  w[i] = w_;
+  pop[i] = p;
+  id[i] = i;
+  refresh(i, gas, sound);
+  return i;
+}
+
+void ParticleSet::refresh(std::size_t i, const Gas& gas, const Sound& sound) {
+  const double v = vol_s[i] + vol_l[i];
+  d[i] = std::cbrt(6.0 * v / constants::pi);
+  rho[i] = mass[i] / v;
+  cc[i] = gas.slip_correction(d[i]);
+  tau[i] = rho[i] * d[i] * d[i] * cc[i] / (18.0 * gas.viscosity);
+  const double wt = sound.omega * tau[i];
+  const double s = std::sqrt(1.0 + wt * wt);
+  slip_l[i] = wt / s;
+  cphi[i] = 1.0 / s;
+  sphi[i] = wt / s;
+  phase_code[i] = vol_l[i] <= 0.0 ? 0.0 : (vol_s[i] <= 0.0 ? 1.0 : 2.0);
+}
+
+void ParticleSet::copy_sample(std::size_t from, std::size_t to) {
+  for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
+                  &slip_l, &cphi, &sphi, &phase_code})
+    (*v)[to] = (*v)[from];
+  pop[to] = pop[from];
+}
+
+}  // namespace agglo::acoustics

@@ -1,0 +1,50 @@
+#pragma once
+// Sampled particles of the DSMC (structure of arrays). Sample i stands for w_i real particles
+// (integer-valued weight stored as double) that share position, velocity, solid volume, liquid
+// volume and mass. Diameter and density follow from them (seed eqs. 15-16):
+//   d = (6 (V_s + V_l) / pi)^(1/3),  rho = m / (V_s + V_l).
+// Phase (MODEL C.5): solid (V_l = 0), liquid (V_s = 0), mixed (both > 0).
+// Derived per-sample quantities used by motion and kernels are cached and refreshed by
+// `refresh(i, ...)` after every change of size or mass.
+#include <cstdint>
+#include <vector>
+
+#include "agglo/acoustics/gas.hpp"
+#include "agglo/acoustics/sound.hpp"
+
+namespace agglo::acoustics {
+
+enum class Phase : std::uint8_t { solid = 0, liquid = 1, mixed = 2 };
+const char* phase_name(Phase p);
+
+struct ParticleSet {
+  // State.
+  std::vector<double> x, y, z;        // position [m]
+  std::vector<double> vx, vy, vz;     // velocity [m/s]
+  std::vector<double> vol_s, vol_l;   // solid / liquid volume of one real particle [m^3]
+  std::vector<double> mass;           // mass of one real particle [kg]
+  std::vector<double> w;              // number weight (integer valued)
+  std::vector<double> debt;           // kinetic energy owed by split-merge (seed eq. 29) [J]
+  std::vector<double> debt_ref;       // w m of the particle that incurred the debt [kg] (seed eq. 30)
+  std::vector<int> pop;               // population of origin (largest volume wins on merging)
+  std::vector<std::uint64_t> id;      // stable id
+  // Derived caches.
+  std::vector<double> d, rho;         // diameter [m], density [kg/m^3]
+  std::vector<double> cc;             // Cunningham slip correction
+  std::vector<double> tau;            // Stokes relaxation time with slip, C_I = 1 [s]
+  std::vector<double> slip_l;         // slip coefficient l = w tau / sqrt(1 + (w tau)^2)
+  std::vector<double> cphi, sphi;     // cos/sin of phase lag phi = atan(w tau)
+  std::vector<double> phase_code;     // Phase as double (0 solid, 1 liquid, 2 mixed) for SIMD-free lookups
+
+  std::size_t size() const { return x.size(); }
+  void resize(std::size_t n);
+  // Append one sample; returns its index (caches refreshed).
+  std::size_t add(double x, double y, double z, double vol_s, double vol_l, double mass, double w, int pop,
+                  const Gas& gas, const Sound& sound);
+  Phase phase(std::size_t i) const { return static_cast<Phase>(static_cast<int>(phase_code[i])); }
+  void refresh(std::size_t i, const Gas& gas, const Sound& sound);
+  void copy_sample(std::size_t from, std::size_t to);
+  double volume(std::size_t i) const { return vol_s[i] + vol_l[i]; }
+};
+
+}  // namespace agglo::acoustics

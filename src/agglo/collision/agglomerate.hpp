@@ -1,0 +1,17 @@
+#pragma once
+// Built-in agglomerates and the projectile (MODEL.md A.3). Contacts start at the JKR equilibrium
+// overlap delta0 = a0^2/(3R) (zero elastic force). The projectile (last particle) starts a surface gap
+// of gap_radii * r_p before the agglomerate and moves along +x towards its centroid, offset along y.
+//   tetrahedron: regular, edge (0,1) along z facing the projectile; charges +,-,+,-.
+//   square:      2x2 in the x-y plane, side (0,3) facing the projectile; charges +,-,+,- round the ring.
+#include "agglo/collision/collision_case.hpp"
+#include "agglo/dem/particles.hpp"
+
+namespace agglo::collision {
+
+// Agglomerate only (index 0..N-1), at rest, centroid at the origin.
+dem::Particles build_agglomerate(const CollisionCase& c);
+// Appends the projectile (index N) for speed v [m/s].
+void add_projectile(dem::Particles& p, const CollisionCase& c, double speed);
+
+}  // namespace agglo::collision

@@ -1,0 +1,48 @@
+#include "agglo/collision/collision_writers.hpp"
+
+#include <fmt/format.h>
+
+namespace agglo::collision {
+
+void write_timeseries(const OutputDir& out, const Recorder& rec) {
+  out.write("timeseries.csv", [&](std::ostream& o) {
+    o << "t,kinetic_energy,electrostatic_energy,U_over_U0,radius_of_gyration,n_contacts\n";
+    for (const auto& r : rec.rows)
+      o << fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{}\n", r.t, r.kinetic, r.electrostatic, r.u_over_u0, r.rg,
+                       r.contacts);
+  });
+}
+
+void write_snapshots(const OutputDir& out, const Recorder& rec) {
+  std::vector<std::pair<double, std::string>> files;
+  for (std::size_t k = 0; k < rec.snapshots.size(); ++k) {
+    std::string name = fmt::format("snapshots/particles_{:04d}.vtp", k);
+    out.write(name, [&](std::ostream& o) { io::write_vtp(o, rec.snapshots[k].second); });
+    files.emplace_back(rec.snapshots[k].first, name);
+  }
+  if (!files.empty()) out.write("particles.pvd", [&](std::ostream& o) { io::write_pvd(o, files); });
+}
+
+nlohmann::json outcome_json(const CollisionOutcome& o) {
+  nlohmann::json frags = nlohmann::json::array();
+  for (const auto& f : o.fragments)
+    frags.push_back({{"members", f.members},
+                     {"escaping", f.escaping},
+                     {"separation_rate_m_per_s", f.separation_rate},
+                     {"relative_kinetic_energy_J", f.relative_ke},
+                     {"electrostatic_binding_J", f.binding}});
+  return {{"speed_m_per_s", o.speed},   {"broken", o.broken},          {"undecided", o.undecided},
+          {"projectile_contact", o.contact}, {"components", o.components}, {"fragments", frags},
+          {"t_first_contact_s", o.t_contact}, {"t_end_s", o.t_end},   {"dt_s", o.dt},
+          {"steps", o.steps},           {"extensions", o.extensions}};
+}
+
+nlohmann::json vcrit_json(const VcritResult& r) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const auto& o : r.runs)
+    runs.push_back({{"v", o.speed}, {"broken", o.broken}, {"undecided", o.undecided}, {"contact", o.contact}});
+  return {{"v_crit", r.v_crit}, {"bracket", {r.lo, r.hi}}, {"rounds", r.rounds}, {"runs", runs},
+          {"warnings", r.warnings}};
+}
+
+}  // namespace agglo::collision

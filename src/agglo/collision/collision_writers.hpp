@@ -1,0 +1,18 @@
+#pragma once
+// Observers of the collision experiment: CSV time series, VTK snapshots, result and vcrit JSON.
+#include <nlohmann/json.hpp>
+
+#include "agglo/collision/experiment.hpp"
+#include "agglo/collision/vcrit.hpp"
+#include "agglo/core/output.hpp"
+
+namespace agglo::collision {
+
+// timeseries.csv: t,kinetic_energy,electrostatic_energy,U_over_U0,radius_of_gyration,n_contacts
+void write_timeseries(const OutputDir& out, const Recorder& rec);
+// snapshots/particles_NNNN.vtp + particles.pvd
+void write_snapshots(const OutputDir& out, const Recorder& rec);
+nlohmann::json outcome_json(const CollisionOutcome& o);
+nlohmann::json vcrit_json(const VcritResult& r);
+
+}  // namespace agglo::collision

@@ -1,0 +1,61 @@
+#pragma once
+// One collision run (MODEL.md A.3): optional relaxation of the agglomerate under electrostatics,
+// launch of the projectile, integration until `after_contact` after its first contact, break-up
+// classification (extended while undecided). The engine records time series and snapshots into a
+// Recorder; it never writes files itself.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "agglo/collision/collision_case.hpp"
+#include "agglo/dem/dem_system.hpp"
+#include "agglo/io/vtk_particles.hpp"
+
+namespace agglo::collision {
+
+struct TimeseriesRow {
+  double t = 0.0;          // time since launch [s]
+  double kinetic = 0.0;    // [J]
+  double electrostatic = 0.0;  // [J]
+  double u_over_u0 = 0.0;  // electrostatic energy / U0, U0 = 2 pi r_p^3 sigma_f^2 / eps0
+  double rg = 0.0;         // radius of gyration of all particles [m]
+  int contacts = 0;
+};
+
+struct Recorder {
+  std::vector<TimeseriesRow> rows;
+  std::vector<std::pair<double, io::ParticleSnapshot>> snapshots;
+};
+
+struct Fragment {
+  std::vector<int> members;    // particle indices (projectile = last)
+  bool escaping = false;
+  double separation_rate = 0.0;  // d|x_F - x_rest|/dt [m/s]
+  double relative_ke = 0.0;      // 1/2 mu |v_F - v_rest|^2 [J]
+  double binding = 0.0;          // point-charge electrostatic binding to the rest (>= 0) [J]
+};
+
+struct CollisionOutcome {
+  double speed = 0.0;
+  bool broken = false;
+  bool undecided = false;       // fragments neither escaping nor re-attached after all extensions
+  bool contact = false;         // the projectile touched the agglomerate
+  std::vector<std::vector<int>> components;  // contact-graph components at the end
+  std::vector<Fragment> fragments;            // detached parts of the original agglomerate
+  double t_contact = 0.0, t_end = 0.0, dt = 0.0;
+  long steps = 0;
+  int extensions = 0;
+};
+
+// Electrostatic coupling factory (defined in electrostatic_coupling.cpp).
+std::unique_ptr<dem::ExternalForce> make_electrostatic_force(const CollisionCase& c);
+
+CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* rec = nullptr);
+
+// Radius of gyration [(1/N) sum |x_i - x_c|^2]^(1/2).
+double radius_of_gyration(const dem::Particles& p);
+
+// Classification of the current state (used by run_collision; exposed for tests).
+CollisionOutcome classify(const dem::DemSystem& sys, std::size_t n_agglomerate, double medium_permittivity);
+
+}  // namespace agglo::collision

@@ -1,0 +1,154 @@
+#include "agglo/dem/dem_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "agglo/core/error.hpp"
+
+namespace agglo::dem {
+
+double reference_period(const Particles& p, const ContactParams& c) {
+  double best = 1e300;
+  // The smallest period belongs to the lightest, smallest particles; check the two smallest radii.
+  std::vector<std::size_t> idx(p.size());
+  for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
+  std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return p.m[a] < p.m[b]; });
+  std::size_t lim = std::min<std::size_t>(idx.size(), 3);
+  for (std::size_t a = 0; a < lim; ++a)
+    for (std::size_t b = a; b < lim; ++b) {
+      auto i = idx[a], j = idx[b];
+      double R = p.r[i] * p.r[j] / (p.r[i] + p.r[j]);
+      auto jkr = JkrPair::make(R, c.estar(), c.surface_energy);
+      double mstar = p.m[i] * p.m[j] / (p.m[i] + p.m[j]);
+      double k0 = 0.9905 * jkr.Fc / jkr.deltaC;
+      best = std::min(best, 2.0 * constants::pi * std::sqrt(mstar / k0));
+    }
+  return best;
+}
+
+DemSystem::DemSystem(Particles particles, DemParams params) : p_(std::move(particles)), params_(params) {
+  alpha_ = damping_alpha(params_.contact.restitution);
+  dt_ = params_.dt > 0.0 ? params_.dt : reference_period(p_, params_.contact) / params_.steps_per_period;
+  double rmin = p_.size() ? *std::min_element(p_.r.begin(), p_.r.end()) : 1.0;
+  skin_ = params_.skin > 0.0 ? params_.skin : 0.1 * rmin;
+}
+
+JkrPair DemSystem::jkr_for(std::uint32_t i, std::uint32_t j) const {
+  double R = p_.r[i] * p_.r[j] / (p_.r[i] + p_.r[j]);
+  return JkrPair::make(R, params_.contact.estar(), params_.contact.surface_energy);
+}
+
+void DemSystem::compute_forces() {
+  const std::size_t n = p_.size();
+  if (nl_.needs_rebuild(p_.x, skin_))
+    nl_.build(p_.x, p_.r, skin_, [this](std::uint32_t i, std::uint32_t j) { return jkr_for(i, j); });
+  auto& pairs = nl_.pairs();
+  const std::int64_t np = static_cast<std::int64_t>(pairs.size());
+  pair_forces_.resize(pairs.size());
+  const ContactParams& cp = params_.contact;
+#pragma omp parallel for schedule(static) if (np > 4096)
+  for (std::int64_t k = 0; k < np; ++k) {
+    Pair& pr = pairs[k];
+    PairKinematics kin{p_.x[pr.i], p_.x[pr.j], p_.v[pr.i], p_.v[pr.j], p_.w[pr.i], p_.w[pr.j],
+                       p_.r[pr.i], p_.r[pr.j], p_.m[pr.i], p_.m[pr.j]};
+    pair_forces_[k] = contact_force(cp, pr.jkr, alpha_, kin, pr.state, dt_);
+  }
+  const auto& off = nl_.offsets();
+  const auto& ent = nl_.entries();
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (std::int64_t q = 0; q < static_cast<std::int64_t>(n); ++q) {
+    Vec3 f, t;
+    for (std::int64_t e = off[q]; e < off[q + 1]; ++e) {
+      std::int64_t k = ent[e];
+      if (k >= 0) {
+        f += pair_forces_[k].f_on_i;
+        t += pair_forces_[k].t_on_i;
+      } else {
+        f -= pair_forces_[~k].f_on_i;
+        t += pair_forces_[~k].t_on_j;
+      }
+    }
+    p_.f[q] = f;
+    p_.t[q] = t;
+  }
+  if (ext_) ext_->add_forces(p_, step_, time_, p_.f, p_.t);
+  forces_ready_ = true;
+}
+
+void DemSystem::step() {
+  if (!forces_ready_) compute_forces();
+  const std::int64_t n = static_cast<std::int64_t>(p_.size());
+  const double h = 0.5 * dt_;
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (std::int64_t q = 0; q < n; ++q) {
+    p_.v[q] += (h / p_.m[q]) * p_.f[q];
+    p_.w[q] += (h / p_.I[q]) * p_.t[q];
+    p_.x[q] += dt_ * p_.v[q];
+  }
+  time_ += dt_;
+  ++step_;
+  compute_forces();
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (std::int64_t q = 0; q < n; ++q) {
+    p_.v[q] += (h / p_.m[q]) * p_.f[q];
+    p_.w[q] += (h / p_.I[q]) * p_.t[q];
+  }
+  if (step_ % 256 == 0) check_state();
+}
+
+void DemSystem::check_state() const {
+  for (std::size_t q = 0; q < p_.size(); ++q) {
+    if (!isfinite(p_.x[q]) || !isfinite(p_.v[q]) || !isfinite(p_.w[q]))
+      throw NumericalError(fmt::format("DEM: non-finite state of particle {} at step {} (t = {:.6g} s); "
+                                       "reduce the time step",
+                                       q, step_, time_));
+    // A particle faster than one radius per step has certainly blown up.
+    if (norm(p_.v[q]) * dt_ > p_.r[q])
+      throw NumericalError(fmt::format("DEM: particle {} moves more than its radius per step at step {} "
+                                       "(|v| = {:.3g} m/s): energy explosion; reduce the time step",
+                                       q, step_, norm(p_.v[q])));
+  }
+}
+
+double DemSystem::translational_kinetic_energy() const {
+  double e = 0.0;
+  for (std::size_t q = 0; q < p_.size(); ++q) e += 0.5 * p_.m[q] * norm2(p_.v[q]);
+  return e;
+}
+
+double DemSystem::kinetic_energy() const {
+  double e = translational_kinetic_energy();
+  for (std::size_t q = 0; q < p_.size(); ++q) e += 0.5 * p_.I[q] * norm2(p_.w[q]);
+  return e;
+}
+
+int DemSystem::active_contacts() const {
+  int c = 0;
+  for (const auto& pr : nl_.pairs()) c += pr.state.active ? 1 : 0;
+  return c;
+}
+
+std::vector<int> DemSystem::contacts_per_particle() const {
+  std::vector<int> c(p_.size(), 0);
+  for (const auto& pr : nl_.pairs())
+    if (pr.state.active) {
+      ++c[pr.i];
+      ++c[pr.j];
+    }
+  return c;
+}
+
+Vec3 DemSystem::momentum() const {
+  Vec3 P;
+  for (std::size_t q = 0; q < p_.size(); ++q) P += p_.m[q] * p_.v[q];
+  return P;
+}
+
+Vec3 DemSystem::angular_momentum() const {
+  Vec3 L;
+  for (std::size_t q = 0; q < p_.size(); ++q) L += p_.m[q] * cross(p_.x[q], p_.v[q]) + p_.I[q] * p_.w[q];
+  return L;
+}
+
+}  // namespace agglo::dem

@@ -1,0 +1,66 @@
+#include "agglo/dem/jkr.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "agglo/core/constants.hpp"
+
+namespace agglo::dem {
+
+namespace {
+const double kCbrt6 = std::cbrt(6.0);
+const double kSMin = 1.0 / std::cbrt(6.0);  // s at delta = -delta_C (dd/ds = 0)
+}  // namespace
+
+JkrPair JkrPair::make(double R, double Estar, double gamma) {
+  JkrPair p;
+  p.R = R;
+  p.Estar = Estar;
+  p.gamma = gamma;
+  p.Fc = 3.0 * constants::pi * gamma * R;
+  p.a0 = std::cbrt(9.0 * constants::pi * gamma * R * R / Estar);
+  p.deltaC = p.a0 * p.a0 / (2.0 * kCbrt6 * R);
+  return p;
+}
+
+double JkrPair::delta_of_a(double a) const {
+  return a * a / R - 2.0 * std::sqrt(constants::pi * gamma * a / Estar);
+}
+
+double JkrPair::a_of_delta(double delta, double a_guess) const {
+  const double d = delta / (kCbrt6 * deltaC);  // target of f(s) = 2 s^4 - 4/3 s
+  if (d <= -kSMin) return kSMin * kSMin * a0;  // at/below the break point: the turning point
+  // f is convex and increasing for s >= s_min: Newton from the right of the root converges
+  // monotonically. Start from the guess if it is to the right, else from an upper bound.
+  double s_hi = std::max(1.0, std::pow(std::max(d, 0.0) / 2.0 + 1.0, 0.25) + 0.5);
+  double s = s_hi;
+  if (a_guess > 0.0) {
+    double sg = std::sqrt(a_guess / a0);
+    if (sg > kSMin && 2.0 * sg * sg * sg * sg - 4.0 / 3.0 * sg >= d) s = sg;
+  }
+  for (int it = 0; it < 200; ++it) {
+    double s3 = s * s * s;
+    double f = 2.0 * s3 * s - 4.0 / 3.0 * s - d;
+    double fp = 8.0 * s3 - 4.0 / 3.0;
+    double step = f / fp;
+    double s_new = std::max(s - step, kSMin);
+    if (std::abs(s_new - s) <= 1e-16 * s) {
+      s = s_new;
+      break;
+    }
+    s = s_new;
+  }
+  return s * s * a0;
+}
+
+double JkrPair::force_of_a(double a) const {
+  double x = a / a0;
+  return 4.0 * Fc * (x * x * x - x * std::sqrt(x));
+}
+
+double damping_alpha(double e) {
+  return 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * std::pow(e, 3) + 27.467 * std::pow(e, 4) -
+         18.022 * std::pow(e, 5) + 4.8218 * std::pow(e, 6);
+}
+
+}  // namespace agglo::dem

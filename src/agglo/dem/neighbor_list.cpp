@@ -1,0 +1,98 @@
+#include "agglo/dem/neighbor_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace agglo::dem {
+
+bool NeighborList::needs_rebuild(const std::vector<Vec3>& x, double skin) const {
+  if (x.size() != x_at_build_.size()) return true;
+  const double lim2 = 0.25 * skin * skin;
+  for (std::size_t p = 0; p < x.size(); ++p)
+    if (norm2(x[p] - x_at_build_[p]) > lim2) return true;
+  return false;
+}
+
+void NeighborList::build(const std::vector<Vec3>& x, const std::vector<double>& r, double skin,
+                         const std::function<JkrPair(std::uint32_t, std::uint32_t)>& make_jkr) {
+  const std::size_t n = x.size();
+  ++builds_;
+  x_at_build_ = x;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> found;
+  if (n > 1) {
+    double rmax = *std::max_element(r.begin(), r.end());
+    Vec3 lo = x[0], hi = x[0];
+    for (const auto& p : x)
+      for (int c = 0; c < 3; ++c) {
+        lo[c] = std::min(lo[c], p[c]);
+        hi[c] = std::max(hi[c], p[c]);
+      }
+    const double cell = 2.0 * rmax + skin;
+    std::int64_t dims[3];
+    for (int c = 0; c < 3; ++c) dims[c] = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi[c] - lo[c]) / cell) + 1);
+    // Sparse grid: hash of occupied cells keeps memory O(N) for far-flung particles.
+    auto key = [&](std::int64_t a, std::int64_t b, std::int64_t c) { return (a * dims[1] + b) * dims[2] + c; };
+    std::unordered_map<std::int64_t, std::vector<std::uint32_t>> cells;
+    cells.reserve(n);
+    std::vector<std::int64_t> ci(n * 3);
+    for (std::size_t p = 0; p < n; ++p) {
+      for (int c = 0; c < 3; ++c) ci[3 * p + c] = static_cast<std::int64_t>((x[p][c] - lo[c]) / cell);
+      cells[key(ci[3 * p], ci[3 * p + 1], ci[3 * p + 2])].push_back(static_cast<std::uint32_t>(p));
+    }
+    for (std::size_t p = 0; p < n; ++p) {
+      for (std::int64_t da = -1; da <= 1; ++da)
+        for (std::int64_t db = -1; db <= 1; ++db)
+          for (std::int64_t dc = -1; dc <= 1; ++dc) {
+            std::int64_t a = ci[3 * p] + da, b = ci[3 * p + 1] + db, c = ci[3 * p + 2] + dc;
+            if (a < 0 || b < 0 || c < 0 || a >= dims[0] || b >= dims[1] || c >= dims[2]) continue;
+            auto it = cells.find(key(a, b, c));
+            if (it == cells.end()) continue;
+            for (std::uint32_t q : it->second) {
+              if (q <= p) continue;
+              double lim = r[p] + r[q] + skin;
+              if (norm2(x[q] - x[p]) < lim * lim) found.emplace_back(static_cast<std::uint32_t>(p), q);
+            }
+          }
+    }
+  }
+  // Keep active contacts that drifted out of range (they are still bonded).
+  for (const auto& pr : pairs_)
+    if (pr.state.active) found.emplace_back(pr.i, pr.j);
+  std::sort(found.begin(), found.end());
+  found.erase(std::unique(found.begin(), found.end()), found.end());
+
+  // Merge states from the old (sorted) list.
+  std::vector<Pair> fresh;
+  fresh.reserve(found.size());
+  std::size_t k = 0;
+  for (const auto& [i, j] : found) {
+    while (k < pairs_.size() && std::make_pair(pairs_[k].i, pairs_[k].j) < std::make_pair(i, j)) ++k;
+    if (k < pairs_.size() && pairs_[k].i == i && pairs_[k].j == j) {
+      fresh.push_back(pairs_[k]);
+    } else {
+      Pair p;
+      p.i = i;
+      p.j = j;
+      p.jkr = make_jkr(i, j);
+      fresh.push_back(p);
+    }
+  }
+  pairs_.swap(fresh);
+
+  // CSR adjacency.
+  offset_.assign(n + 1, 0);
+  for (const auto& p : pairs_) {
+    ++offset_[p.i + 1];
+    ++offset_[p.j + 1];
+  }
+  for (std::size_t p = 0; p < n; ++p) offset_[p + 1] += offset_[p];
+  index_.assign(offset_[n], 0);
+  std::vector<std::int64_t> fill(offset_.begin(), offset_.end() - 1);
+  for (std::size_t kk = 0; kk < pairs_.size(); ++kk) {
+    index_[fill[pairs_[kk].i]++] = static_cast<std::int64_t>(kk);
+    index_[fill[pairs_[kk].j]++] = ~static_cast<std::int64_t>(kk);
+  }
+}
+
+}  // namespace agglo::dem

@@ -1,0 +1,44 @@
+#pragma once
+// Verlet pair list built from a uniform cell grid (O(N)). Pairs (i < j) whose surfaces are within
+// `skin` of each other are listed; the list is rebuilt when any particle has moved more than
+// skin/2 since the last build. Contact states travel with their pair across rebuilds.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "agglo/core/vec3.hpp"
+#include "agglo/dem/contact_model.hpp"
+#include "agglo/dem/jkr.hpp"
+
+namespace agglo::dem {
+
+struct Pair {
+  std::uint32_t i = 0, j = 0;
+  ContactState state;
+  JkrPair jkr;  // per-pair JKR constants (depend on the radii)
+};
+
+class NeighborList {
+ public:
+  // Rebuild from positions/radii; carries the states of pairs that stay listed.
+  // Active contacts are always kept even if they moved beyond the list range.
+  void build(const std::vector<Vec3>& x, const std::vector<double>& r, double skin,
+             const std::function<JkrPair(std::uint32_t, std::uint32_t)>& make_jkr);
+  bool needs_rebuild(const std::vector<Vec3>& x, double skin) const;
+
+  std::vector<Pair>& pairs() { return pairs_; }
+  const std::vector<Pair>& pairs() const { return pairs_; }
+  // CSR: pairs touching particle p are entries [offset[p], offset[p+1]) of `index`;
+  // a non-negative entry k means p is pair k's i, ~k (negative) means p is pair k's j.
+  const std::vector<std::int64_t>& offsets() const { return offset_; }
+  const std::vector<std::int64_t>& entries() const { return index_; }
+  long builds() const { return builds_; }
+
+ private:
+  std::vector<Pair> pairs_;
+  std::vector<Vec3> x_at_build_;
+  std::vector<std::int64_t> offset_, index_;
+  long builds_ = 0;
+};
+
+}  // namespace agglo::dem
