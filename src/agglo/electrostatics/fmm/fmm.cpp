@@ -24,10 +24,11 @@ void check_options(const FmmOptions& o) {
 }  // namespace
 
 int order_for_tolerance(double tol) {
-  // Calibrated on random volume and sphere-surface points with theta = 0.5 (docs/bem_fmm.md):
-  // the relative field error (2-norm) falls by about a factor 0.25 per order.
+  // Calibrated with theta = 0.4, leaf 64 (docs/bem_fmm.md): the relative 2-norm field error on
+  // points on touching sphere surfaces (the worse of surface and volume sets) is below
+  // kFmmErrorPrefactor * kFmmErrorRatio^p.
   tol = std::clamp(tol, 1e-15, 0.1);
-  const int p = static_cast<int>(std::ceil(std::log(tol / 0.5) / std::log(0.25)));
+  const int p = static_cast<int>(std::ceil(std::log(tol / kFmmErrorPrefactor) / std::log(kFmmErrorRatio)));
   return std::clamp(p, 2, 30);
 }
 

@@ -21,11 +21,13 @@ namespace agglo::es::fmm {
 struct FmmOptions {
   int order = 10;        // expansion order p (>= 1)
   int leaf_size = 64;    // max points per leaf
-  double theta = 0.5;    // opening angle of the multipole acceptance criterion (0, 1)
+  double theta = 0.4;    // opening angle of the multipole acceptance criterion (0, 1)
 };
 
-// Expansion order for a requested relative field accuracy (calibrated with theta = 0.5 on
-// surface and volume point sets; see docs/bem_fmm.md).
+// Measured error model (theta = 0.4, leaf 64): relative field error <= prefactor * ratio^p.
+inline constexpr double kFmmErrorPrefactor = 2e-2;
+inline constexpr double kFmmErrorRatio = 0.37;
+// Smallest expansion order p whose modelled relative field error is below `tol`.
 int order_for_tolerance(double tol);
 
 class LaplaceFmm {
