@@ -1,0 +1,35 @@
+#pragma once
+// Rotation of spherical-harmonic coefficient vectors (basis of harmonics.hpp) into the frame in
+// which a given direction e becomes the z axis, and back. Used for the O(L^3) rotation-based
+// multipole-to-local translation (rotate, axial translation, rotate back).
+//
+// e = (sin b cos a, sin b sin a, cos b). The frame map is Q = R_y(-b) R_z(-a) (Q e = z):
+// to_frame returns c' with f(x) = sum c_lm Y_lm(x) = sum c'_lm Y_lm(Q x). The z rotation is a
+// 2x2 mixing of (cos, sin) pairs; the y rotation splits into a "cos" block ((l+1)^2 entries)
+// and a "sin" block (l^2 entries) per degree, built from Wigner's small d^l(b) computed by the
+// stable three-term recurrence in l (cost O(L^3) per direction, done once per pair and solve).
+#include <vector>
+
+#include "agglo/core/vec3.hpp"
+
+namespace agglo::es::sh {
+
+class FrameRotation {
+ public:
+  // Build for direction e (any length > 0) and degrees <= L.
+  void build(const Vec3& e, int L);
+  int degree() const { return L_; }
+  // out = coefficients in the rotated frame; degrees <= Lmax (<= degree()) are used.
+  void to_frame(int Lmax, const double* in, double* out) const;
+  // Inverse of to_frame.
+  void from_frame(int Lmax, const double* in, double* out) const;
+
+ private:
+  int L_ = -1;
+  std::vector<double> cosa_, sina_;   // cos(m a), sin(m a), m = 0..L
+  std::vector<double> blk_;           // per l: cos block (l+1)^2 then sin block l^2, row-major
+  std::vector<int> off_;              // offset of degree l's blocks in blk_
+  std::vector<double> d_;             // scratch: Wigner d
+};
+
+}  // namespace agglo::es::sh

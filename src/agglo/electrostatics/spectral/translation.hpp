@@ -1,0 +1,30 @@
+#pragma once
+// Axial multipole-to-local translation (basis of harmonics.hpp), MODEL B.2 item 3.
+//
+// A source expansion phi = sum_nm B_nm I_n^m(x - c) about c = +t z (t > 0) has the local
+// expansion phi = sum_jm A_jm R_j^m(x) about the origin with (same m, |m| <= j, n)
+//   A_jm = sum_n (-1)^(m+n) F(m,j,n) B_nm / t^(j+n+1),  F = (j+n)! / sqrt((j-m)!(j+m)!(n-m)!(n+m)!).
+// For c = -t z an extra (-1)^(j+n). In scaled variables (beta_n = B_n / b^(n+1) for a source
+// sphere of radius b, alpha_j = a^j A_j for a target sphere of radius a):
+//   alpha_jm = sum_n (-1)^(m+n) F(m,j,n) u^j v^(n+1) beta_nm,  u = a/t, v = b/t.
+// Cost per translation: sum_m (L-|m|+1)^2 ~ 2 L^3 / 3.
+#include <vector>
+
+namespace agglo::es::sh {
+
+class AxialTranslation {
+ public:
+  // Precompute the signed factors up to degree L (static: depends on L only).
+  void prepare(int L);
+  int degree() const { return L_; }
+  // out (+)= translated coefficients; degrees <= Lmax (<= degree()) used for source and target.
+  // sign = +1: source centre at +t z; -1: at -t z. `accumulate` adds into out.
+  void apply(int Lmax, double u, double v, int sign, const double* in, double* out) const;
+
+ private:
+  int L_ = -1;
+  std::vector<double> f_;    // per m: (L-m+1)^2 row-major (rows j, cols n), signed
+  std::vector<int> off_;
+};
+
+}  // namespace agglo::es::sh
