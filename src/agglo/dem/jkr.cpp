@@ -38,17 +38,15 @@ double JkrPair::a_of_delta(double delta, double a_guess) const {
     double sg = std::sqrt(a_guess / a0);
     if (sg > kSMin && 2.0 * sg * sg * sg * sg - 4.0 / 3.0 * sg >= d) s = sg;
   }
-  for (int it = 0; it < 200; ++it) {
+  // Quadratic convergence; near the turning point (d -> -s_min) it degrades to linear, hence the cap.
+  for (int it = 0; it < 100; ++it) {
     double s3 = s * s * s;
     double f = 2.0 * s3 * s - 4.0 / 3.0 * s - d;
     double fp = 8.0 * s3 - 4.0 / 3.0;
-    double step = f / fp;
-    double s_new = std::max(s - step, kSMin);
-    if (std::abs(s_new - s) <= 1e-16 * s) {
-      s = s_new;
-      break;
-    }
+    double s_new = std::max(s - f / fp, kSMin);
+    double change = std::abs(s_new - s);
     s = s_new;
+    if (change <= 4e-16 * s) break;
   }
   return s * s * a0;
 }
