@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages agglo needs (when missing) and builds it in Release into build/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+PKGS="build-essential cmake pkg-config libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
+      nlohmann-json3-dev librandom123-dev libgtest-dev libbenchmark-dev python3-matplotlib python3-numpy"
+missing=""
+for p in $PKGS; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
+if [ -n "$missing" ]; then
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  echo "setup: installing$missing"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing >/dev/null
+fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null
+cmake --build build -j"$(nproc)"

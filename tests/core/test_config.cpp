@@ -1,0 +1,90 @@
+// Config layer: every kind of bad input gives a one-line ConfigError naming file, key, value and rule.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "agglo/collision/collision_case.hpp"
+#include "agglo/core/config.hpp"
+#include "agglo/core/error.hpp"
+
+using namespace agglo;
+
+namespace {
+
+std::string error_of(const std::string& toml, const std::vector<std::string>& sets = {}) {
+  try {
+    auto cfg = Config::from_string(toml, "case.toml");
+    for (const auto& s : sets) cfg.apply_override(s);
+    collision::parse_collision_case(cfg);
+    cfg.check_unknown_keys();
+  } catch (const ConfigError& e) {
+    std::string m = e.what();
+    EXPECT_EQ(m.find('\n'), std::string::npos) << "message must be one line: " << m;
+    return m;
+  }
+  return "";
+}
+
+void expect_has(const std::string& msg, std::initializer_list<const char*> parts) {
+  ASSERT_FALSE(msg.empty()) << "expected an error";
+  for (auto p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' missing in: " << msg;
+}
+
+TEST(Config, ValidCaseParses) { EXPECT_EQ(error_of("[material]\nrestitution = 0.5\n"), ""); }
+
+TEST(Config, UnknownKey) {
+  expect_has(error_of("[material]\nrestitutoin = 0.5\n"), {"case.toml", "material.restitutoin", "unknown", "restitution"});
+  expect_has(error_of("bogus = 1\n"), {"case.toml", "'bogus'", "unknown"});
+  expect_has(error_of("[nosuchsection]\nx = 1\n"), {"nosuchsection", "unknown"});
+}
+
+TEST(Config, WrongType) {
+  expect_has(error_of("[agglomerate]\nradius = \"big\"\n"), {"case.toml", "agglomerate.radius", "\"big\"", "number"});
+  expect_has(error_of("[contact]\nrolling = 1\n"), {"contact.rolling", "true or false"});
+  expect_has(error_of("material = 3\n"), {"'material'", "table"});
+}
+
+TEST(Config, OutOfRangeAndNonFinite) {
+  expect_has(error_of("[agglomerate]\nradius = -1e-6\n"), {"agglomerate.radius", "-1e-06", "(0, inf) m"});
+  expect_has(error_of("[material]\nrestitution = 1.5\n"), {"material.restitution", "1.5", "(0, 1]"});
+  expect_has(error_of("[material]\nrestitution = 0.0\n"), {"material.restitution", "(0, 1]"});
+  expect_has(error_of("[material]\nyoungs_modulus = nan\n"), {"material.youngs_modulus", "nan", "finite"});
+  expect_has(error_of("[material]\ndensity = inf\n"), {"material.density", "inf", "finite"});
+  expect_has(error_of("[contact]\nbreak_rule = \"sometimes\"\n"), {"contact.break_rule", "\"marshall\", \"lammps\""});
+  expect_has(error_of("[vcrit]\nv_min = 0.5\nv_max = 0.1\n"), {"vcrit.v_max", "0.1"});
+}
+
+TEST(Config, MissingRequiredKey) {
+  expect_has(error_of("[agglomerate]\nshape = \"list\"\n[[particles]]\nposition = [0,0,0]\n[[particles]]\nposition = [1,0,0]\nradius = 1e-6\n"),
+             {"particles.0.radius", "required"});
+}
+
+TEST(Config, SyntaxError) { expect_has(error_of("[material\n"), {"case.toml:1", "syntax"}); }
+
+TEST(Config, OverridesApplyAndAreValidated) {
+  auto cfg = Config::from_string("[material]\nrestitution = 0.5\n", "case.toml");
+  cfg.apply_override("material.restitution=0.8");
+  cfg.apply_override("contact.tangential=marshall");  // bare word = string
+  auto c = collision::parse_collision_case(cfg);
+  cfg.check_unknown_keys();
+  EXPECT_DOUBLE_EQ(c.dem.contact.restitution, 0.8);
+  EXPECT_EQ(c.dem.contact.tangential, dem::TangentialModel::marshall);
+  expect_has(error_of("", {"material.restitution=2"}), {"material.restitution", "2", "(0, 1]"});
+  expect_has(error_of("", {"material.nope=2"}), {"material.nope", "unknown"});
+  EXPECT_THROW(Config::from_string("").apply_override("novalue"), ConfigError);
+}
+
+TEST(Config, ResolvedConfigHoldsDefaults) {
+  auto cfg = Config::from_string("[material]\nrestitution = 0.5\n", "case.toml");
+  collision::parse_collision_case(cfg);
+  auto text = cfg.resolved_toml();
+  // Round trip: the resolved text parses to the same values, with every default present.
+  auto again = Config::from_string(text, "resolved.toml");
+  auto c = collision::parse_collision_case(again);
+  again.check_unknown_keys();
+  EXPECT_DOUBLE_EQ(c.dem.contact.restitution, 0.5);
+  EXPECT_NE(text.find("youngs_modulus"), std::string::npos);
+  EXPECT_NE(text.find("break_rule"), std::string::npos);
+}
+
+}  // namespace
