@@ -37,6 +37,58 @@ void Motion::wrap(ParticleSet& p, std::size_t i) const {
   }
 }
 
+Motion::StepTrig Motion::trig(double t, double h) const {
+  return {std::sin(sound.omega * t), std::cos(sound.omega * t), std::sin(sound.omega * h), std::cos(sound.omega * h)};
+}
+
+void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, double h) const {
+  const double A = sound.u_amp;
+  double s0 = 0.0, c0 = 1.0;
+  if (A > 0.0) {
+    const double kx = sound.wavenumber * p.x[i];
+    const double skx = std::sin(kx), ckx = std::cos(kx);
+    s0 = tr.swt * ckx - tr.cwt * skx;  // sin(omega t - k x)
+    c0 = tr.cwt * ckx + tr.swt * skx;
+  }
+  double te = p.tau[i];
+  if (inertia_correction) {
+    const double sx = A * s0 - p.vx[i];
+    const double slip = std::sqrt(sx * sx + p.vy[i] * p.vy[i] + p.vz[i] * p.vz[i]);
+    const double re = gas.reynolds(slip, p.d[i]);
+    te /= Gas::inertia_correction_fast(re);
+  }
+  const double x = h / te;
+  // exp(-x) and 1 - exp(-x); expm1 only where 1 - exp(-x) would lose digits.
+  double E, omE;
+  if (x > 0.01) {
+    E = std::exp(-x);
+    omE = 1.0 - E;
+  } else {
+    omE = -std::expm1(-x);
+    E = 1.0 - omE;
+  }
+  if (A > 0.0) {
+    const double w = sound.omega;
+    const double q = w * te, D = 1.0 + q * q;
+    const double s1 = s0 * tr.cwh + c0 * tr.swh, c1 = c0 * tr.cwh - s0 * tr.swh;
+    const double vs0 = A * (s0 - q * c0) / D, vs1 = A * (s1 - q * c1) / D;
+    const double dX = -A * ((c1 - c0) + q * (s1 - s0)) / (w * D);
+    const double dv = p.vx[i] - vs0;
+    p.x[i] += dX + dv * te * omE;
+    p.vx[i] = vs1 + dv * E;
+  } else {
+    p.x[i] += p.vx[i] * te * omE;
+    p.vx[i] *= E;
+  }
+  p.y[i] += p.vy[i] * te * omE;
+  p.vy[i] *= E;
+  const double vt = -gas.gravity * (p.rho[i] - gas.density) / p.rho[i] * te;
+  const double dz = p.vz[i] - vt;
+  p.z[i] += vt * h + dz * te * omE;
+  p.vz[i] = vt + dz * E;
+  wrap(p, i);
+}
+
 void Motion::advance_exact(ParticleSet& p, std::size_t i, double t, double h) const {
   const double te = effective_tau(p, i, t);
   const double E = std::exp(-h / te);
@@ -83,8 +135,10 @@ void Motion::advance(ParticleSet& p, std::size_t begin, std::size_t end, double 
   if (integrator == Integrator::none) return;
   if (integrator == Integrator::exact) {
     const double hs = h / substeps;
-    for (std::size_t i = begin; i < end; ++i)
-      for (int s = 0; s < substeps; ++s) advance_exact(p, i, t + s * hs, hs);
+    for (int s = 0; s < substeps; ++s) {
+      const StepTrig tr = trig(t + s * hs, hs);
+      for (std::size_t i = begin; i < end; ++i) advance_exact(p, i, tr, hs);
+    }
     return;
   }
   const double hs = h / substeps;

@@ -42,6 +42,13 @@ struct Motion {
   // sub-steps (explicit scheme) or one closed-form step (exact). Positions are wrapped.
   void advance(ParticleSet& p, std::size_t begin, std::size_t end, double t, double h, int substeps) const;
   void advance_exact(ParticleSet& p, std::size_t i, double t, double h) const;
+  // Fast form of advance_exact with the time trigonometry of the step precomputed:
+  // swt, cwt = sin, cos(omega t); swh, cwh = sin, cos(omega h).
+  struct StepTrig {
+    double swt, cwt, swh, cwh;
+  };
+  StepTrig trig(double t, double h) const;
+  void advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, double h) const;
   void advance_explicit(ParticleSet& p, std::size_t i, double t, double h) const;
   void wrap(ParticleSet& p, std::size_t i) const;
 };

@@ -106,8 +106,35 @@ void CellBounds::include(const ParticleSet& p, std::size_t i, const Gas& gas) {
   ccd_max = std::max(ccd_max, p.cc[i] / p.d[i]);
   w_max = std::max(w_max, p.w[i]);
   const double ex = p.vx[i] - vref[0], ey = p.vy[i] - vref[1], ez = p.vz[i] - vref[2];
-  speed_dev_max = std::max(speed_dev_max, std::sqrt(ex * ex + ey * ey + ez * ez));
+  const double s2 = ex * ex + ey * ey + ez * ez;
+  if (s2 > speed_dev2_max) {
+    speed_dev2_max = s2;
+    speed_dev_max = std::sqrt(s2);
+  }
   if (need_cbar) cbar_max = std::max(cbar_max, thermal_speed(gas, p.mass[i]));
+}
+
+double Kernel::bound_cell(const CellBounds& cb) const {
+  const double sd = 2.0 * cb.d_max;
+  switch (s_.model) {
+    case KernelModel::constant: return s_.constant_coefficient;
+    case KernelModel::additive: return s_.additive_coefficient * 2.0 * cb.vol_max;
+    case KernelModel::brownian_fuchs: return 0.25 * pi * sd * sd * std::sqrt(2.0) * cb.cbar_max;
+    case KernelModel::acoustic: break;
+  }
+  double b = 0.0;
+  if (s_.orthokinetic) b += s_.collision_efficiency * beta_orthokinetic(cb.d_max, cb.d_max, 2.0 * cb.speed_dev_max);
+  if (s_.acoustic_wake) b += 0.375 * sound_.u_amp * sd * 2.0 * cb.dl_max;
+  if (s_.radiation_pressure) {
+    const double pref = std::sqrt(3.0) * gas_.density * sound_.u_amp * sound_.u_amp / (144.0 * pi * gas_.viscosity);
+    b += 2.0 * pref * cb.d_max * cb.d_max * cb.d_max;
+  }
+  if (s_.brownian) {
+    double bd = 2.0 * k_B * gas_.temperature / (3.0 * gas_.viscosity) * sd * 2.0 * cb.ccd_max;
+    if (s_.brownian_form == BrownianForm::fuchs) bd = std::max(bd, 0.25 * pi * sd * sd * std::sqrt(2.0) * cb.cbar_max);
+    b += bd;
+  }
+  return b;
 }
 
 double Kernel::bound(const ParticleSet& p, std::size_t i, const CellBounds& cb) const {

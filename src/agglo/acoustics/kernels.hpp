@@ -12,6 +12,7 @@
 // r = centre distance floored at contact (d_i+d_j)/2.
 // `bound_*` give an upper bound of the kernel over all partners j of a cell (majorant for the
 // Nanbu guard, MODEL C.4).
+#include <cmath>
 #include <string>
 
 #include "agglo/acoustics/gas.hpp"
@@ -54,12 +55,14 @@ struct CellBounds {
   double vol_max = 0.0;      // largest particle volume
   double dl_max = 0.0;       // largest d l
   double ccd_max = 0.0;      // largest C_c / d
-  double speed_dev_max = 0.0;// largest |v - v_ref|
+  double speed_dev_max = 0.0;// largest |v - v_ref| (valid after finalize())
+  double speed_dev2_max = 0.0;// its square
   double w_max = 0.0;        // largest weight
   double cbar_max = 0.0;     // largest thermal speed (Fuchs)
   double vref[3] = {0, 0, 0};// reference velocity of the cell
   bool need_cbar = false;    // track cbar_max (Fuchs only)
   void include(const ParticleSet& p, std::size_t i, const Gas& gas);
+  void finalize() { speed_dev_max = std::sqrt(speed_dev2_max); }
 };
 
 class Kernel {
@@ -70,6 +73,8 @@ class Kernel {
   double beta(const ParticleSet& p, std::size_t i, std::size_t j, double r) const;
   // Upper bound of beta(i, j) over every j the cell bounds describe.
   double bound(const ParticleSet& p, std::size_t i, const CellBounds& cb) const;
+  // Upper bound of beta over every pair of the cell.
+  double bound_cell(const CellBounds& cb) const;
   bool needs_distance() const;
 
  private:

@@ -45,6 +45,7 @@ void coalesce_weighted(ParticleSet& p, std::size_t i, std::size_t j, const Gas& 
     assign(p, i, m);
     assign(p, j, m);
     // The debts of both samples now belong to merged particles of the same group mass.
+    if (p.debt[i] <= 0.0) p.debt_ref[i] = p.debt_ref[j];
     p.debt[i] += p.debt[j];
     p.debt[j] = 0.0;
     p.refresh(i, gas, sound);

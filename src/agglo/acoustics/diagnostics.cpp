@@ -1,0 +1,58 @@
+#include "agglo/acoustics/diagnostics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace agglo::acoustics {
+
+Counts count(const ParticleSet& p, double V) {
+  Counts c;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double w = p.w[i];
+    if (w <= 0.0) continue;
+    ++c.live_samples;
+    c.n_total += w;
+    c.n_phase[static_cast<int>(p.phase(i))] += w;
+    c.solid_volume += w * p.vol_s[i];
+    c.liquid_volume += w * p.vol_l[i];
+    c.mass += w * p.mass[i];
+  }
+  c.n_total /= V;
+  for (double& x : c.n_phase) x /= V;
+  c.solid_volume /= V;
+  c.liquid_volume /= V;
+  c.mass /= V;
+  return c;
+}
+
+PsdBins PsdBins::log_spaced(double dmin, double dmax, int k) {
+  PsdBins b;
+  for (int i = 0; i <= k; ++i) b.edges.push_back(dmin * std::pow(dmax / dmin, static_cast<double>(i) / k));
+  return b;
+}
+
+int PsdBins::find(double d) const {
+  if (d < edges.front() || d >= edges.back()) return -1;
+  const auto it = std::upper_bound(edges.begin(), edges.end(), d);
+  return static_cast<int>(it - edges.begin()) - 1;
+}
+
+std::array<std::vector<double>, 4> psd(const ParticleSet& p, double V, const PsdBins& bins) {
+  const std::size_t K = bins.edges.size() - 1;
+  std::array<std::vector<double>, 4> out;
+  for (auto& v : out) v.assign(K, 0.0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.w[i] <= 0.0) continue;
+    const int b = bins.find(p.d[i]);
+    if (b < 0) continue;
+    out[static_cast<int>(p.phase(i))][b] += p.w[i];
+    out[3][b] += p.w[i];
+  }
+  for (std::size_t b = 0; b < K; ++b) {
+    const double dl = std::log10(bins.edges[b + 1] / bins.edges[b]);
+    for (auto& v : out) v[b] /= V * dl;
+  }
+  return out;
+}
+
+}  // namespace agglo::acoustics

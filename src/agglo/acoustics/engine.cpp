@@ -1,0 +1,141 @@
+#include "agglo/acoustics/engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include "agglo/core/error.hpp"
+
+namespace agglo::acoustics {
+
+Engine::Engine(EngineSettings s)
+    : s_(std::move(s)), kernel_(s_.kernel, s_.motion.gas, s_.motion.sound) {
+  substeps_ = std::max(1, static_cast<int>(std::lround(s_.collision_dt / s_.motion_dt)));
+  for (std::size_t k = 0; k < s_.populations.size(); ++k)
+    sampled_.push_back(sample_population(s_.populations[k], static_cast<int>(k), s_.motion.domain, s_.seed,
+                                         s_.motion.gas, s_.motion.sound, p_));
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    switch (s_.initial_velocity) {
+      case InitialVelocity::steady:
+        if (s_.motion.integrator != Integrator::none) s_.motion.set_steady_velocity(p_, i, 0.0);
+        break;
+      case InitialVelocity::gas:
+        p_.vx[i] = s_.motion.sound.gas_velocity(p_.x[i], 0.0);
+        break;
+      case InitialVelocity::rest: break;
+    }
+  }
+  cell_stats_.resize(static_cast<std::size_t>(s_.motion.domain.num_cells()));
+  bin();
+}
+
+std::uint64_t Engine::total_steps() const {
+  return static_cast<std::uint64_t>(std::llround(s_.t_end / s_.collision_dt));
+}
+
+void Engine::refresh_all() {
+  for (std::size_t i = 0; i < p_.size(); ++i) p_.refresh(i, s_.motion.gas, s_.motion.sound);
+  bin();
+}
+
+void Engine::bin() {
+  const Domain& D = s_.motion.domain;
+  const std::size_t n = p_.size();
+  const std::size_t nc = static_cast<std::size_t>(D.num_cells());
+  cell_of_.resize(n);
+  order_.resize(n);
+  start_.assign(nc + 1, 0);
+  const double fx = D.cells[0] / D.L[0], fy = D.cells[1] / D.L[1], fz = D.cells[2] / D.L[2];
+  for (std::size_t i = 0; i < n; ++i) {
+    const int cx = std::min(D.cells[0] - 1, static_cast<int>(p_.x[i] * fx));
+    const int cy = std::min(D.cells[1] - 1, static_cast<int>(p_.y[i] * fy));
+    const int cz = std::min(D.cells[2] - 1, static_cast<int>(p_.z[i] * fz));
+    const std::uint32_t c = static_cast<std::uint32_t>((cz * D.cells[1] + cy) * D.cells[0] + cx);
+    cell_of_[i] = c;
+    ++start_[c + 1];
+  }
+  for (std::size_t c = 0; c < nc; ++c) start_[c + 1] += start_[c];
+  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) order_[fill[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+double Engine::max_guard_pn() const {
+  const Domain& D = s_.motion.domain;
+  double m = 0.0;
+  for (int c = 0; c < D.num_cells(); ++c) {
+    const std::uint32_t* idx = order_.data() + start_[c];
+    const std::size_t n = start_[c + 1] - start_[c];
+    if (n < 2) continue;
+    const CellBounds cb = cell_bounds(p_, idx, n, kernel_, s_.motion.gas);
+    for (std::size_t a = 0; a < n; ++a)
+      m = std::max(m, guard_pn(p_, idx[a], n, cb, kernel_, s_.collision_dt, D.cell_volume()));
+  }
+  return m;
+}
+
+void Engine::check_state() const {
+  const Domain& D = s_.motion.domain;
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    const bool finite = std::isfinite(p_.x[i]) && std::isfinite(p_.y[i]) && std::isfinite(p_.z[i]) &&
+                        std::isfinite(p_.vx[i]) && std::isfinite(p_.vy[i]) && std::isfinite(p_.vz[i]) &&
+                        std::isfinite(p_.w[i]) && std::isfinite(p_.mass[i]);
+    if (!finite)
+      throw NumericalError(fmt::format("step {} (t = {:.6g} s): particle {} has a non-finite state "
+                                       "(x = {:g}, v = ({:g}, {:g}, {:g}), w = {:g})",
+                                       step_, time(), p_.id[i], p_.x[i], p_.vx[i], p_.vy[i], p_.vz[i], p_.w[i]));
+    if (p_.x[i] < 0.0 || p_.x[i] >= D.L[0] || p_.y[i] < 0.0 || p_.y[i] >= D.L[1] || p_.z[i] < 0.0 ||
+        p_.z[i] >= D.L[2] || p_.w[i] < 0.0)
+      throw NumericalError(fmt::format("step {} (t = {:.6g} s): particle {} lost (position ({:g}, {:g}, {:g}) m "
+                                       "outside the box, or weight {:g} < 0)",
+                                       step_, time(), p_.id[i], p_.x[i], p_.y[i], p_.z[i], p_.w[i]));
+  }
+}
+
+void Engine::step() {
+  const double t0 = time();
+  const std::size_t n = p_.size();
+  const Motion& M = s_.motion;
+  if (M.integrator != Integrator::none) {
+#pragma omp parallel
+    {
+      const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
+      const std::size_t tid = static_cast<std::size_t>(omp_get_thread_num());
+      M.advance(p_, n * tid / nt, n * (tid + 1) / nt, t0, s_.collision_dt, substeps_);
+    }
+  }
+  ++step_;
+  if (M.integrator != Integrator::none) check_state();
+  bin();
+  CollisionContext ctx;
+  ctx.kernel = &kernel_;
+  ctx.outcomes = &s_.outcomes;
+  ctx.gas = &s_.motion.gas;
+  ctx.sound = &s_.motion.sound;
+  ctx.domain = s_.motion.domain;
+  ctx.dt = s_.collision_dt;
+  ctx.seed = s_.seed;
+  ctx.strict = s_.strict_guard;
+  ctx.max_subcycles = s_.max_subcycles;
+  const int nc = s_.motion.domain.num_cells();
+  const std::uint64_t st = step_;
+  // Exceptions must not leave an OpenMP region: keep the message of the lowest failing cell.
+  std::vector<std::string> errors(static_cast<std::size_t>(nc));
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int c = 0; c < nc; ++c) {
+    cell_stats_[c] = NanbuStats{};
+    const std::size_t b = start_[c], e = start_[c + 1];
+    try {
+      if (e - b >= 2)
+        collide_cell(p_, order_.data() + b, e - b, static_cast<std::uint64_t>(c), st, ctx, cell_stats_[c]);
+    } catch (const std::exception& ex) {
+      errors[static_cast<std::size_t>(c)] = ex.what();
+    }
+  }
+  for (int c = 0; c < nc; ++c)
+    if (!errors[static_cast<std::size_t>(c)].empty()) throw NumericalError(errors[static_cast<std::size_t>(c)]);
+  for (int c = 0; c < nc; ++c) stats_.add(cell_stats_[c]);
+}
+
+}  // namespace agglo::acoustics

@@ -1,0 +1,268 @@
+#include "agglo/acoustics/nanbu.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "agglo/acoustics/merge.hpp"
+#include "agglo/core/constants.hpp"
+#include "agglo/core/error.hpp"
+#include "agglo/core/rng.hpp"
+
+namespace agglo::acoustics {
+
+void NanbuStats::add(const NanbuStats& o) {
+  trials += o.trials;
+  kernel_evals += o.kernel_evals;
+  collisions += o.collisions;
+  for (int k = 0; k < 3; ++k) {
+    coalescences[k] += o.coalescences[k];
+    rebounds[k] += o.rebounds[k];
+  }
+  particle_steps += o.particle_steps;
+  subcycled += o.subcycled;
+  max_subcycles = std::max(max_subcycles, o.max_subcycles);
+  max_bound_pn = std::max(max_bound_pn, o.max_bound_pn);
+  max_pn = std::max(max_pn, o.max_pn);
+  violations += o.violations;
+  refills += o.refills;
+  dead += o.dead;
+  energy_lost += o.energy_lost;
+  energy_returned += o.energy_returned;
+}
+
+CellBounds cell_bounds(const ParticleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
+                       const Gas& gas) {
+  CellBounds cb;
+  cb.need_cbar = k.settings().model == KernelModel::brownian_fuchs ||
+                 (k.settings().brownian && k.settings().brownian_form == BrownianForm::fuchs);
+  double sw = 0.0, mx = 0.0, my = 0.0, mz = 0.0;
+  for (std::size_t a = 0; a < n; ++a) {
+    const std::size_t i = idx[a];
+    if (p.w[i] <= 0.0) continue;
+    mx += p.vx[i];
+    my += p.vy[i];
+    mz += p.vz[i];
+    sw += 1.0;
+  }
+  if (sw > 0.0) {
+    cb.vref[0] = mx / sw;
+    cb.vref[1] = my / sw;
+    cb.vref[2] = mz / sw;
+  }
+  for (std::size_t a = 0; a < n; ++a)
+    if (p.w[idx[a]] > 0.0) cb.include(p, idx[a], gas);
+  return cb;
+}
+
+double guard_pn(const ParticleSet& p, std::size_t i, std::size_t N, const CellBounds& cb, const Kernel& k, double dt,
+                double cell_volume) {
+  return static_cast<double>(N) * k.bound(p, i, cb) * cb.w_max * dt / (2.0 * cell_volume);
+}
+
+namespace {
+
+PairType pair_type(Phase a, Phase b) {
+  if (a == Phase::liquid || b == Phase::liquid) return PairType::droplet;
+  if (a == Phase::solid && b == Phase::solid) return PairType::dry;
+  return PairType::wet;
+}
+
+// Unit normal from i to j at contact for a hard-sphere encounter with relative velocity G:
+// uniform impact parameter over the collision disk (b^2 uniform), uniform azimuth.
+Vec3 contact_normal(const Vec3& G, CounterRng& rng) {
+  const double u1 = rng.uniform(), u2 = rng.uniform();
+  const double g = norm(G);
+  Vec3 e = g > 0.0 ? G / g : Vec3{1.0, 0.0, 0.0};
+  // Orthonormal basis (a, b) perpendicular to e.
+  Vec3 ref = std::abs(e.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  Vec3 a = cross(e, ref);
+  a /= norm(a);
+  const Vec3 b = cross(e, a);
+  const double cth = std::sqrt(1.0 - u1), sth = std::sqrt(u1);
+  const double ph = 2.0 * constants::pi * u2;
+  return cth * e + sth * (std::cos(ph) * a + std::sin(ph) * b);
+}
+
+double min_image(double d, double L) { return d - L * std::nearbyint(d / L); }
+
+}  // namespace
+
+void collide_cell(ParticleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
+                  const CollisionContext& ctx, NanbuStats& st) {
+  const Kernel& K = *ctx.kernel;
+  const OutcomeParams& oc = *ctx.outcomes;
+  std::size_t N = 0;
+  for (std::size_t a = 0; a < n; ++a) N += p.w[idx[a]] > 0.0 ? 1 : 0;
+  if (N < 2) return;
+  N = n;  // dead samples stay candidates (they are refilled when possible): keep the draw uniform over n
+  const double Vc = ctx.domain.cell_volume();
+  const double invN = 1.0 / static_cast<double>(N);
+  CellBounds cb = cell_bounds(p, idx, n, K, *ctx.gas);
+  CounterRng rng(ctx.seed, 0x100000000ULL + cell, step);
+  const bool need_r = K.needs_distance();
+  const bool excl = K.settings().exclude_same_population;
+  std::vector<std::uint32_t> debtors;
+  if (oc.energy_compensation)
+    for (std::size_t a = 0; a < n; ++a)
+      if (p.debt[idx[a]] > 0.0) debtors.push_back(idx[a]);
+
+  auto refill = [&](std::size_t dead) {
+    std::size_t best = dead;
+    double wb = 1.0;
+    for (std::size_t a = 0; a < n; ++a)
+      if (p.w[idx[a]] > wb) {
+        wb = p.w[idx[a]];
+        best = idx[a];
+      }
+    if (best == dead) {
+      ++st.dead;
+      return;
+    }
+    const std::uint64_t keep_id = p.id[dead];
+    p.copy_sample(best, dead);
+    p.id[dead] = keep_id;
+    p.w[best] = std::ceil(0.5 * wb);
+    p.w[dead] = std::floor(0.5 * wb);
+    p.debt[dead] = 0.0;
+    p.debt_ref[dead] = 0.0;
+    ++st.refills;
+  };
+
+  auto compensate = [&](std::size_t i, std::size_t j) {
+    if (!oc.energy_compensation) return;
+    for (std::size_t k = 0; k < debtors.size(); ++k) {
+      const std::size_t h = debtors[k];
+      if (!(p.debt[h] > 0.0)) continue;
+      const double Mref = p.debt_ref[h];
+      const double ri = p.w[i] * p.mass[i] / Mref, rj = p.w[j] * p.mass[j] / Mref;
+      if ((ri > 0.5 && ri < 2.0) || (rj > 0.5 && rj < 2.0)) {
+        if (add_relative_energy(p, i, j, p.debt[h])) {
+          st.energy_returned += p.debt[h];
+          p.debt[h] = 0.0;
+          cb.include(p, i, *ctx.gas);
+          cb.include(p, j, *ctx.gas);
+        }
+        return;
+      }
+    }
+  };
+
+  auto collide = [&](std::size_t i, std::size_t j) {
+    ++st.collisions;
+    const Phase pi_ = p.phase(i), pj = p.phase(j);
+    const PairType type = pair_type(pi_, pj);
+    bool coalesce = oc.always_coalesce || type == PairType::droplet;
+    Vec3 nrm;
+    double gn = 0.0;
+    if (!coalesce) {
+      const Vec3 G{p.vx[i] - p.vx[j], p.vy[i] - p.vy[j], p.vz[i] - p.vz[j]};
+      nrm = contact_normal(G, rng);
+      gn = dot(G, nrm);
+      const double vcr = type == PairType::dry ? critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j])
+                                               : critical_velocity_wet(oc, p.d[i], p.d[j]);
+      coalesce = gn <= vcr;
+    }
+    if (coalesce) {
+      ++st.coalescences[static_cast<int>(type)];
+      coalesce_weighted(p, i, j, *ctx.gas, *ctx.sound);
+      if (p.w[i] <= 0.0) refill(i);
+      if (p.w[j] <= 0.0) refill(j);
+      cb.include(p, i, *ctx.gas);
+      cb.include(p, j, *ctx.gas);
+    } else {
+      ++st.rebounds[static_cast<int>(type)];
+      const double e = type == PairType::dry ? oc.restitution : wet_restitution(oc, p.d[i], p.d[j], gn);
+      const double dE = rebound_weighted(p, i, j, nrm, e, oc.friction);
+      st.energy_lost += dE;
+      if (dE > 0.0) debtors.push_back(static_cast<std::uint32_t>(p.w[i] > p.w[j] ? i : j));
+      compensate(i, j);
+      cb.include(p, i, *ctx.gas);
+      cb.include(p, j, *ctx.gas);
+    }
+  };
+
+  // One Nanbu trial of sample i over an interval h with majorant probability pbound.
+  // Returns true if i collided (its state changed).
+  auto trial = [&](std::size_t i, double h, double pbound) -> bool {
+    ++st.trials;
+    const double R = rng.uniform();
+    std::size_t ja = static_cast<std::size_t>(R * static_cast<double>(N));
+    if (ja >= N) ja = N - 1;
+    const std::size_t j = idx[ja];
+    if (j == i || p.w[j] <= 0.0) return false;
+    const double thr = static_cast<double>(ja + 1) * invN - R;
+    if (thr >= pbound) return false;  // majorant rejection: P_ij <= pbound <= thr
+    if (excl && p.pop[i] == p.pop[j]) return false;
+    ++st.kernel_evals;
+    double r = 0.0;
+    if (need_r) {
+      const double dx = min_image(p.x[i] - p.x[j], ctx.domain.L[0]);
+      const double dy = min_image(p.y[i] - p.y[j], ctx.domain.L[1]);
+      const double dz = min_image(p.z[i] - p.z[j], ctx.domain.L[2]);
+      r = std::sqrt(dx * dx + dy * dy + dz * dz);
+    }
+    const double beta = K.beta(p, i, j, r);
+    const double P = beta * std::max(p.w[i], p.w[j]) * h / (2.0 * Vc);
+    st.max_pn = std::max(st.max_pn, P * static_cast<double>(N));
+    if (P > invN * (1.0 + 1e-9)) ++st.violations;
+    if (P > thr) {
+      collide(i, j);
+      return true;
+    }
+    return false;
+  };
+
+  const double pfac = ctx.dt / (2.0 * Vc);
+  double pcell = K.bound_cell(cb) * cb.w_max * pfac;
+  std::uint64_t seen = st.collisions;
+  for (std::size_t a = 0; a < n; ++a) {
+    const std::size_t i = idx[a];
+    if (p.w[i] <= 0.0) continue;
+    ++st.particle_steps;
+    // Fast path: the cell-wide majorant already meets the bound for a full step.
+    if (st.collisions != seen) {  // cell bounds changed
+      pcell = K.bound_cell(cb) * cb.w_max * pfac;
+      seen = st.collisions;
+    }
+    if (pcell * static_cast<double>(N) <= 1.0) {
+      st.max_bound_pn = std::max(st.max_bound_pn, pcell * static_cast<double>(N));
+      trial(i, ctx.dt, pcell);
+      st.max_subcycles = std::max<std::uint64_t>(st.max_subcycles, 1);
+      continue;
+    }
+    double remaining = ctx.dt;
+    std::uint64_t intervals = 0;
+    bool first = true;
+    while (remaining > 0.0 && p.w[i] > 0.0) {
+      const double B = K.bound(p, i, cb);
+      const double pn_full = static_cast<double>(N) * B * cb.w_max * remaining / (2.0 * Vc);
+      if (first) st.max_bound_pn = std::max(st.max_bound_pn, pn_full);
+      first = false;
+      double nsub = std::max(1.0, std::ceil(pn_full * (1.0 + 1e-12)));
+      if (nsub > 1.0 && ctx.strict)
+        throw NumericalError(fmt::format("step {}: Nanbu bound P_ij <= 1/N violated in cell {} for particle {} "
+                                         "(N P = {:.3g}) and time.nanbu_guard = \"strict\"",
+                                         step, cell, p.id[i], pn_full));
+      if (intervals + nsub > static_cast<double>(ctx.max_subcycles))
+        throw NumericalError(fmt::format("step {}: Nanbu bound cannot be met in cell {} for particle {}: needs "
+                                         "{:.3g} sub-cycles > time.max_subcycles = {}",
+                                         step, cell, p.id[i], nsub, ctx.max_subcycles));
+      const double h = remaining / nsub;
+      const double pbound = B * cb.w_max * h / (2.0 * Vc);
+      // Trials of length h until a collision changes i (then the bound is recomputed).
+      bool changed = false;
+      for (double s = 0; s < nsub && !changed; s += 1.0) {
+        ++intervals;
+        remaining -= h;
+        changed = trial(i, h, pbound);
+      }
+      if (remaining < 1e-12 * ctx.dt) remaining = 0.0;
+    }
+    if (intervals > 1) ++st.subcycled;
+    st.max_subcycles = std::max(st.max_subcycles, intervals);
+  }
+}
+
+}  // namespace agglo::acoustics

@@ -1,0 +1,49 @@
+#pragma once
+// Initial sampled populations (MODEL C.6).
+//  - lognormal (d_g, sigma_g): K log-spaced bins on [d_g sigma_g^-3.5, d_g sigma_g^3.5], equal numbers
+//    of samples per bin, bin number from the lognormal integral (renormalised to the truncated
+//    range so that sum w = N_tot V); diameters at stratified quantiles of the lognormal within the bin.
+//  - monodisperse (d), exponential in volume (n(v) = N0/v0 e^(-v/v0); stratified quantiles, equal
+//    weights), table (listed diameters with number fractions; equal samples per entry).
+// Weights are rounded to integers >= 1 (seed eqs. 18-21 act on integer weights).
+// Positions are uniform in the periodic box (counter-based RNG keyed by population and sample).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "agglo/acoustics/drag.hpp"
+#include "agglo/acoustics/particles.hpp"
+
+namespace agglo::acoustics {
+
+enum class Distribution { lognormal, monodisperse, exponential, table };
+
+struct PopulationSpec {
+  std::string name;
+  Phase phase = Phase::solid;                  // solid or liquid
+  Distribution distribution = Distribution::monodisperse;
+  double geometric_mean_diameter = 0.0;        // d_g [m]
+  double geometric_std = 2.0;                  // sigma_g
+  int bins = 40;                               // lognormal bins K
+  double diameter = 0.0;                       // monodisperse [m]
+  double mean_volume = 0.0;                    // exponential v0 [m^3]
+  std::vector<double> table_diameters;         // [m]
+  std::vector<double> table_fractions;         // number fractions
+  double number_concentration = 0.0;           // [1/m^3]
+  double density = 1000.0;                     // [kg/m^3]
+  long samples = 0;
+};
+
+struct SampledPopulation {
+  std::size_t first = 0, count = 0;
+  double real_number = 0.0;    // N_tot V requested
+  double weight_sum = 0.0;     // after integer rounding
+};
+
+SampledPopulation sample_population(const PopulationSpec& spec, int index, const Domain& dom, std::uint64_t seed,
+                                    const Gas& gas, const Sound& sound, ParticleSet& p);
+
+double normal_cdf(double z);
+double normal_quantile(double q);
+
+}  // namespace agglo::acoustics
