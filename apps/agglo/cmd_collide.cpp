@@ -24,7 +24,10 @@ agglo::cli::Registration reg([](CLI::App& app) {
     cfg.check_unknown_keys();
     auto out = agglo::cli::open_output(*args, "collide");
     agglo::collision::Recorder rec;
-    auto res = agglo::collision::run_collision(c, c.projectile.speed, &rec);
+    agglo::Progress prog("collide", true);
+    auto res = agglo::collision::run_collision(c, c.projectile.speed, &rec,
+                                               [&](double f, double t) { prog.update(f, t); });
+    prog.finish();
     agglo::collision::write_timeseries(out, rec);
     agglo::collision::write_snapshots(out, rec);
     out.write_json("result.json", agglo::collision::outcome_json(res));

@@ -8,6 +8,7 @@
 
 #include "agglo/core/config.hpp"
 #include "agglo/core/vec3.hpp"
+#include "agglo/collision/electrostatic_coupling.hpp"
 #include "agglo/dem/dem_system.hpp"
 
 namespace agglo::collision {
@@ -69,6 +70,7 @@ struct CollisionCase {
   VcritSpec vcrit;
   bool electrostatics = false;          // derived: any charge or field present
   double medium_permittivity = 1.0;     // kappa_0
+  CouplingSettings coupling;            // [electrostatics]
 };
 
 // Reads every section; throws ConfigError naming file, key, value and the allowed range.

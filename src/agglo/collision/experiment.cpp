@@ -95,7 +95,7 @@ CollisionOutcome classify(const dem::DemSystem& sys, std::size_t n_agg, double k
   return out;
 }
 
-CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* rec) {
+CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* rec, const ProgressFn& progress) {
   dem::Particles agg = build_agglomerate(c);
   const std::size_t n_agg = agg.size();
   dem::DemSystem sys(std::move(agg), c.dem);
@@ -161,6 +161,7 @@ CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* r
   while (sys.time() - t_launch < max_approach) {
     sys.step();
     record();
+    if (progress && sys.steps() % 2000 == 0) progress(0.0, sys.time() - t_launch);
     if (projectile_touches()) {
       out.contact = true;
       break;
@@ -170,9 +171,12 @@ CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* r
   if (out.contact) {
     double t_stop = sys.time() + c.time.after_contact;
     for (int ext = 0;; ++ext) {
+      const double t_from = sys.time();
       while (sys.time() < t_stop) {
         sys.step();
         record();
+        if (progress && sys.steps() % 2000 == 0)
+          progress((sys.time() - t_from) / (t_stop - t_from), sys.time() - t_launch);
       }
       auto cl = classify(sys, n_agg, kappa0);
       out.broken = cl.broken;

@@ -3,6 +3,7 @@
 // launch of the projectile, integration until `after_contact` after its first contact, break-up
 // classification (extended while undecided). The engine records time series and snapshots into a
 // Recorder; it never writes files itself.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,7 +51,10 @@ struct CollisionOutcome {
 // Electrostatic coupling factory (defined in electrostatic_coupling.cpp).
 std::unique_ptr<dem::ExternalForce> make_electrostatic_force(const CollisionCase& c);
 
-CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* rec = nullptr);
+// `progress(fraction, simulated time)` is called now and then (may be empty).
+using ProgressFn = std::function<void(double, double)>;
+CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* rec = nullptr,
+                               const ProgressFn& progress = {});
 
 // Radius of gyration [(1/N) sum |x_i - x_c|^2]^(1/2).
 double radius_of_gyration(const dem::Particles& p);
