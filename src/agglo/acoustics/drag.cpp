@@ -38,7 +38,8 @@ void Motion::wrap(ParticleSet& p, std::size_t i) const {
 }
 
 Motion::StepTrig Motion::trig(double t, double h) const {
-  return {std::sin(sound.omega * t), std::cos(sound.omega * t), std::sin(sound.omega * h), std::cos(sound.omega * h)};
+  return {std::sin(sound.omega * t),       std::cos(sound.omega * t),       std::sin(sound.omega * h),
+          std::cos(sound.omega * h),       std::sin(0.5 * sound.omega * h), std::cos(0.5 * sound.omega * h)};
 }
 
 void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, double h) const {
@@ -55,7 +56,23 @@ void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, do
     const double sx = A * s0 - p.vx[i];
     const double slip = std::sqrt(sx * sx + p.vy[i] * p.vy[i] + p.vz[i] * p.vz[i]);
     const double re = gas.reynolds(slip, p.d[i]);
-    te /= Gas::inertia_correction_fast(re);
+    const double ci = Gas::inertia_correction_fast(re);
+    te /= ci;
+    if (ci > 1.001) {
+      // Predict the slip at mid-step with this C_I, then take C_I there.
+      const double xh = 0.5 * h / te, Eh = std::exp(-xh);
+      double vxh = p.vx[i] * Eh;
+      if (A > 0.0) {
+        const double q = sound.omega * te, D = 1.0 + q * q;
+        const double sh = s0 * tr.cwh2 + c0 * tr.swh2, ch = c0 * tr.cwh2 - s0 * tr.swh2;
+        vxh = A * (sh - q * ch) / D + (p.vx[i] - A * (s0 - q * c0) / D) * Eh;
+        const double sxh = A * sh - vxh;
+        const double vt = -gas.gravity * (p.rho[i] - gas.density) / p.rho[i] * te;
+        const double vyh = p.vy[i] * Eh, vzh = vt + (p.vz[i] - vt) * Eh;
+        const double slh = std::sqrt(sxh * sxh + vyh * vyh + vzh * vzh);
+        te = p.tau[i] / Gas::inertia_correction_fast(gas.reynolds(slh, p.d[i]));
+      }
+    }
   }
   const double x = h / te;
   // exp(-x) and 1 - exp(-x); expm1 only where 1 - exp(-x) would lose digits.

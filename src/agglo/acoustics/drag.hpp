@@ -3,9 +3,10 @@
 //   m dv/dt = 3 pi mu_g d (u_g - v) C_I / C_c + (rho - rho_g) pi d^3 g / 6
 // i.e. dv/dt = (u_g - v)/tau_e + a,  tau_e = tau / C_I,  a = -g (rho - rho_g)/rho e_z.
 // Integrators over a step h:
-//  - exact: C_I frozen at the start of the step and x frozen in the wave phase; the linear ODE
-//    with sinusoidal forcing is then solved in closed form (velocity and position), so h may be
-//    much larger than tau (default).
+//  - exact: C_I frozen over the step and x frozen in the wave phase; the linear ODE with
+//    sinusoidal forcing is then solved in closed form (velocity and position), so h may be much
+//    larger than tau (default). Where C_I - 1 > 1e-3 (droplets) C_I is taken at the mid-step
+//    slip predicted with the start-of-step C_I (second order in h); elsewhere at the start.
 //  - explicit: the seed's explicit scheme (forward Euler for v, then x += h v_new); stable only
 //    for h < 2 tau_e (the engine checks this).
 //  - none: particles keep their positions and velocities (test kernels).
@@ -45,7 +46,7 @@ struct Motion {
   // Fast form of advance_exact with the time trigonometry of the step precomputed:
   // swt, cwt = sin, cos(omega t); swh, cwh = sin, cos(omega h).
   struct StepTrig {
-    double swt, cwt, swh, cwh;
+    double swt, cwt, swh, cwh, swh2, cwh2;  // ... and sin, cos(omega h / 2)
   };
   StepTrig trig(double t, double h) const;
   void advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, double h) const;

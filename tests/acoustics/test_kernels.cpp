@@ -1,0 +1,88 @@
+// Kernel values (MODEL C.3, C.7.5) and the majorant property the Nanbu guard relies on.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "agglo/acoustics/kernels.hpp"
+#include "agglo/acoustics/nanbu.hpp"
+#include "agglo/core/constants.hpp"
+
+using namespace agglo::acoustics;
+using agglo::constants::pi;
+
+TEST(Kernels, FuchsValueForTwo200nmSpheres) {
+  // Published Fuchs value 1.012e-15 m^3/s (rho = 2000 kg/m^3, 298.15 K, 101325 Pa) is reproduced with the
+  // textbook gas values mu = 1.8e-5 Pa s, lambda = 65.1 nm (Seinfeld & Pandis).
+  const Gas tb = Gas::air(298.15, 101325.0, false, 1.8e-5, 65.1e-9);
+  EXPECT_NEAR(beta_brownian_fuchs(tb, 200e-9, 200e-9, 2000.0, 2000.0), 1.012e-15, 0.002e-15);
+  // With the MODEL C.1 gas (mu = 1.837e-5, lambda = 66.5 nm) the same formula gives 1.004e-15 (0.8 % lower).
+  const Gas g = Gas::air(298.15, 101325.0, false);
+  const double k = beta_brownian_fuchs(g, 200e-9, 200e-9, 2000.0, 2000.0);
+  EXPECT_NEAR(k, 1.004e-15, 0.002e-15);
+  // Fuchs lies below the continuum+slip form for these sizes and tends to it for large particles.
+  EXPECT_LT(k, beta_brownian_slip(g, 200e-9, 200e-9, g.slip_correction(200e-9), g.slip_correction(200e-9)));
+  auto ratio = [&](double d) {
+    return beta_brownian_fuchs(g, d, d, 2000, 2000) / beta_brownian_slip(g, d, d, g.slip_correction(d), g.slip_correction(d));
+  };
+  EXPECT_LT(std::abs(1 - ratio(200e-6)), 3e-3);
+  EXPECT_LT(std::abs(1 - ratio(200e-6)), 0.5 * std::abs(1 - ratio(20e-6)));
+}
+
+TEST(Kernels, MechanismFormulas) {
+  const Gas g = Gas::air(298.15, 101325.0, false);
+  EXPECT_NEAR(beta_orthokinetic(1e-6, 3e-6, 0.5), pi / 4 * 16e-12 * 0.5, 1e-25);
+  // AWE with r floored at contact.
+  const double awe_far = beta_acoustic_wake(0.69, 1e-3, 30e-6, 1e-6, 0.99, 0.1);
+  EXPECT_NEAR(awe_far, 3.0 / 16 * 0.69 / 1e-3 * 31e-6 * 31e-6 * (30e-6 * 0.99 + 1e-6 * 0.1), 1e-25);
+  EXPECT_EQ(beta_acoustic_wake(0.69, 0.0, 30e-6, 1e-6, 0.99, 0.1),
+            beta_acoustic_wake(0.69, 15.5e-6, 30e-6, 1e-6, 0.99, 0.1));
+  const double kT = agglo::constants::k_B * 298.15;
+  EXPECT_NEAR(beta_brownian_slip(g, 1e-6, 2e-6, 1.2, 1.1),
+              2 * kT / (3 * g.viscosity) * 3e-6 * (1.2 / 1e-6 + 1.1 / 2e-6), 1e-30);
+  // MRPE is ~1e-6 of OI at the seed's conditions (MODEL C.3).
+  const double mr = beta_radiation_pressure(g, 0.69, 1e-3, 30e-6, 1e-6, 0.99, 0.1, 1.0);
+  EXPECT_GT(mr, 0.0);
+  EXPECT_LT(mr / beta_orthokinetic(30e-6, 1e-6, 0.69), 1e-4);
+}
+
+TEST(Kernels, CellBoundIsAMajorant) {
+  const Gas gas = Gas::air(298.15, 101325.0, true);
+  const Sound snd = Sound::make(gas, true, 140.0, 2000.0);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (KernelModel m : {KernelModel::acoustic, KernelModel::additive, KernelModel::brownian_fuchs}) {
+    KernelSettings ks;
+    ks.model = m;
+    ks.additive_coefficient = 1.0;
+    for (auto form : {BrownianForm::continuum_slip, BrownianForm::fuchs}) {
+      ks.brownian_form = form;
+      Kernel K(ks, gas, snd);
+      ParticleSet p;
+      for (int i = 0; i < 60; ++i) {
+        const double d = 1e-8 * std::pow(5000.0, u(rng));
+        const double v = pi * d * d * d / 6;
+        const bool liquid = u(rng) < 0.3;
+        const std::size_t k = p.add(u(rng) * 1e-3, u(rng) * 1e-3, u(rng) * 1e-3, liquid ? 0 : v, liquid ? v : 0,
+                                    (liquid ? 1000 : 2500) * v, 1 + std::floor(1000 * u(rng)), 0, gas, snd);
+        p.vx[k] = u(rng) - 0.5;
+        p.vy[k] = 0.1 * (u(rng) - 0.5);
+        p.vz[k] = -0.05 * u(rng);
+      }
+      std::vector<std::uint32_t> idx(p.size());
+      for (std::size_t i = 0; i < p.size(); ++i) idx[i] = static_cast<std::uint32_t>(i);
+      const CellBounds cb = cell_bounds(p, idx.data(), idx.size(), K, gas);
+      const double bc = K.bound_cell(cb);
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        const double bi = K.bound(p, i, cb);
+        EXPECT_LE(bi, bc * (1 + 1e-12));
+        for (std::size_t j = 0; j < p.size(); ++j) {
+          if (i == j) continue;
+          const double r = std::sqrt(std::pow(p.x[i] - p.x[j], 2) + std::pow(p.y[i] - p.y[j], 2) +
+                                     std::pow(p.z[i] - p.z[j], 2));
+          ASSERT_LE(K.beta(p, i, j, r), bi * (1 + 1e-12)) << "model " << kernel_model_name(m) << " pair " << i << "," << j;
+        }
+      }
+    }
+  }
+}

@@ -1,0 +1,150 @@
+// MODEL C.7.2: single-particle acoustic response (amplitude 1/sqrt(1+(w tau)^2), lag atan(w tau)) and
+// settling velocity, for the exact integrator at large steps and the seed's explicit scheme.
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "agglo/core/constants.hpp"
+#include "agglo/core/error.hpp"
+#include "helpers.hpp"
+
+using namespace agglo::acoustics;
+using agglo::constants::pi;
+
+namespace {
+
+std::string single_particle_case(double d, double rho, const std::string& integrator, double dt, double motion_dt,
+                                 double end, bool sound, bool gravity, bool ci, const std::string& init = "rest") {
+  return fmt::format(R"(
+seed = 3
+[gas]
+gravity = {}
+[sound]
+enabled = {}
+level_db = 140.0
+frequency_hz = 2000.0
+[domain]
+{}
+cells_x = 1
+min_cells_per_wavelength = 1
+[time]
+end = {}
+collision_dt = {}
+motion_dt = {}
+integrator = "{}"
+initial_velocity = "{}"
+[[population]]
+name = "p"
+phase = "liquid"
+distribution = "monodisperse"
+diameter = {}
+number_concentration = 1e6
+density = {}
+samples = 1
+[kernels]
+inertia_correction = {}
+[output]
+psd_times = [0.0]
+snapshot_times = [0.0]
+)",
+                     gravity, sound, sound ? "" : "length_x = 0.01", end, dt, motion_dt, integrator, init, d, rho, ci);
+}
+
+struct Fit {
+  double amplitude, phase;
+};
+
+// Runs until t_start, then projects v_x on sin/cos(w t - k x_mean) over `periods` periods.
+Fit fit_response(Engine& e, double t_start, int periods) {
+  const auto& s = e.settings().motion.sound;
+  while (e.time() < t_start - 1e-12) e.step();
+  const double T = 1.0 / s.frequency;
+  const double dt = e.settings().collision_dt;
+  const int n = static_cast<int>(std::lround(periods * T / dt));
+  double a = 0, b = 0, xm = 0;
+  std::vector<double> t(n), v(n), x(n);
+  for (int k = 0; k < n; ++k) {
+    e.step();
+    t[k] = e.time();
+    v[k] = e.particles().vx[0];
+    x[k] = e.particles().x[0];
+    xm += x[k] / n;
+  }
+  for (int k = 0; k < n; ++k) {
+    const double psi = s.omega * t[k] - s.wavenumber * xm;
+    a += 2.0 / n * v[k] * std::sin(psi);
+    b += 2.0 / n * v[k] * std::cos(psi);
+  }
+  // v = U sin(psi - phi) = U (sin psi cos phi - cos psi sin phi)
+  return {std::hypot(a, b) / s.u_amp, std::atan2(-b, a)};
+}
+
+}  // namespace
+
+TEST(Motion, AcousticAmplitudeAndPhaseExactIntegratorLargeStep) {
+  for (double d : {1e-6, 5e-6, 20e-6}) {
+    Engine e = test::make_engine(single_particle_case(d, 1000.0, "exact", 1e-5, 1e-5, 1.0, true, false, false));
+    const double tau = e.particles().tau[0], wt = e.settings().motion.sound.omega * tau;
+    const Fit f = fit_response(e, std::max(0.003, 30 * tau), 4);
+    EXPECT_NEAR(f.amplitude, 1.0 / std::sqrt(1 + wt * wt), 1e-3) << "d = " << d;
+    EXPECT_NEAR(f.phase, std::atan(wt), 1e-3) << "d = " << d;
+  }
+}
+
+TEST(Motion, AcousticAmplitudeAndPhaseExplicitReference) {
+  const double d = 5e-6;  // omega tau ~ 1: the most sensitive case
+  Engine e = test::make_engine(single_particle_case(d, 1000.0, "explicit", 1e-5, 1e-7, 1.0, true, false, false));
+  const double tau = e.particles().tau[0], wt = e.settings().motion.sound.omega * tau;
+  const Fit f = fit_response(e, 30 * tau, 3);
+  EXPECT_NEAR(f.amplitude, 1.0 / std::sqrt(1 + wt * wt), 3e-3);
+  EXPECT_NEAR(f.phase, std::atan(wt), 3e-3);
+}
+
+TEST(Motion, SettlingVelocity) {
+  for (const char* integ : {"exact", "explicit"}) {
+    const double d = 10e-6, rho = 2500.0;
+    const double mdt = std::string(integ) == "exact" ? 1e-4 : 1e-6;
+    Engine e = test::make_engine(single_particle_case(d, rho, integ, 1e-4, mdt, 1.0, false, true, false));
+    const double tau = e.particles().tau[0];
+    while (e.time() < 40 * tau) e.step();
+    const auto& g = e.settings().motion.gas;
+    const double vt = -tau * g.gravity * (rho - g.density) / rho;
+    EXPECT_NEAR(e.particles().vz[0] / vt, 1.0, 1e-9) << integ;
+    EXPECT_NEAR(e.particles().vx[0], 0.0, 1e-15);
+  }
+}
+
+TEST(Motion, ExactLargeStepMatchesExplicitReferenceWithInertiaCorrection) {
+  // 30 um droplet from rest, full drag law (C_I on), gravity and sound: after 10 ms the exact integrator at
+  // dt = 1e-5 s and the seed's explicit scheme at dt = 1e-7 s agree.
+  const double d = 30e-6;
+  Engine a = test::make_engine(single_particle_case(d, 1000.0, "exact", 1e-5, 1e-5, 1.0, true, true, true));
+  Engine b = test::make_engine(single_particle_case(d, 1000.0, "explicit", 1e-5, 1e-7, 1.0, true, true, true));
+  double worst = 0.0;
+  for (int k = 0; k < 1000; ++k) {
+    a.step();
+    b.step();
+    worst = std::max(worst, std::abs(a.particles().vx[0] - b.particles().vx[0]));
+  }
+  const double scale = a.settings().motion.sound.u_amp;
+  EXPECT_LT(worst / scale, 1e-3);
+  EXPECT_NEAR(a.particles().vz[0], b.particles().vz[0], 1e-4 * std::abs(b.particles().vz[0]));
+  // Gas displacement amplitude u_amp/omega = 55 um: agreement to 0.2 % of it.
+  EXPECT_NEAR(a.particles().x[0], b.particles().x[0], 1e-7);
+}
+
+TEST(Motion, NaNStopsTheRunNamingStepAndParticle) {
+  Engine e = test::make_engine(single_particle_case(5e-6, 1000.0, "exact", 1e-5, 1e-5, 1.0, true, false, false));
+  e.step();
+  e.particles().vx[0] = std::nan("");
+  try {
+    e.step();
+    FAIL() << "no NumericalError";
+  } catch (const agglo::NumericalError& err) {
+    const std::string m = err.what();
+    EXPECT_NE(m.find("step 2"), std::string::npos) << m;
+    EXPECT_NE(m.find("particle 0"), std::string::npos) << m;
+  }
+}
