@@ -1,0 +1,122 @@
+// DEM cost benchmarks (issue 2; docs/benchmarks_dem.md).
+//
+// BM_DemStep/N: one velocity-Verlet step of an adhesive agglomerate of N equal spheres (r = 10 um,
+//   rho = 2500, JKR as MODEL.md A.3, Marshall tangential spring) packed on a simple cubic lattice
+//   with spacing 2r - delta0 (every lattice contact at the JKR equilibrium overlap), sites filled in
+//   order, with random velocities of 1 mm/s (well below the sticking velocity, so contacts stay).
+//   Counter "ns_per_particle_step" = wall time / (N x steps); it stays flat if the step is O(N).
+//   Neighbour-list rebuilds are rare at these speeds; BM_NeighborBuild/N times one rebuild.
+// BM_Collision2ms: one complete collision run of cases/seed000_neutral_tetrahedron.toml
+//   (5 particles, approach + 2 ms after first contact, break-up classification, no file output),
+//   with the LAMMPS cross-check settings (break_rule = lammps, tangential = marshall). The LAMMPS
+//   side of this comparison is bench/dem_benchmarks.sh.
+//
+// Run single-threaded for per-core cost: OMP_NUM_THREADS=1 build-bench/bench_dem_scaling
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "agglo/collision/collision_case.hpp"
+#include "agglo/collision/experiment.hpp"
+#include "agglo/core/config.hpp"
+#include "agglo/dem/dem_system.hpp"
+#include "agglo/dem/jkr.hpp"
+
+namespace {
+
+using agglo::Vec3;
+namespace dem = agglo::dem;
+
+dem::DemParams block_params() {
+  dem::DemParams p;
+  p.contact.youngs_modulus = 1.0e9;
+  p.contact.poisson_ratio = 0.33;
+  p.contact.surface_energy = 0.01;
+  p.contact.restitution = 0.9;
+  p.contact.friction = 0.3;
+  p.contact.tangential = dem::TangentialModel::marshall;
+  return p;
+}
+
+dem::DemSystem make_block(std::int64_t n) {
+  const double r = 10e-6, rho = 2500.0;
+  auto params = block_params();
+  auto jkr = dem::JkrPair::make(0.5 * r, params.contact.estar(), params.contact.surface_energy);
+  const double L = 2.0 * r - jkr.delta_equilibrium();
+  const auto side = static_cast<std::int64_t>(std::ceil(std::cbrt(static_cast<double>(n)) - 1e-9));
+  std::mt19937_64 gen(12345);
+  std::normal_distribution<double> g(0.0, 1e-3 / std::sqrt(3.0));
+  dem::Particles p;
+  for (std::int64_t k = 0; k < n; ++k) {
+    const std::int64_t ix = k % side, iy = (k / side) % side, iz = k / (side * side);
+    p.add(Vec3{ix * L, iy * L, iz * L}, r, rho, Vec3{g(gen), g(gen), g(gen)});
+  }
+  return dem::DemSystem(std::move(p), params);
+}
+
+void BM_DemStep(benchmark::State& state) {
+  const std::int64_t n = state.range(0);
+  auto sys = make_block(n);
+  sys.run(200);  // form contacts, build the list, warm the caches
+  for (auto _ : state) sys.step();
+  state.counters["particles"] = static_cast<double>(n);
+  state.counters["contacts"] = sys.active_contacts();
+  state.counters["pairs_listed"] = static_cast<double>(sys.pairs().size());
+  state.counters["list_builds"] = static_cast<double>(sys.neighbors().builds());
+  // rate counter inverted: seconds per (N * 1e-9) items = ns per particle-step
+  state.counters["ns_per_particle_step"] =
+      benchmark::Counter(static_cast<double>(n) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
+                                                            benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_DemStep)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+void BM_NeighborBuild(benchmark::State& state) {
+  const std::int64_t n = state.range(0);
+  auto sys = make_block(n);
+  sys.run(10);
+  const auto& p = sys.particles();
+  auto params = block_params();
+  const double skin = 0.1 * p.r[0];
+  for (auto _ : state) {
+    dem::NeighborList nl;
+    nl.build(p.x, p.r, skin, [&](std::uint32_t i, std::uint32_t j) {
+      return dem::JkrPair::make(p.r[i] * p.r[j] / (p.r[i] + p.r[j]), params.contact.estar(),
+                                params.contact.surface_energy);
+    });
+    benchmark::DoNotOptimize(nl.pairs().data());
+  }
+  state.counters["ns_per_particle"] =
+      benchmark::Counter(static_cast<double>(n) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
+                                                            benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_NeighborBuild)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+void BM_Collision2ms(benchmark::State& state) {
+  // The case file lives next to this source (bench/ -> ../cases/); __FILE__ is absolute under CMake.
+  const auto src = std::filesystem::path(__FILE__).parent_path().parent_path();
+  auto cfg = agglo::Config::load(src / "cases" / "seed000_neutral_tetrahedron.toml");
+  for (const char* s : {"contact.break_rule=lammps", "contact.tangential=marshall", "material.restitution=0.9",
+                        "material.friction=0.3"})
+    cfg.apply_override(s);
+  auto c = agglo::collision::parse_collision_case(cfg);
+  const double speed = 0.18;
+  long steps = 0;
+  bool broken = false;
+  for (auto _ : state) {
+    auto out = agglo::collision::run_collision(c, speed, nullptr);
+    steps = out.steps;
+    broken = out.broken;
+  }
+  state.counters["steps"] = static_cast<double>(steps);
+  state.counters["broken"] = broken ? 1.0 : 0.0;
+  state.counters["ns_per_step"] = benchmark::Counter(
+      static_cast<double>(steps) * 1e-9,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_Collision2ms)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
