@@ -122,6 +122,20 @@ TEST(SpectralBasis, FrameRotationMapsDirectionToZ) {
     }
     R.from_frame(L, cp.data(), back.data());
     for (int k = 0; k < sh::ncoef(L); ++k) EXPECT_NEAR(back[k], c[k], 1e-11);
+    // fused two-vector versions agree with the single ones (all orders kept)
+    auto c2 = random_coeffs(L, g);
+    std::vector<double> f1(sh::ncoef(L)), f2(sh::ncoef(L)), g1(sh::ncoef(L), 0.0), g2(sh::ncoef(L), 0.0), r2(sh::ncoef(L));
+    R.to_frame2(L, L, c.data(), c2.data(), f1.data(), f2.data());
+    R.to_frame(L, c2.data(), r2.data());
+    for (int k = 0; k < sh::ncoef(L); ++k) {
+      EXPECT_NEAR(f1[k], cp[k], 1e-12);
+      EXPECT_NEAR(f2[k], r2[k], 1e-12);
+    }
+    R.from_frame2(L, L, f1.data(), f2.data(), g1.data(), g2.data());
+    for (int k = 0; k < sh::ncoef(L); ++k) {
+      EXPECT_NEAR(g1[k], c[k], 1e-11);
+      EXPECT_NEAR(g2[k], c2[k], 1e-11);
+    }
   }
 }
 
@@ -140,7 +154,7 @@ TEST(SpectralBasis, AxialTranslationMatchesDirectSum) {
     std::vector<double> Bs(sh::ncoef(L)), A(sh::ncoef(L), 0.0);
     for (int l = 0; l <= L; ++l)
       for (int m = -l; m <= l; ++m) Bs[sh::idx(l, m)] = Bfull[sh::idx(l, m)] / std::pow(b, l + 1);
-    T.apply(L, a / t, b / t, sign, Bs.data(), A.data());
+    T.apply(L, L, a / t, b / t, sign, Bs.data(), A.data());
     Vec3 c{0, 0, sign * t};
     for (Vec3 x : {Vec3{0.2, -0.1, 0.15}, Vec3{-0.1, 0.25, -0.2}}) {
       double direct = eval_irr(Ls, B, x - c);

@@ -1,5 +1,10 @@
 #pragma once
-// Point charges (exact for kappa_p = kappa_0), MODEL B.2 item 1.
+// Point charges, MODEL B.2 item 1: exact when kappa_p = kappa_0 (a uniform shell has the exterior
+// field of a point charge). In a medium kappa_0:
+//   F_i = sum_k q_i q_k (x_i - x_k) / (4 pi eps0 kappa_0 |x_i - x_k|^3) + q_i E_ext,   torque 0,
+//   U   = sum_i q_i^2 / (8 pi eps0 kappa_0 a_i) + sum_{i<k} q_i q_k / (4 pi eps0 kappa_0 |x_i - x_k|)
+//         - 1/2 sum_i q_i E_ext . x_i      (= 1/2 \int phi sigma_f dS, self energy included).
+// Surface samples: uniform sigma_f with sigma_b = sigma_f (1/kappa_0 - 1) (net charge q/kappa_0).
 #include <memory>
 
 #include "agglo/electrostatics/solver.hpp"

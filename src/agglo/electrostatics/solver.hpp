@@ -7,6 +7,7 @@
 // U = 1/2 \int phi sigma_f dS [J] (MODEL B.1), and solver statistics.
 //
 // Solvers are selected by name ("coulomb", "spectral", "bem") through make_solver().
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -61,6 +62,9 @@ class Solver {
   virtual Solution solve(const Problem& p) = 0;
   // Surface charge of the last solve (for output). Solvers without a surface return point samples.
   virtual std::vector<SurfaceSample> surface() const = 0;
+  // Optional triangulation of surface(): vertex triples indexing the samples (counter-clockwise
+  // seen from outside). Empty when the samples are a point cloud.
+  virtual std::vector<std::array<int, 3>> surface_triangles() const { return {}; }
 };
 
 struct SolverOptions {

@@ -1,13 +1,50 @@
 #include "agglo/electrostatics/spectral/rotation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+
 #include "agglo/electrostatics/spectral/harmonics.hpp"
+#include "agglo/electrostatics/spectral/kernels.hpp"
 
 namespace agglo::es::sh {
 
-void FrameRotation::build(const Vec3& e, int L) {
+namespace {
+// Dot product with four independent accumulators (lets the compiler pipeline/vectorise).
+inline double dot4(const double* a, const double* b, int n) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    s0 += a[k] * b[k];
+    s1 += a[k + 1] * b[k + 1];
+    s2 += a[k + 2] * b[k + 2];
+    s3 += a[k + 3] * b[k + 3];
+  }
+  for (; k < n; ++k) s0 += a[k] * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
+// Two dot products sharing the row a.
+inline void dot4x2(const double* a, const double* b, const double* c, int n, double& rb, double& rc) {
+  double b0 = 0, b1 = 0, c0 = 0, c1 = 0;
+  int k = 0;
+  for (; k + 2 <= n; k += 2) {
+    b0 += a[k] * b[k];
+    c0 += a[k] * c[k];
+    b1 += a[k + 1] * b[k + 1];
+    c1 += a[k + 1] * c[k + 1];
+  }
+  for (; k < n; ++k) {
+    b0 += a[k] * b[k];
+    c0 += a[k] * c[k];
+  }
+  rb = b0 + b1;
+  rc = c0 + c1;
+}
+}  // namespace
+
+void FrameRotation::build(const Vec3& e, int L, int M) {
   L_ = L;
+  M_ = (M < 0 || M > L) ? L : M;
   const double rxy = std::hypot(e.x, e.y);
   const double a = (rxy > 0) ? std::atan2(e.y, e.x) : 0.0;
   const double b = std::atan2(rxy, e.z);
@@ -18,16 +55,40 @@ void FrameRotation::build(const Vec3& e, int L) {
     sina_[m] = std::sin(m * a);
   }
   // Wigner d^j_{a b}(beta), a >= |b|, j = 0..L. Offsets: sum_{k<j} (k+1)^2.
+  if (static_cast<int>(lf_.size()) < 2 * L + 2) {
+    lf_.resize(2 * L + 2);
+    for (int k = 0; k < 2 * L + 2; ++k) lf_[k] = std::lgamma(k + 1.0);
+  }
+  if (sqL_ < L + 1) {
+    sqL_ = L + 1;
+    sq_.assign(std::size_t(sqL_ + 1) * (sqL_ + 1), 0.0);
+    isq_.assign(sq_.size(), 0.0);
+    ij_.assign(sqL_ + 1, 0.0);
+    for (int j = 0; j <= sqL_; ++j) {
+      ij_[j] = j > 0 ? 1.0 / j : 0.0;
+      for (int m = 0; m <= j; ++m) {
+        double v = std::sqrt(double(j * j - m * m));
+        sq_[std::size_t(j) * (sqL_ + 1) + m] = v;
+        isq_[std::size_t(j) * (sqL_ + 1) + m] = v > 0 ? 1.0 / v : 0.0;
+      }
+    }
+  }
+  auto ISQ = [&](int j, int m) { return isq_[std::size_t(j) * (sqL_ + 1) + (m < 0 ? -m : m)]; };
+  auto SQ = [&](int j, int m) { return sq_[std::size_t(j) * (sqL_ + 1) + (m < 0 ? -m : m)]; };
   std::vector<std::size_t> doff(L + 2, 0);
   for (int j = 0; j <= L; ++j) doff[j + 1] = doff[j] + std::size_t(j + 1) * (j + 1);
-  d_.assign(doff[L + 1], 0.0);
+  d_.resize(doff[L + 1]);
   auto D = [&](int j, int p, int q) -> double& { return d_[doff[j] + p * p + p + q]; };
   const double cb = std::cos(b), ch = std::cos(0.5 * b), sh = std::sin(0.5 * b);
+  const double lc = std::log(ch), ls = std::log(sh);
   for (int p = 0; p <= L; ++p) {
-    for (int q = -p; q <= p; ++q) {
+    const int qm = std::min(p, M_);  // only |q| <= M is needed for frame orders <= M
+    for (int q = -qm; q <= qm; ++q) {
       // start: d^p_{p q} = (-1)^(p-q) sqrt((2p)!/((p+q)!(p-q)!)) c^(p+q) s^(p-q)
-      double lb = 0.5 * (std::lgamma(2.0 * p + 1) - std::lgamma(p + q + 1.0) - std::lgamma(p - q + 1.0));
-      double v = std::exp(lb) * std::pow(ch, p + q) * std::pow(sh, p - q);
+      double e = 0.5 * (lf_[2 * p] - lf_[p + q] - lf_[p - q]);
+      if (p + q > 0) e += (p + q) * lc;
+      if (p - q > 0) e += (p - q) * ls;
+      double v = std::exp(e);
       if ((p - q) & 1) v = -v;
       D(p, p, q) = v;
       double prev = 0.0, cur = v;
@@ -38,9 +99,9 @@ void FrameRotation::build(const Vec3& e, int L) {
         } else {
           double jj = j;
           double c1 = (2 * jj + 1) * (jj * (jj + 1) * cb - double(p) * q);
-          double c2 = (jj + 1) * std::sqrt((jj * jj - q * q) * (jj * jj - double(p) * p));
-          double c0 = jj * std::sqrt(((jj + 1) * (jj + 1) - q * q) * ((jj + 1) * (jj + 1) - double(p) * p));
-          next = (c1 * cur - c2 * prev) / c0;
+          double c2 = (jj + 1) * SQ(j, q) * SQ(j, p);
+          double ic0 = ij_[j] * ISQ(j + 1, q) * ISQ(j + 1, p);
+          next = (c1 * cur - c2 * prev) * ic0;
         }
         D(j + 1, p, q) = next;
         prev = cur;
@@ -61,13 +122,17 @@ void FrameRotation::build(const Vec3& e, int L) {
   // in our basis (Y = Z * s_m * const, s_0 = 1, s_m = 1/sqrt2) the frame map is
   // c'_{m'} = sum_m G_{m m'} (s_m / s_{m'}) c_m.
   off_.assign(L + 2, 0);
-  for (int l = 0; l <= L; ++l) off_[l + 1] = off_[l] + (l + 1) * (l + 1) + l * l;
+  for (int l = 0; l <= L; ++l) {
+    int ml = std::min(l, M_);
+    off_[l + 1] = off_[l] + (ml + 1) * (l + 1) + ml * l;
+  }
   blk_.assign(off_[L + 1], 0.0);
   const double r2 = std::sqrt(2.0);
   auto sgn = [](int k) { return (k & 1) ? -1.0 : 1.0; };
   for (int l = 0; l <= L; ++l) {
     double* C = &blk_[off_[l]];
-    double* S = C + (l + 1) * (l + 1);
+    const int ml = std::min(l, M_);
+    double* S = C + (ml + 1) * (l + 1);
     auto Gc = [&](int mp, int m) -> double {  // cos block, m', m >= 0
       if (m > 0 && mp > 0) return sgn(m + mp) * d(l, mp, m) + sgn(mp) * d(l, mp, -m);
       if (m > 0) return r2 * sgn(m) * d(l, 0, m);
@@ -78,9 +143,9 @@ void FrameRotation::build(const Vec3& e, int L) {
       return sgn(m + mp) * d(l, mp, m) - sgn(mp) * d(l, mp, -m);
     };
     auto s = [&](int m) { return m == 0 ? 1.0 : 1.0 / r2; };
-    for (int mp = 0; mp <= l; ++mp)
+    for (int mp = 0; mp <= ml; ++mp)
       for (int m = 0; m <= l; ++m) C[mp * (l + 1) + m] = Gc(m, mp) * s(m) / s(mp);
-    for (int mp = 1; mp <= l; ++mp)
+    for (int mp = 1; mp <= ml; ++mp)
       for (int m = 1; m <= l; ++m) S[(mp - 1) * l + (m - 1)] = Gs(m, mp);
   }
 }
@@ -98,19 +163,10 @@ void FrameRotation::to_frame(int Lmax, const double* in, double* out) const {
       ts[m - 1] = -cc * sina_[m] + ss * cosa_[m];
     }
     const double* C = &blk_[off_[l]];
-    const double* S = C + (l + 1) * (l + 1);
-    for (int mp = 0; mp <= l; ++mp) {
-      const double* row = C + mp * (l + 1);
-      double acc = 0.0;
-      for (int m = 0; m <= l; ++m) acc += row[m] * tc[m];
-      out[idx(l, mp)] = acc;
-    }
-    for (int mp = 1; mp <= l; ++mp) {
-      const double* row = S + (mp - 1) * l;
-      double acc = 0.0;
-      for (int m = 0; m < l; ++m) acc += row[m] * ts[m];
-      out[idx(l, -mp)] = acc;
-    }
+    const int ml = std::min(l, M_);
+    const double* S = C + (ml + 1) * (l + 1);
+    for (int mp = 0; mp <= ml; ++mp) out[idx(l, mp)] = dot4(C + mp * (l + 1), tc, l + 1);
+    for (int mp = 1; mp <= ml; ++mp) out[idx(l, -mp)] = dot4(S + (mp - 1) * l, ts, l);
   }
 }
 
@@ -118,19 +174,20 @@ void FrameRotation::from_frame(int Lmax, const double* in, double* out) const {
   double tmp[2 * 512 + 2];
   for (int l = 0; l <= Lmax; ++l) {
     const double* C = &blk_[off_[l]];
-    const double* S = C + (l + 1) * (l + 1);
+    const int ml = std::min(l, M_);
+    const double* S = C + (ml + 1) * (l + 1);
     double* tc = tmp;
     double* ts = tmp + l + 1;
     for (int m = 0; m <= l; ++m) tc[m] = 0.0;
     for (int m = 0; m < l; ++m) ts[m] = 0.0;
     // Cos block C = s^-1 G^T s with G orthogonal: C^-1 = s^-2 C^T s^2 (s_0 = 1, s_m = 1/sqrt2).
-    for (int mp = 0; mp <= l; ++mp) {
+    for (int mp = 0; mp <= ml; ++mp) {
       const double* row = C + mp * (l + 1);
       double v = in[idx(l, mp)] * (mp == 0 ? 2.0 : 1.0);
       for (int m = 0; m <= l; ++m) tc[m] += row[m] * v;
     }
     tc[0] *= 0.5;
-    for (int mp = 1; mp <= l; ++mp) {
+    for (int mp = 1; mp <= ml; ++mp) {
       const double* row = S + (mp - 1) * l;
       double v = in[idx(l, -mp)];
       for (int m = 0; m < l; ++m) ts[m] += row[m] * v;
@@ -139,6 +196,78 @@ void FrameRotation::from_frame(int Lmax, const double* in, double* out) const {
     for (int m = 1; m <= l; ++m) {
       out[idx(l, m)] = tc[m] * cosa_[m] - ts[m - 1] * sina_[m];
       out[idx(l, -m)] = tc[m] * sina_[m] + ts[m - 1] * cosa_[m];
+    }
+  }
+}
+
+void FrameRotation::to_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1,
+                              double* out2) const {
+  alignas(16) double tc[2 * 514], ts[2 * 514], yc[2 * 514], ys[2 * 514];
+  for (int l = 0; l <= Lmax; ++l) {
+    // z rotation, interleaving the two vectors
+    tc[0] = in1[idx(l, 0)];
+    tc[1] = in2[idx(l, 0)];
+    for (int m = 1; m <= l; ++m) {
+      double a = in1[idx(l, m)], b = in1[idx(l, -m)];
+      tc[2 * m] = a * cosa_[m] + b * sina_[m];
+      ts[2 * (m - 1)] = -a * sina_[m] + b * cosa_[m];
+      a = in2[idx(l, m)], b = in2[idx(l, -m)];
+      tc[2 * m + 1] = a * cosa_[m] + b * sina_[m];
+      ts[2 * (m - 1) + 1] = -a * sina_[m] + b * cosa_[m];
+    }
+    const int ml = std::min(l, M_);
+    const int mm = std::min(ml, Mmax);
+    const double* C = &blk_[off_[l]];
+    const double* S = C + (ml + 1) * (l + 1);
+    kern::gemv2(C, l + 1, mm + 1, l + 1, tc, yc);
+    for (int mp = 0; mp <= mm; ++mp) {
+      out1[idx(l, mp)] = yc[2 * mp];
+      out2[idx(l, mp)] = yc[2 * mp + 1];
+    }
+    if (mm > 0) {
+      kern::gemv2(S, l, mm, l, ts, ys);
+      for (int mp = 1; mp <= mm; ++mp) {
+        out1[idx(l, -mp)] = ys[2 * (mp - 1)];
+        out2[idx(l, -mp)] = ys[2 * (mp - 1) + 1];
+      }
+    }
+  }
+}
+
+void FrameRotation::from_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1,
+                                double* out2) const {
+  alignas(16) double vc[2 * 514], vs[2 * 514], tc[2 * 514], ts[2 * 514];
+  for (int l = 0; l <= Lmax; ++l) {
+    const int ml = std::min(l, M_);
+    const int mm = std::min(ml, Mmax);
+    const double* C = &blk_[off_[l]];
+    const double* S = C + (ml + 1) * (l + 1);
+    // Cos block C = s^-1 G^T s with G orthogonal: C^-1 = s^-2 C^T s^2 (s_0 = 1, s_m = 1/sqrt2).
+    for (int mp = 0; mp <= mm; ++mp) {
+      double w = (mp == 0 ? 2.0 : 1.0);
+      vc[2 * mp] = in1[idx(l, mp)] * w;
+      vc[2 * mp + 1] = in2[idx(l, mp)] * w;
+    }
+    for (int m = 0; m < 2 * (l + 1); ++m) tc[m] = 0.0;
+    kern::gemv2t(C, l + 1, mm + 1, l + 1, vc, tc);
+    tc[0] *= 0.5;
+    tc[1] *= 0.5;
+    for (int m = 0; m < 2 * l; ++m) ts[m] = 0.0;
+    if (mm > 0) {
+      for (int mp = 1; mp <= mm; ++mp) {
+        vs[2 * (mp - 1)] = in1[idx(l, -mp)];
+        vs[2 * (mp - 1) + 1] = in2[idx(l, -mp)];
+      }
+      kern::gemv2t(S, l, mm, l, vs, ts);
+    }
+    out1[idx(l, 0)] += tc[0];
+    out2[idx(l, 0)] += tc[1];
+    for (int m = 1; m <= l; ++m) {
+      const double c = cosa_[m], s = sina_[m];
+      out1[idx(l, m)] += tc[2 * m] * c - ts[2 * (m - 1)] * s;
+      out1[idx(l, -m)] += tc[2 * m] * s + ts[2 * (m - 1)] * c;
+      out2[idx(l, m)] += tc[2 * m + 1] * c - ts[2 * (m - 1) + 1] * s;
+      out2[idx(l, -m)] += tc[2 * m + 1] * s + ts[2 * (m - 1) + 1] * c;
     }
   }
 }

@@ -16,20 +16,28 @@ namespace agglo::es::sh {
 
 class FrameRotation {
  public:
-  // Build for direction e (any length > 0) and degrees <= L.
-  void build(const Vec3& e, int L);
+  // Build for direction e (any length > 0), degrees <= L and frame orders |m| <= M (M < 0: all).
+  // With M < L only frame orders <= M are produced by to_frame / consumed by from_frame.
+  void build(const Vec3& e, int L, int M = -1);
   int degree() const { return L_; }
   // out = coefficients in the rotated frame; degrees <= Lmax (<= degree()) are used.
   void to_frame(int Lmax, const double* in, double* out) const;
   // Inverse of to_frame.
   void from_frame(int Lmax, const double* in, double* out) const;
+  // Fused versions for two vectors (one pass over the rotation data). to_frame2 computes only
+  // the frame orders |m| <= Mmax (others untouched); from_frame2 reads only |m| <= Mmax and
+  // ADDS the result to out1, out2.
+  void to_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1, double* out2) const;
+  void from_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1, double* out2) const;
 
  private:
-  int L_ = -1;
+  int L_ = -1, M_ = -1;
   std::vector<double> cosa_, sina_;   // cos(m a), sin(m a), m = 0..L
   std::vector<double> blk_;           // per l: cos block (l+1)^2 then sin block l^2, row-major
   std::vector<int> off_;              // offset of degree l's blocks in blk_
   std::vector<double> d_;             // scratch: Wigner d
+  std::vector<double> lf_, sq_, isq_, ij_;  // log k!, sqrt(j^2 - m^2), inverses (grow only)
+  int sqL_ = -1;
 };
 
 }  // namespace agglo::es::sh

@@ -1,5 +1,25 @@
 #pragma once
-// Spherical-harmonic (multipole) solver for spheres, MODEL B.2 item 3.
+// Spherical-harmonic (multipole) solver for dielectric spheres, MODEL B.2 item 3
+// (Lindgren et al. 2018 J. Comput. Phys. 371, 712; reaction form of BSL's equation).
+//
+// Each sphere's surface charge is expanded in real spherical harmonics up to degree L
+// (spectral/harmonics.hpp). With the regular expansion alpha of the potential of all other
+// spheres plus the applied field about x_i, the exterior multipoles obey
+//   B_lm = -gamma_l a^(2l+1) A_lm,   gamma_l = (kappa_i - kappa_0) l / ((kappa_i + kappa_0) l + kappa_0),
+//   B_00 = q_i / (4 pi eps0 kappa_0)  (net charge q_i / kappa_0 exactly).
+// Multipole-to-local translations between spheres are rotation based (rotate the pair axis to z,
+// axial translation, rotate back): O(L^3) per pair and matrix-vector product; each pair uses its
+// own truncation degree (from the pair's limit-point ratio at 1e-2 x target accuracy). The system
+// is solved by restarted GMRES to min(tolerance, 1e-2 target_accuracy), warm-started from the
+// previous solve (same number of spheres). Forces and torques use closed forms:
+//   F_i = -kappa_0 4 pi eps0 sum_lm w_m beta_lm (a grad phi_ext)_lm,
+//   M_i = -kappa_0 4 pi eps0 a sum_lm w_m beta_lm ((r x grad) phi_ext)_lm,   w_0 = 1, w_m = 1/2,
+// energy U = 1/2 sum_i q_i (q_i/(4 pi eps0 kappa_0 a_i) + phi_ext,i(x_i))  (= 1/2 \int phi sigma_f dS,
+// self energy of each shell included; applied potential -E.x, zero at the origin).
+// L: SolverOptions::max_degree if > 0, else the smallest L with 2 (rho_a rho_b)^L <= target_accuracy
+// over all pairs (spectral/degree.hpp), capped at max_degree_limit.
+// Errors: overlapping spheres, radius or permittivity <= 0, or GMRES not converging throw
+// agglo::NumericalError.
 #include <memory>
 
 #include "agglo/electrostatics/solver.hpp"

@@ -1,8 +1,11 @@
 #include "agglo/electrostatics/spectral/translation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+
 #include "agglo/electrostatics/spectral/harmonics.hpp"
+#include "agglo/electrostatics/spectral/kernels.hpp"
 
 namespace agglo::es::sh {
 
@@ -26,41 +29,58 @@ void AxialTranslation::prepare(int L) {
   }
 }
 
-void AxialTranslation::apply(int Lmax, double u, double v, int sign, const double* in, double* out) const {
-  double xc[1024], xs[1024], up[1024];
+void AxialTranslation::apply(int Lmax, int Mmax, double u, double v, int sign, const double* in, double* out) const {
+  double up[1024];
   double p = 1.0;
   for (int j = 0; j <= Lmax; ++j) {
     up[j] = p;
     p *= u;
   }
-  for (int m = 0; m <= Lmax; ++m) {
+  for (int m = 0; m <= std::min(Lmax, Mmax); ++m) {
     const int w = L_ - m + 1;
     const int nn = Lmax - m + 1;
     const double* F = &f_[off_[m]];
     // scaled source: v^(n+1) beta_n (and the (-1)^n of a source at -t z)
     double vp = std::pow(v, m + 1);
+    alignas(16) double x[2 * 1024], y[2 * 1024];
     for (int n = m; n <= Lmax; ++n) {
       double s = (sign < 0 && (n & 1)) ? -vp : vp;
-      xc[n - m] = s * in[idx(n, m)];
-      xs[n - m] = (m > 0) ? s * in[idx(n, -m)] : 0.0;
+      x[2 * (n - m)] = s * in[idx(n, m)];
+      x[2 * (n - m) + 1] = (m > 0) ? s * in[idx(n, -m)] : 0.0;
       vp *= v;
     }
+    kern::gemv2(F, w, nn, nn, x, y);
     for (int j = m; j <= Lmax; ++j) {
-      const double* row = F + (j - m) * w;
-      double ac = 0.0, as = 0.0;
-      if (m > 0) {
-        for (int k = 0; k < nn; ++k) {
-          ac += row[k] * xc[k];
-          as += row[k] * xs[k];
-        }
-      } else {
-        for (int k = 0; k < nn; ++k) ac += row[k] * xc[k];
-      }
       double s = (sign < 0 && (j & 1)) ? -up[j] : up[j];
-      out[idx(j, m)] += s * ac;
-      if (m > 0) out[idx(j, -m)] += s * as;
+      out[idx(j, m)] += s * y[2 * (j - m)];
+      if (m > 0) out[idx(j, -m)] += s * y[2 * (j - m) + 1];
     }
   }
+}
+
+}  // namespace agglo::es::sh
+
+namespace agglo::es::sh {
+
+int AxialTranslation::order_cutoff(int Lmax, double u, double v, double tol) const {
+  // bound of the m-block operator norm: (block size) * max |F u^j v^(n+1)|, both directions
+  std::vector<double> lu(Lmax + 2), lv(Lmax + 2);
+  for (int k = 0; k <= Lmax + 1; ++k) {
+    lu[k] = std::pow(u, k);
+    lv[k] = std::pow(v, k);
+  }
+  for (int m = Lmax; m > 0; --m) {
+    const int w = L_ - m + 1;
+    const double* F = &f_[off_[m]];
+    double mx = 0.0;
+    for (int j = m; j <= Lmax; ++j)
+      for (int n = m; n <= Lmax; ++n) {
+        double f = std::abs(F[(j - m) * w + (n - m)]);
+        mx = std::max(mx, f * std::max(lu[j] * lv[n + 1], lv[j] * lu[n + 1]));
+      }
+    if (mx * (Lmax - m + 1) >= tol) return m;
+  }
+  return 0;
 }
 
 }  // namespace agglo::es::sh

@@ -19,7 +19,12 @@ class AxialTranslation {
   int degree() const { return L_; }
   // out (+)= translated coefficients; degrees <= Lmax (<= degree()) used for source and target.
   // sign = +1: source centre at +t z; -1: at -t z. `accumulate` adds into out.
-  void apply(int Lmax, double u, double v, int sign, const double* in, double* out) const;
+  // Only frame orders |m| <= Mmax are translated.
+  void apply(int Lmax, int Mmax, double u, double v, int sign, const double* in, double* out) const;
+  // Smallest order M such that every m-block with m > M has operator-norm bound
+  // (block size x largest entry, both directions) below tol: orders above M can be dropped.
+  // Near contact the pair coupling is concentrated at small |m| around the pair axis.
+  int order_cutoff(int Lmax, double u, double v, double tol) const;
 
  private:
   int L_ = -1;

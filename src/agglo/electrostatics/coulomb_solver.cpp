@@ -1,0 +1,101 @@
+// Point-charge solver (MODEL B.2 item 1). See coulomb_solver.hpp.
+#include "agglo/electrostatics/coulomb_solver.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "agglo/core/constants.hpp"
+#include "agglo/core/error.hpp"
+#include "agglo/electrostatics/sphere_mesh.hpp"
+
+namespace agglo::es {
+
+namespace {
+
+using constants::eps0;
+using constants::pi;
+
+class CoulombSolver final : public Solver {
+ public:
+  explicit CoulombSolver(const SolverOptions& opt) : opt_(opt) {}
+  std::string name() const override { return "coulomb"; }
+
+  Solution solve(const Problem& p) override {
+    auto t0 = std::chrono::steady_clock::now();
+    const int N = static_cast<int>(p.spheres.size());
+    const double k0 = p.medium_permittivity;
+    if (!(k0 > 0)) throw NumericalError(fmt::format("coulomb: medium permittivity must be > 0 (got {})", k0));
+    Solution sol;
+    sol.force.assign(N, Vec3{});
+    sol.torque.assign(N, Vec3{});
+    const double kc = 1.0 / (4 * pi * eps0 * k0);
+    double U = 0.0;
+    for (int i = 0; i < N; ++i) {
+      const auto& a = p.spheres[i];
+      if (!(a.radius > 0)) throw NumericalError(fmt::format("coulomb: sphere {} has radius {} (must be > 0)", i, a.radius));
+      // self energy of the uniform shell: q^2 / (8 pi eps0 kappa0 r); applied potential -E.x
+      U += 0.5 * kc * a.charge * a.charge / a.radius - 0.5 * a.charge * dot(p.external_field, a.center);
+      sol.force[i] += p.external_field * a.charge;
+      for (int k = i + 1; k < N; ++k) {
+        const auto& b = p.spheres[k];
+        Vec3 d = a.center - b.center;
+        double r = norm(d);
+        if (r <= a.radius + b.radius)
+          throw NumericalError(fmt::format("coulomb: spheres {} and {} overlap (centre distance {:.6g} m <= {:.6g} m)",
+                                           i, k, r, a.radius + b.radius));
+        Vec3 f = d * (kc * a.charge * b.charge / (r * r * r));
+        sol.force[i] += f;
+        sol.force[k] -= f;
+        U += kc * a.charge * b.charge / r;
+      }
+    }
+    sol.energy = U;
+    last_ = p;
+    sol.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return sol;
+  }
+
+  // Uniform free charge; the bound charge of a point-charge model is taken as the part that makes
+  // the net charge q / kappa0 (uniform), i.e. sigma_b = sigma_f (1/kappa0 - 1).
+  std::vector<SurfaceSample> surface() const override {
+    std::vector<SurfaceSample> out;
+    auto mesh = icosphere(icosphere_level_for(std::min(opt_.patches_per_sphere, 642)));
+    for (std::size_t i = 0; i < last_.spheres.size(); ++i) {
+      const auto& s = last_.spheres[i];
+      double sf = s.charge / (4 * pi * s.radius * s.radius);
+      for (const auto& n : mesh.vertices) {
+        SurfaceSample ss;
+        ss.position = s.center + n * s.radius;
+        ss.normal = n;
+        ss.area = 4 * pi * s.radius * s.radius / mesh.vertices.size();
+        ss.sigma_free = sf;
+        ss.sigma_bound = sf * (1.0 / last_.medium_permittivity - 1.0);
+        ss.body = static_cast<int>(i);
+        out.push_back(ss);
+      }
+    }
+    return out;
+  }
+
+  std::vector<std::array<int, 3>> surface_triangles() const override {
+    std::vector<std::array<int, 3>> tri;
+    auto mesh = icosphere(icosphere_level_for(std::min(opt_.patches_per_sphere, 642)));
+    const int nv = static_cast<int>(mesh.vertices.size());
+    for (std::size_t i = 0; i < last_.spheres.size(); ++i)
+      for (const auto& t : mesh.triangles)
+        tri.push_back({t[0] + int(i) * nv, t[1] + int(i) * nv, t[2] + int(i) * nv});
+    return tri;
+  }
+
+ private:
+  SolverOptions opt_;
+  Problem last_;
+};
+
+}  // namespace
+
+std::unique_ptr<Solver> make_coulomb_solver(const SolverOptions& opt) { return std::make_unique<CoulombSolver>(opt); }
+
+}  // namespace agglo::es

@@ -1,0 +1,41 @@
+#pragma once
+// Small dense kernels of the spectral solver, written with GCC/Clang vector extensions so that
+// two right-hand sides are processed in one SIMD register (no reassociation of sums needed).
+//   y = A x     for a row-major A (rows x cols) and two interleaved vectors x = (x1[k], x2[k]);
+//   y += A^T v  likewise (interleaved v and y).
+namespace agglo::es::sh::kern {
+
+typedef double v2d __attribute__((vector_size(16)));
+
+// y[2r], y[2r+1] = sum_k A[r*lda + k] * (x[2k], x[2k+1]),  r < rows
+inline void gemv2(const double* A, int lda, int rows, int cols, const double* x, double* y) {
+  const v2d* X = reinterpret_cast<const v2d*>(x);
+  for (int r = 0; r < rows; ++r) {
+    const double* a = A + static_cast<long>(r) * lda;
+    v2d s0 = {0, 0}, s1 = {0, 0}, s2 = {0, 0}, s3 = {0, 0};
+    int k = 0;
+    for (; k + 4 <= cols; k += 4) {
+      s0 += a[k] * X[k];
+      s1 += a[k + 1] * X[k + 1];
+      s2 += a[k + 2] * X[k + 2];
+      s3 += a[k + 3] * X[k + 3];
+    }
+    for (; k < cols; ++k) s0 += a[k] * X[k];
+    v2d s = (s0 + s1) + (s2 + s3);
+    y[2 * r] = s[0];
+    y[2 * r + 1] = s[1];
+  }
+}
+
+// y[2k], y[2k+1] += sum_r A[r*lda + k] * (v[2r], v[2r+1]),  k < cols
+inline void gemv2t(const double* A, int lda, int rows, int cols, const double* v, double* y) {
+  const v2d* V = reinterpret_cast<const v2d*>(v);
+  v2d* Y = reinterpret_cast<v2d*>(y);
+  for (int r = 0; r < rows; ++r) {
+    const double* a = A + static_cast<long>(r) * lda;
+    const v2d vr = V[r];
+    for (int k = 0; k < cols; ++k) Y[k] += a[k] * vr;
+  }
+}
+
+}  // namespace agglo::es::sh::kern

@@ -1,0 +1,327 @@
+// Spectral (spherical-harmonic) solver, MODEL B.2 item 3. See spectral_solver.hpp.
+#include "agglo/electrostatics/spectral/spectral_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "agglo/core/constants.hpp"
+#include "agglo/core/error.hpp"
+#include "agglo/electrostatics/spectral/degree.hpp"
+#include "agglo/electrostatics/spectral/gmres.hpp"
+#include "agglo/electrostatics/spectral/harmonics.hpp"
+#include "agglo/electrostatics/spectral/rotation.hpp"
+#include "agglo/electrostatics/spectral/translation.hpp"
+#include "agglo/electrostatics/sphere_mesh.hpp"
+
+namespace agglo::es {
+
+namespace {
+
+using constants::eps0;
+using constants::pi;
+
+// Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
+// sphere's own potential outside is sum B_lm I_l^m(x - x_i). The external potential at sphere i
+// is sum A_lm R_l^m(x - x_i) with scaled alpha_lm = a^l A_lm [V]. Reaction form (MODEL B.2):
+//   beta_lm = -gamma_l alpha_lm (l >= 1),  beta_00 = q / (4 pi eps0 kappa0 a).
+class SpectralSolver final : public Solver {
+ public:
+  explicit SpectralSolver(const SolverOptions& opt) : opt_(opt) {}
+  std::string name() const override { return "spectral"; }
+  Solution solve(const Problem& p) override;
+  std::vector<SurfaceSample> surface() const override;
+  std::vector<std::array<int, 3>> surface_triangles() const override;
+
+ private:
+  struct Pair {
+    int i = 0, k = 0;   // x_k - x_i along the frame's z axis
+    double ui = 0, uk = 0;  // a_i / t, a_k / t
+    int L = 0;  // truncation degree of this pair
+    int M = 0;  // truncation order in the pair frame
+    sh::FrameRotation R;
+  };
+  void matvec_M(const double* beta, double* alpha);  // alpha = M beta (sphere-sphere part)
+  int choose_degree(const Problem& p, double& est_err);
+
+  SolverOptions opt_;
+  sh::AxialTranslation T_;
+  std::vector<Pair> pairs_;
+  int L_ = 0, N_ = 0, nc_ = 0;
+  std::vector<double> gamma_;  // per sphere, per l
+  std::vector<double> beta_, alpha_;
+  std::vector<double> bi_, bk_, ai_, ak_, tmp_;
+  Problem last_;
+  GmresWorkspace ws_;
+  // warm start
+  std::vector<double> prev_beta_;
+  int prev_L_ = -1, prev_N_ = -1;
+};
+
+int SpectralSolver::choose_degree(const Problem& p, double& est_err) {
+  const int N = static_cast<int>(p.spheres.size());
+  est_err = 0.0;
+  if (opt_.max_degree > 0) {
+    for (int i = 0; i < N; ++i)
+      for (int k = i + 1; k < N; ++k) {
+        const auto& a = p.spheres[i];
+        const auto& b = p.spheres[k];
+        auto r = sh::limit_ratios(a.radius, b.radius, norm(b.center - a.center));
+        est_err = std::max(est_err, sh::error_estimate(r, opt_.max_degree));
+      }
+    return opt_.max_degree;
+  }
+  int L = 2;
+  for (int i = 0; i < N; ++i)
+    for (int k = i + 1; k < N; ++k) {
+      const auto& a = p.spheres[i];
+      const auto& b = p.spheres[k];
+      // a pair with no polarisable sphere needs only its monopoles
+      if (a.permittivity == p.medium_permittivity && b.permittivity == p.medium_permittivity) continue;
+      auto r = sh::limit_ratios(a.radius, b.radius, norm(b.center - a.center));
+      L = std::max(L, sh::degree_for(r, opt_.target_accuracy));
+    }
+  L = std::min(L, opt_.max_degree_limit);
+  for (int i = 0; i < N; ++i)
+    for (int k = i + 1; k < N; ++k) {
+      const auto& a = p.spheres[i];
+      const auto& b = p.spheres[k];
+      if (a.permittivity == p.medium_permittivity && b.permittivity == p.medium_permittivity) continue;
+      auto r = sh::limit_ratios(a.radius, b.radius, norm(b.center - a.center));
+      est_err = std::max(est_err, sh::error_estimate(r, L));
+    }
+  return L;
+}
+
+void SpectralSolver::matvec_M(const double* beta, double* alpha) {
+  std::fill(alpha, alpha + std::size_t(N_) * nc_, 0.0);
+  for (auto& pr : pairs_) {
+    const int Lp = pr.L;
+    const int np = sh::ncoef(Lp);
+    const double* b_i = beta + std::size_t(pr.i) * nc_;
+    const double* b_k = beta + std::size_t(pr.k) * nc_;
+    pr.R.to_frame2(Lp, pr.M, b_k, b_i, bk_.data(), bi_.data());
+    std::fill(ai_.begin(), ai_.begin() + np, 0.0);
+    std::fill(ak_.begin(), ak_.begin() + np, 0.0);
+    // source k seen from i sits at +t z; source i seen from k at -t z.
+    T_.apply(Lp, pr.M, pr.ui, pr.uk, +1, bk_.data(), ai_.data());
+    T_.apply(Lp, pr.M, pr.uk, pr.ui, -1, bi_.data(), ak_.data());
+    pr.R.from_frame2(Lp, pr.M, ai_.data(), ak_.data(), alpha + std::size_t(pr.i) * nc_,
+                     alpha + std::size_t(pr.k) * nc_);
+  }
+}
+
+Solution SpectralSolver::solve(const Problem& p) {
+  auto t0 = std::chrono::steady_clock::now();
+  const int N = static_cast<int>(p.spheres.size());
+  const double k0 = p.medium_permittivity;
+  if (!(k0 > 0)) throw NumericalError(fmt::format("spectral: medium permittivity must be > 0 (got {})", k0));
+  for (int i = 0; i < N; ++i) {
+    const auto& s = p.spheres[i];
+    if (!(s.radius > 0)) throw NumericalError(fmt::format("spectral: sphere {} has radius {} (must be > 0)", i, s.radius));
+    if (!(s.permittivity > 0))
+      throw NumericalError(fmt::format("spectral: sphere {} has permittivity {} (must be > 0)", i, s.permittivity));
+    if (!isfinite(s.center) || !std::isfinite(s.charge))
+      throw NumericalError(fmt::format("spectral: sphere {} has a non-finite position or charge", i));
+    for (int k = 0; k < i; ++k) {
+      const auto& o = p.spheres[k];
+      double t = norm(s.center - o.center);
+      if (t <= s.radius + o.radius)
+        throw NumericalError(fmt::format(
+            "spectral: spheres {} and {} overlap (centre distance {:.6g} m <= sum of radii {:.6g} m)", k, i, t,
+            s.radius + o.radius));
+    }
+  }
+  double est_err = 0.0;
+  const int L = choose_degree(p, est_err);
+  L_ = L;
+  N_ = N;
+  nc_ = sh::ncoef(L);
+  if (L > T_.degree()) T_.prepare(std::max(L, std::min(opt_.max_degree_limit, L + 8)));  // grows only
+
+  // Pairs with their own truncation degree.
+  pairs_.resize(std::size_t(N) * (N - 1) / 2);
+  const double tol_pair = 1e-2 * opt_.target_accuracy;
+  std::size_t q = 0;
+  for (int i = 0; i < N; ++i)
+    for (int k = i + 1; k < N; ++k, ++q) {
+      auto& pr = pairs_[q];
+      const auto& a = p.spheres[i];
+      const auto& b = p.spheres[k];
+      Vec3 d = b.center - a.center;
+      double t = norm(d);
+      pr.i = i;
+      pr.k = k;
+      pr.ui = a.radius / t;
+      pr.uk = b.radius / t;
+      auto r = sh::limit_ratios(a.radius, b.radius, t);
+      pr.L = std::min(L, std::max(2, sh::degree_for(r, tol_pair)));
+      pr.M = T_.order_cutoff(pr.L, pr.ui, pr.uk, tol_pair);
+      pr.R.build(d, pr.L, pr.M);
+    }
+  bi_.assign(nc_, 0.0);
+  bk_ = ai_ = ak_ = tmp_ = bi_;
+
+  // gamma_l per sphere
+  gamma_.assign(std::size_t(N) * (L + 1), 0.0);
+  for (int i = 0; i < N; ++i) {
+    double ki = p.spheres[i].permittivity;
+    for (int l = 1; l <= L; ++l) gamma_[i * (L + 1) + l] = (ki - k0) * l / ((ki + k0) * l + k0);
+  }
+  // applied field: phi = -E.x, local coefficients about x_i (scaled by a^l)
+  const std::size_t n = std::size_t(N) * nc_;
+  std::vector<double> alpha_ext(n, 0.0), rhs(n, 0.0);
+  const double r2 = std::sqrt(2.0);
+  for (int i = 0; i < N; ++i) {
+    const auto& s = p.spheres[i];
+    double* ae = &alpha_ext[std::size_t(i) * nc_];
+    const Vec3& E = p.external_field;
+    ae[sh::idx(0, 0)] = -dot(E, s.center);
+    if (L >= 1) {
+      ae[sh::idx(1, 0)] = -s.radius * E.z;
+      ae[sh::idx(1, 1)] = -r2 * s.radius * E.x;
+      ae[sh::idx(1, -1)] = -r2 * s.radius * E.y;
+    }
+    double* b = &rhs[std::size_t(i) * nc_];
+    for (int l = 1; l <= L; ++l)
+      for (int m = -l; m <= l; ++m) b[sh::idx(l, m)] = -gamma_[i * (L + 1) + l] * ae[sh::idx(l, m)];
+    b[0] = s.charge / (4 * pi * eps0 * k0 * s.radius);
+  }
+  // warm start
+  beta_.assign(n, 0.0);
+  if (prev_N_ == N && prev_L_ >= 0) {
+    int Lc = std::min(prev_L_, L);
+    int ncp = sh::ncoef(prev_L_);
+    for (int i = 0; i < N; ++i)
+      for (int c = 0; c < sh::ncoef(Lc); ++c) beta_[std::size_t(i) * nc_ + c] = prev_beta_[std::size_t(i) * ncp + c];
+  } else {
+    beta_ = rhs;
+  }
+  alpha_.assign(n, 0.0);
+  auto apply = [&](const double* x, double* y) {
+    matvec_M(x, alpha_.data());
+    for (int i = 0; i < N; ++i) {
+      const double* g = &gamma_[i * (L + 1)];
+      const double* xi = x + std::size_t(i) * nc_;
+      const double* ai = &alpha_[std::size_t(i) * nc_];
+      double* yi = y + std::size_t(i) * nc_;
+      for (int l = 0; l <= L; ++l)
+        for (int m = -l; m <= l; ++m) yi[sh::idx(l, m)] = xi[sh::idx(l, m)] + g[l] * ai[sh::idx(l, m)];
+    }
+  };
+  const double tol = std::min(opt_.tolerance, 1e-2 * opt_.target_accuracy);
+  GmresResult gr;
+  bool polarisable = false;
+  for (const auto& s : p.spheres) polarisable |= (s.permittivity != k0);
+  if (!polarisable) {
+    beta_ = rhs;  // no induced multipoles: exact
+    gr.converged = true;
+  } else {
+    gr = gmres(apply, rhs, beta_, tol, opt_.max_iterations, std::min(opt_.max_iterations, 60), ws_);
+    if (!gr.converged)
+      throw NumericalError(fmt::format(
+          "spectral: GMRES did not converge in {} iterations (relative residual {:.3g} > {:.3g}); raise "
+          "electrostatics.max_iterations or check the configuration",
+          gr.iterations, gr.residual, tol));
+  }
+  // external potential coefficients
+  matvec_M(beta_.data(), alpha_.data());
+  for (std::size_t c = 0; c < n; ++c) alpha_[c] += alpha_ext[c];
+
+  Solution sol;
+  sol.force.assign(N, Vec3{});
+  sol.torque.assign(N, Vec3{});
+  std::vector<double> gx(nc_), gy(nc_), gz(nc_);
+  double U = 0.0;
+  for (int i = 0; i < N; ++i) {
+    const auto& s = p.spheres[i];
+    const double* al = &alpha_[std::size_t(i) * nc_];
+    const double* be = &beta_[std::size_t(i) * nc_];
+    // F = -kappa0 grad_shift \int sigma phi_ext dS = -kappa0 4 pi eps0 sum w_m beta (a grad phi)_lm
+    sh::gradient(L, al, gx.data(), gy.data(), gz.data());
+    auto wdot = [&](const std::vector<double>& g) {
+      double acc = 0.0;
+      for (int l = 0; l <= L; ++l)
+        for (int m = -l; m <= l; ++m) acc += (m == 0 ? 1.0 : 0.5) * be[sh::idx(l, m)] * g[sh::idx(l, m)];
+      return acc;
+    };
+    const double c = -k0 * 4 * pi * eps0;
+    sol.force[i] = Vec3{wdot(gx), wdot(gy), wdot(gz)} * c;
+    // M = kappa0 \int sigma r x E = -kappa0 4 pi eps0 a sum w_m beta (r x grad) alpha
+    sh::rotation_generator(L, al, gx.data(), gy.data(), gz.data());
+    sol.torque[i] = Vec3{wdot(gx), wdot(gy), wdot(gz)} * (c * s.radius);
+    U += 0.5 * s.charge * (be[0] + al[0]);
+  }
+  sol.energy = U;
+  prev_beta_ = beta_;
+  prev_L_ = L;
+  prev_N_ = N;
+  last_ = p;
+  sol.stats.iterations = gr.iterations;
+  sol.stats.residual = gr.residual;
+  sol.stats.degree = L;
+  sol.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  int maxpair = 0, maxorder = 0;
+  for (const auto& pr : pairs_) {
+    maxpair = std::max(maxpair, pr.L);
+    maxorder = std::max(maxorder, pr.M);
+  }
+  sol.stats.extra = {{"estimated_relative_error", est_err},
+                     {"degree_capped", opt_.max_degree <= 0 && L >= opt_.max_degree_limit},
+                     {"max_pair_degree", maxpair},
+                     {"max_pair_order", maxorder},
+                     {"gmres_tolerance", tol}};
+  return sol;
+}
+
+std::vector<SurfaceSample> SpectralSolver::surface() const {
+  std::vector<SurfaceSample> out;
+  if (beta_.empty()) return out;
+  auto mesh = icosphere(icosphere_level_for(opt_.patches_per_sphere));
+  std::vector<double> y(nc_);
+  for (int i = 0; i < N_; ++i) {
+    const auto& s = last_.spheres[i];
+    const double* be = &beta_[std::size_t(i) * nc_];
+    const double sf = s.charge / (4 * pi * s.radius * s.radius);
+    for (const auto& nv : mesh.vertices) {
+      sh::eval_surface(L_, nv, y.data());
+      // sigma_lm = eps0 (2l+1) B_lm / a^(l+2) = eps0 (2l+1) beta_lm / a
+      double sig = 0.0;
+      for (int l = 0; l <= L_; ++l) {
+        double acc = 0.0;
+        for (int m = -l; m <= l; ++m) acc += be[sh::idx(l, m)] * y[sh::idx(l, m)];
+        sig += (2 * l + 1) * acc;
+      }
+      sig *= eps0 / s.radius;
+      SurfaceSample ss;
+      ss.position = s.center + nv * s.radius;
+      ss.normal = nv;
+      ss.area = 4 * pi * s.radius * s.radius / mesh.vertices.size();
+      ss.sigma_free = sf;
+      ss.sigma_bound = sig - sf;
+      ss.body = i;
+      out.push_back(ss);
+    }
+  }
+  return out;
+}
+
+std::vector<std::array<int, 3>> SpectralSolver::surface_triangles() const {
+  std::vector<std::array<int, 3>> tri;
+  if (beta_.empty()) return tri;
+  auto mesh = icosphere(icosphere_level_for(opt_.patches_per_sphere));
+  const int nv = static_cast<int>(mesh.vertices.size());
+  for (int i = 0; i < N_; ++i)
+    for (const auto& t : mesh.triangles) tri.push_back({t[0] + i * nv, t[1] + i * nv, t[2] + i * nv});
+  return tri;
+}
+
+}  // namespace
+
+std::unique_ptr<Solver> make_spectral_solver(const SolverOptions& opt) {
+  return std::make_unique<SpectralSolver>(opt);
+}
+
+}  // namespace agglo::es
