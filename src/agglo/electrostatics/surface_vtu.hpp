@@ -1,0 +1,17 @@
+#pragma once
+// Hand-written VTK XML UnstructuredGrid (.vtu, ASCII) of the surface charge of a solve:
+// points = surface samples, cells = triangles (VTK_TRIANGLE) when the solver provides a
+// triangulation, else one VTK_VERTEX per sample. Point data: sigma_f, sigma_b, sigma
+// (= sigma_f + sigma_b) [C/m^2], body id, normal, area [m^2]. Coordinates in metres.
+#include <array>
+#include <ostream>
+#include <vector>
+
+#include "agglo/electrostatics/solver.hpp"
+
+namespace agglo::es {
+
+void write_surface_vtu(std::ostream& os, const std::vector<SurfaceSample>& samples,
+                       const std::vector<std::array<int, 3>>& triangles);
+
+}  // namespace agglo::es
