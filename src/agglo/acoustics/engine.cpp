@@ -10,6 +10,11 @@
 
 namespace agglo::acoustics {
 
+namespace {
+// Below this many samples a step is too short for a fork/join to pay off.
+constexpr std::size_t kParallelMinSamples = 4096;
+}  // namespace
+
 Engine::Engine(EngineSettings s)
     : s_(std::move(s)), kernel_(s_.kernel, s_.motion.gas, s_.motion.sound) {
   substeps_ = std::max(1, static_cast<int>(std::lround(s_.collision_dt / s_.motion_dt)));
@@ -98,7 +103,7 @@ void Engine::step() {
   const std::size_t n = p_.size();
   const Motion& M = s_.motion;
   if (M.integrator != Integrator::none) {
-#pragma omp parallel
+#pragma omp parallel if (n >= kParallelMinSamples)
     {
       const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
       const std::size_t tid = static_cast<std::size_t>(omp_get_thread_num());
@@ -122,7 +127,7 @@ void Engine::step() {
   const std::uint64_t st = step_;
   // Exceptions must not leave an OpenMP region: keep the message of the lowest failing cell.
   std::vector<std::string> errors(static_cast<std::size_t>(nc));
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (n >= kParallelMinSamples)
   for (int c = 0; c < nc; ++c) {
     cell_stats_[c] = NanbuStats{};
     const std::size_t b = start_[c], e = start_[c + 1];

@@ -1,0 +1,211 @@
+// Engine-level invariants: exact solid/liquid volume and mass conservation (MODEL C.7.4), energy
+// bookkeeping of split-merge with compensation at e = 1 (C.7.4), thread-count independence, the
+// Nanbu guard (sub-cycling keeps every evaluated P_ij <= 1/N; strict mode refuses), lost particles.
+#include <cmath>
+#include <random>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include "agglo/acoustics/diagnostics.hpp"
+#include "agglo/acoustics/merge.hpp"
+#include "agglo/core/error.hpp"
+#include "helpers.hpp"
+
+using namespace agglo::acoustics;
+
+namespace {
+
+std::string mini_baseline(double end, const std::string& extra_time = "") {
+  return fmt::format(R"(
+seed = 42
+[sound]
+level_db = 140.0
+frequency_hz = 2000.0
+[time]
+end = {}
+collision_dt = 1e-5
+{}
+[[population]]
+name = "fines"
+phase = "solid"
+distribution = "lognormal"
+geometric_mean_diameter = 0.2e-6
+geometric_std = 2.0
+bins = 20
+number_concentration = 5e11
+samples = 2000
+[[population]]
+name = "droplets"
+phase = "liquid"
+distribution = "monodisperse"
+diameter = 30e-6
+number_concentration = 5e9
+samples = 200
+)",
+                     end, extra_time);
+}
+
+}  // namespace
+
+TEST(Engine, SolidLiquidVolumeAndMassConservedExactly) {
+  Engine e = test::make_engine(mini_baseline(0.02));
+  const double V = e.settings().motion.domain.volume();
+  const Counts c0 = count(e.particles(), V);
+  while (e.time() < 0.02 - 1e-12) e.step();
+  const Counts c1 = count(e.particles(), V);
+  EXPECT_GT(e.stats().coalescences[0], 50u);  // fine-droplet coalescences happened
+  EXPECT_NEAR(c1.solid_volume / c0.solid_volume, 1.0, 1e-13);
+  EXPECT_NEAR(c1.liquid_volume / c0.liquid_volume, 1.0, 1e-13);
+  EXPECT_NEAR(c1.mass / c0.mass, 1.0, 1e-13);
+  EXPECT_LT(c1.n_phase[0], c0.n_phase[0]);
+  EXPECT_GT(c1.n_phase[2], 0.0);
+  EXPECT_EQ(e.particles().size(), 2200u);  // sample count constant
+}
+
+TEST(Engine, SameResultWithOneAndTwoThreads) {
+  auto run = [](int threads) {
+    omp_set_num_threads(threads);
+    Engine e = test::make_engine(mini_baseline(0.01));
+    while (e.time() < 0.01 - 1e-12) e.step();
+    return e;
+  };
+  const int saved = omp_get_max_threads();
+  Engine a = run(1);
+  Engine b = run(2);
+  omp_set_num_threads(saved);
+  const ParticleSet &p = a.particles(), &q = b.particles();
+  ASSERT_EQ(p.size(), q.size());
+  ASSERT_GT(a.stats().collisions, 0u);
+  EXPECT_EQ(a.stats().collisions, b.stats().collisions);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    ASSERT_EQ(p.x[i], q.x[i]) << i;
+    ASSERT_EQ(p.vx[i], q.vx[i]) << i;
+    ASSERT_EQ(p.w[i], q.w[i]) << i;
+    ASSERT_EQ(p.vol_s[i], q.vol_s[i]) << i;
+    ASSERT_EQ(p.vol_l[i], q.vol_l[i]) << i;
+  }
+}
+
+TEST(Engine, ElasticReboundsConserveEnergyWithCompensation) {
+  // Dry solids with e = 1, f_p = 0 rebound at every collision (v_cr,dry = 0). Unequal weights force
+  // split-merge; kinetic energy + outstanding debts must stay equal to the initial energy.
+  const char* toml = R"(
+seed = 9
+[gas]
+gravity = false
+[sound]
+enabled = false
+[domain]
+length_x = 0.01
+cells_x = 1
+[time]
+end = 1.0
+collision_dt = 0.01
+integrator = "none"
+initial_velocity = "rest"
+[[population]]
+name = "a"
+phase = "solid"
+distribution = "monodisperse"
+diameter = 1e-6
+number_concentration = 1e13
+samples = 300
+[[population]]
+name = "b"
+phase = "solid"
+distribution = "monodisperse"
+diameter = 1.2e-6
+number_concentration = 3.7e12
+samples = 300
+[kernels]
+model = "constant"
+constant_coefficient = 1e-12
+[outcomes]
+restitution = 1.0
+friction = 0.0
+)";
+  Engine e = test::make_engine(toml);
+  ParticleSet& p = e.particles();
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.vx[i] = g(rng);
+    p.vy[i] = g(rng);
+    p.vz[i] = g(rng);
+  }
+  ASSERT_NE(p.w[0], p.w[p.size() - 1]);
+  const double E0 = kinetic_energy(p);
+  const agglo::Vec3 P0 = momentum(p);
+  for (int s = 0; s < 100; ++s) e.step();
+  double debt = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) debt += p.debt[i];
+  const auto& st = e.stats();
+  EXPECT_GT(st.rebounds[1], 1000u);
+  EXPECT_EQ(st.coalescences[1], 0u);
+  EXPECT_GT(st.energy_lost, 0.0);
+  EXPECT_GT(st.energy_returned, 0.5 * st.energy_lost);
+  EXPECT_NEAR(debt, st.energy_lost - st.energy_returned, 1e-9 * E0);
+  EXPECT_NEAR((kinetic_energy(p) + debt) / E0, 1.0, 1e-10);
+  const agglo::Vec3 P1 = momentum(p);
+  EXPECT_NEAR(norm(P1 - P0), 0.0, 1e-9 * std::sqrt(2 * E0 * 1e-3));
+  std::printf("energy: lost %.4g J, returned %.4g J, outstanding %.3g of E0\n", st.energy_lost, st.energy_returned,
+              debt / E0);
+}
+
+TEST(Engine, GuardSubcyclesWhenTheBoundIsExceededAndStrictModeRefuses) {
+  // A coarse collision step: the majorant exceeds 1/N, the engine sub-cycles and never evaluates P_ij > 1/N.
+  const std::string coarse = R"(
+seed = 1
+[sound]
+level_db = 150.0
+[time]
+end = 0.002
+collision_dt = 1e-3
+motion_dt = 1e-5
+[[population]]
+name = "fines"
+phase = "solid"
+distribution = "monodisperse"
+diameter = 1e-6
+number_concentration = 1e12
+samples = 2000
+[[population]]
+name = "droplets"
+phase = "liquid"
+distribution = "monodisperse"
+diameter = 50e-6
+number_concentration = 1e8
+samples = 100
+)";
+  Engine c = test::make_engine(coarse);
+  EXPECT_GT(c.max_guard_pn(), 1.0);
+  c.step();
+  c.step();
+  EXPECT_GT(c.stats().subcycled, 0u);
+  EXPECT_GT(c.stats().max_subcycles, 1u);
+  EXPECT_EQ(c.stats().violations, 0u);
+  EXPECT_LE(c.stats().max_pn, 1.0 + 1e-9);
+  std::string strict = coarse;
+  strict.replace(strict.find("motion_dt = 1e-5"), 16, "motion_dt = 1e-5\nnanbu_guard = \"strict\"");
+  Engine s = test::make_engine(strict);
+  EXPECT_THROW(s.step(), agglo::NumericalError);
+}
+
+TEST(Engine, LostParticleStopsTheRun) {
+  Engine e = test::make_engine(mini_baseline(0.001));
+  e.step();
+  e.particles().x[17] = -1.0;  // outside the box and not wrapped by the (idle) motion of this test
+  e.particles().vx[17] = 0.0;
+  e.particles().x[17] = std::numeric_limits<double>::infinity();
+  try {
+    e.step();
+    FAIL();
+  } catch (const agglo::NumericalError& err) {
+    const std::string m = err.what();
+    EXPECT_NE(m.find("step 2"), std::string::npos) << m;
+    EXPECT_NE(m.find("particle 17"), std::string::npos) << m;
+  }
+}
