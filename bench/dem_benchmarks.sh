@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# DEM benchmarks of issue 2 (docs/benchmarks_dem.md):
+#   1. wall time of one 2 ms collision run (5 particles), agglo vs LAMMPS, same case and time step;
+#   2. agglo's cost per particle-step for agglomerates of 1e2, 1e3, 1e4 particles (Google Benchmark,
+#      single thread), the neighbour-list build, and the 5-particle collision without file output.
+#
+#   bench/dem_benchmarks.sh [OUT_DIR]        (default OUT_DIR: results/dem_benchmarks)
+# Environment: BUILD (build folder with AGGLO_BUILD_BENCH=ON, default build-bench), REPS (default 10),
+# LMP (LAMMPS binary, default lmp; installed from Debian's `lammps` if missing).
+set -euo pipefail
+SRC=$(cd "$(dirname "$0")/.." && pwd)
+OUT=${1:-$SRC/results/dem_benchmarks}
+BUILD=${BUILD:-$SRC/build-bench}
+REPS=${REPS:-10}
+CASE=$SRC/cases/seed000_neutral_tetrahedron.toml
+PY=/usr/bin/python3
+export LMP=${LMP:-lmp}
+
+if ! command -v "$LMP" >/dev/null 2>&1; then
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -q && DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q lammps
+fi
+if [ ! -x "$BUILD/agglo" ] || [ ! -x "$BUILD/bench_dem_scaling" ]; then
+  cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=$PY -DAGGLO_BUILD_BENCH=ON >/dev/null
+  cmake --build "$BUILD" -j2 --target agglo bench_dem_scaling
+fi
+mkdir -p "$OUT"
+E_REST=$($PY -c "import tomllib,sys; print(tomllib.load(open(sys.argv[1],'rb')).get('material',{}).get('restitution',0.7))" "$CASE")
+SETARGS=(--set contact.break_rule=lammps --set contact.tangential=marshall --set material.restitution=$E_REST
+         --set material.friction=0.3 --set material.youngs_modulus=1.0e9 --set material.poisson_ratio=0.33
+         --set material.surface_energy=0.01 --set material.density=2500.0)
+
+echo "== machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "== 1. one collision run (v = 0.18 m/s, approach + 2 ms), agglo vs LAMMPS, $REPS repetitions"
+$PY "$SRC/bench/lammps/time_collision.py" "$BUILD/agglo" "$CASE" --speed 0.18 "${SETARGS[@]}" --reps "$REPS" \
+    --json "$OUT/collision_timing.json"
+
+echo "== 2. cost per particle-step (OMP_NUM_THREADS=1; counters use CPU time)"
+OMP_NUM_THREADS=1 "$BUILD/bench_dem_scaling" --benchmark_min_time=1 --benchmark_repetitions=3 \
+    --benchmark_report_aggregates_only=true --benchmark_out="$OUT/bench_dem_scaling.json" \
+    --benchmark_out_format=json 2>/dev/null | grep -E "^(BM_.*_median|Benchmark|---)" || true
+$PY - "$OUT" <<'EOF'
+import json, sys
+out = sys.argv[1]
+d = json.load(open(f"{out}/bench_dem_scaling.json"))
+coll = json.load(open(f"{out}/collision_timing.json"))
+rows = [b for b in d["benchmarks"] if b.get("aggregate_name") == "median"]
+print("median of 3 repetitions:")
+for b in rows:
+    c = {k: v for k, v in b.items() if k in ("ns_per_particle_step", "ns_per_particle", "ns_per_step")}
+    print(f"  {b['run_name']:24s} cpu {b['cpu_time']:10.1f} {b['time_unit']}  " +
+          "  ".join(f"{k} = {v:.1f}" for k, v in c.items()))
+step = {b["run_name"]: b["ns_per_particle_step"] for b in rows if "ns_per_particle_step" in b}
+if len(step) >= 2:
+    v = list(step.values())
+    print(f"  ns/particle-step ratio largest/smallest N: {v[-1] / v[0]:.2f} (1.0 = perfectly O(N))")
+bc = [b for b in rows if b["run_name"].startswith("BM_Collision2ms")]
+if bc:
+    unit = {"ms": 1e-3, "us": 1e-6, "ns": 1e-9, "s": 1.0}[bc[0]["time_unit"]]
+    wall, cpu = bc[0]["real_time"] * unit, bc[0]["cpu_time"] * unit
+    lmp = coll["lammps_loop_s"]["median"]
+    print(f"  pure simulation, one collision: agglo {cpu * 1e3:.1f} ms CPU / {wall * 1e3:.1f} ms wall (BM_Collision2ms) "
+          f"vs LAMMPS loop {lmp * 1e3:.1f} ms (median) -> {lmp / cpu:.1f}x (CPU) / {lmp / wall:.1f}x (wall)")
+EOF
