@@ -77,7 +77,10 @@ void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, do
   const double x = h / te;
   // exp(-x) and 1 - exp(-x); expm1 only where 1 - exp(-x) would lose digits.
   double E, omE;
-  if (x > 0.01) {
+  if (x > 40.0) {  // exp(-x) < 4.3e-18: below the rounding of every term it multiplies
+    E = 0.0;
+    omE = 1.0;
+  } else if (x > 0.01) {
     E = std::exp(-x);
     omE = 1.0 - E;
   } else {
