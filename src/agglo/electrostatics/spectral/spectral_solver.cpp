@@ -143,7 +143,7 @@ Solution SpectralSolver::solve(const Problem& p) {
 
   // Pairs with their own truncation degree.
   pairs_.resize(std::size_t(N) * (N - 1) / 2);
-  const double tol_pair = 1e-2 * opt_.target_accuracy;
+  const double tol_pair = 1e-3 * opt_.target_accuracy;
   std::size_t q = 0;
   for (int i = 0; i < N; ++i)
     for (int k = i + 1; k < N; ++k, ++q) {

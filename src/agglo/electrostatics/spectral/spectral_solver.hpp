@@ -9,7 +9,7 @@
 //   B_00 = q_i / (4 pi eps0 kappa_0)  (net charge q_i / kappa_0 exactly).
 // Multipole-to-local translations between spheres are rotation based (rotate the pair axis to z,
 // axial translation, rotate back): O(L^3) per pair and matrix-vector product; each pair uses its
-// own truncation degree (from the pair's limit-point ratio at 1e-2 x target accuracy). The system
+// own truncation degree and frame order (at 1e-3 x target accuracy). The system
 // is solved by restarted GMRES to min(tolerance, 1e-2 target_accuracy), warm-started from the
 // previous solve (same number of spheres). Forces and torques use closed forms:
 //   F_i = -kappa_0 4 pi eps0 sum_lm w_m beta_lm (a grad phi_ext)_lm,
