@@ -13,7 +13,7 @@
 # v_crit is found in both by the same scan + bisection (vcrit.* of the case) and the same break-up
 # rule (contact graph + escaping fragments, 2 ms after first contact). Exit 0 when they agree within
 # 3 %, 1 otherwise. Environment: AGGLO (agglo executable), CASE, RESTITUTION (default: the case's
-# material.restitution), LMP (LAMMPS binary, default lmp).
+# material.restitution), STEPS_PER_PERIOD (dt = T0 / this, default 50), LMP (LAMMPS binary, default lmp).
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 OUT=${1:-$SRC/results/lammps_compare}
@@ -43,7 +43,8 @@ fi
 E_REST=${RESTITUTION:-$($PY -c "import tomllib,sys; print(tomllib.load(open(sys.argv[1],'rb')).get('material',{}).get('restitution',0.7))" "$CASE")}
 SETS=(contact.break_rule=lammps contact.tangential=marshall contact.rolling=false contact.twisting=false
       material.density=2500.0 material.youngs_modulus=1.0e9 material.poisson_ratio=0.33
-      material.surface_energy=0.01 material.restitution=$E_REST material.friction=0.3)
+      material.surface_energy=0.01 material.restitution=$E_REST material.friction=0.3
+      time.steps_per_period=${STEPS_PER_PERIOD:-50})
 SETARGS=(); for s in "${SETS[@]}"; do SETARGS+=(--set "$s"); done
 DT=$($PY -c "
 import sys; sys.path.insert(0, '$SRC/bench/lammps'); import lmp_case
@@ -52,7 +53,11 @@ SETS+=(time.dt=$DT); SETARGS+=(--set "time.dt=$DT")
 echo "== set-up: e = $E_REST, dt = $DT s; overrides: ${SETS[*]}"
 rm -rf "$OUT"; mkdir -p "$OUT"
 
-# 4. v_crit in both codes.
+# 4. What LAMMPS' jkr coefficients mean: equilibrium, pull-off force and break point, snap-in.
+echo "== LAMMPS JKR check (two spheres, no damping; units of MODEL.md A.2)"
+$PY "$SRC/bench/lammps/check_jkr_lammps.py" "$OUT/lammps_jkr_check" | tee "$OUT/lammps_jkr_check.txt"
+
+# 5. v_crit in both codes.
 echo "== agglo vcrit"
 t0=$(date +%s.%N)
 "$AGGLO" -q vcrit "$CASE" "${SETARGS[@]}" --out "$OUT/agglo_vcrit" -j 2 2>/dev/null | tail -3
@@ -62,16 +67,16 @@ $PY "$SRC/bench/lammps/vcrit_lammps.py" "$CASE" "${SETARGS[@]}" --workdir "$OUT/
     --json "$OUT/lammps_vcrit.json" | tail -4
 t2=$(date +%s.%N)
 
-# 5. One trajectory in both (v = projectile.speed of the case): kinetic energy history.
+# 6. One trajectory in both (v = projectile.speed of the case): kinetic energy history.
 V=$($PY -c "import tomllib,sys; print(tomllib.load(open(sys.argv[1],'rb')).get('projectile',{}).get('speed',0.18))" "$CASE")
 "$AGGLO" collide "$CASE" "${SETARGS[@]}" --speed "$V" --out "$OUT/agglo_collide" -j 1 >/dev/null 2>&1
 mkdir -p "$OUT/lammps_collide"
 $PY "$SRC/bench/lammps/lmp_case.py" "$CASE" "${SETARGS[@]}" --speed "$V" --workdir "$OUT/lammps_collide" \
-    --thermo-every 20 > "$OUT/lammps_collide/result.json"
+    --thermo-every 1 > "$OUT/lammps_collide/result.json"
 echo "== kinetic energy history at v = $V m/s (agglo vs LAMMPS)"
 $PY "$SRC/bench/lammps/compare_trajectory.py" "$OUT/agglo_collide" "$OUT/lammps_collide" --png "$OUT/ke_history.png"
 
-# 6. Verdict.
+# 7. Verdict.
 $PY - "$OUT" "$t0" "$t1" "$t2" <<'EOF'
 import json, sys
 out, t0, t1, t2 = sys.argv[1], *map(float, sys.argv[2:5])
