@@ -8,6 +8,10 @@
 
 namespace agglo::dem {
 
+namespace {
+constexpr std::int64_t kParallelThreshold = 4096;  // pairs or particles
+}  // namespace
+
 double reference_period(const Particles& p, const ContactParams& c) {
   double best = 1e300;
   // The smallest period belongs to the lightest, smallest particles; check the two smallest radii.
@@ -47,17 +51,22 @@ void DemSystem::compute_forces() {
   const std::int64_t np = static_cast<std::int64_t>(pairs.size());
   pair_forces_.resize(pairs.size());
   const ContactParams& cp = params_.contact;
-#pragma omp parallel for schedule(static) if (np > 4096)
-  for (std::int64_t k = 0; k < np; ++k) {
+  auto pair_loop = [&](std::int64_t k) {
     Pair& pr = pairs[k];
     PairKinematics kin{p_.x[pr.i], p_.x[pr.j], p_.v[pr.i], p_.v[pr.j], p_.w[pr.i], p_.w[pr.j],
                        p_.r[pr.i], p_.r[pr.j], p_.m[pr.i], p_.m[pr.j]};
     pair_forces_[k] = contact_force(cp, pr.jkr, alpha_, kin, pr.state, dt_);
+  };
+  // Small systems stay serial: entering an OpenMP region costs more than the work.
+  if (np > kParallelThreshold) {
+#pragma omp parallel for schedule(static)
+    for (std::int64_t k = 0; k < np; ++k) pair_loop(k);
+  } else {
+    for (std::int64_t k = 0; k < np; ++k) pair_loop(k);
   }
   const auto& off = nl_.offsets();
   const auto& ent = nl_.entries();
-#pragma omp parallel for schedule(static) if (n > 4096)
-  for (std::int64_t q = 0; q < static_cast<std::int64_t>(n); ++q) {
+  auto gather = [&](std::int64_t q) {
     Vec3 f, t;
     for (std::int64_t e = off[q]; e < off[q + 1]; ++e) {
       std::int64_t k = ent[e];
@@ -71,6 +80,13 @@ void DemSystem::compute_forces() {
     }
     p_.f[q] = f;
     p_.t[q] = t;
+  };
+  const std::int64_t nn = static_cast<std::int64_t>(n);
+  if (nn > kParallelThreshold) {
+#pragma omp parallel for schedule(static)
+    for (std::int64_t q = 0; q < nn; ++q) gather(q);
+  } else {
+    for (std::int64_t q = 0; q < nn; ++q) gather(q);
   }
   if (ext_) ext_->add_forces(p_, step_, time_, p_.f, p_.t);
   forces_ready_ = true;
@@ -80,19 +96,29 @@ void DemSystem::step() {
   if (!forces_ready_) compute_forces();
   const std::int64_t n = static_cast<std::int64_t>(p_.size());
   const double h = 0.5 * dt_;
-#pragma omp parallel for schedule(static) if (n > 4096)
-  for (std::int64_t q = 0; q < n; ++q) {
+  auto kick_drift = [&](std::int64_t q) {
     p_.v[q] += (h / p_.m[q]) * p_.f[q];
     p_.w[q] += (h / p_.I[q]) * p_.t[q];
     p_.x[q] += dt_ * p_.v[q];
+  };
+  auto kick = [&](std::int64_t q) {
+    p_.v[q] += (h / p_.m[q]) * p_.f[q];
+    p_.w[q] += (h / p_.I[q]) * p_.t[q];
+  };
+  if (n > kParallelThreshold) {
+#pragma omp parallel for schedule(static)
+    for (std::int64_t q = 0; q < n; ++q) kick_drift(q);
+  } else {
+    for (std::int64_t q = 0; q < n; ++q) kick_drift(q);
   }
   time_ += dt_;
   ++step_;
   compute_forces();
-#pragma omp parallel for schedule(static) if (n > 4096)
-  for (std::int64_t q = 0; q < n; ++q) {
-    p_.v[q] += (h / p_.m[q]) * p_.f[q];
-    p_.w[q] += (h / p_.I[q]) * p_.t[q];
+  if (n > kParallelThreshold) {
+#pragma omp parallel for schedule(static)
+    for (std::int64_t q = 0; q < n; ++q) kick(q);
+  } else {
+    for (std::int64_t q = 0; q < n; ++q) kick(q);
   }
   if (step_ % 256 == 0) check_state();
 }

@@ -30,13 +30,15 @@ double JkrPair::delta_of_a(double a) const {
 double JkrPair::a_of_delta(double delta, double a_guess) const {
   const double d = delta / (kCbrt6 * deltaC);  // target of f(s) = 2 s^4 - 4/3 s
   if (d <= -kSMin) return kSMin * kSMin * a0;  // at/below the break point: the turning point
-  // f is convex and increasing for s >= s_min: Newton from the right of the root converges
-  // monotonically. Start from the guess if it is to the right, else from an upper bound.
-  double s_hi = std::max(1.0, std::pow(std::max(d, 0.0) / 2.0 + 1.0, 0.25) + 0.5);
-  double s = s_hi;
-  if (a_guess > 0.0) {
-    double sg = std::sqrt(a_guess / a0);
-    if (sg > kSMin && 2.0 * sg * sg * sg * sg - 4.0 / 3.0 * sg >= d) s = sg;
+  // f is convex and increasing for s >= s_min. From a warm start near the root Newton converges in a
+  // few steps from either side (from the left it lands right of the root, then decreases
+  // monotonically). Without a usable guess (or close to the turning point, where f' -> 0) start from
+  // an upper bound of the root.
+  double s;
+  if (a_guess > 0.0 && a_guess > 1.2 * kSMin * kSMin * a0) {
+    s = std::sqrt(a_guess / a0);
+  } else {
+    s = std::max(1.0, std::sqrt(std::sqrt(std::max(d, 0.0) / 2.0 + 1.0)) + 0.5);
   }
   // Quadratic convergence; near the turning point (d -> -s_min) it degrades to linear, hence the cap.
   for (int it = 0; it < 100; ++it) {
