@@ -20,8 +20,10 @@ agglo::cli::Registration reg([](CLI::App& app) {
     cfg.check_unknown_keys();
     auto out = agglo::cli::open_output(*args, "vcrit");
     agglo::Progress prog("vcrit", true);
+    const auto relaxed = agglo::collision::relaxed_agglomerate(c);  // one relaxation for every speed
     auto res = agglo::collision::find_vcrit(
-        c.vcrit, omp_get_max_threads(), [&c](double v) { return agglo::collision::run_collision(c, v); },
+        c.vcrit, omp_get_max_threads(),
+        [&c, &relaxed](double v) { return agglo::collision::run_collision(c, v, nullptr, {}, &relaxed); },
         [&](double f) { prog.update(f, 0.0); });
     prog.finish();
     out.write_json("vcrit.json", agglo::collision::vcrit_json(res));

@@ -19,6 +19,8 @@ CollisionCase parse_collision_case(Config& cfg) {
   cp.surface_energy = mat.number("surface_energy", 0.01, Range::positive("J/m^2"));
   cp.restitution = mat.number("restitution", 0.7, Range::open_closed(0.0, 1.0));
   cp.friction = mat.number("friction", 0.3, Range::nonnegative());
+  const double real_modulus =
+      mat.number("real_youngs_modulus", 0.0, Range::nonnegative("Pa (0 = same as youngs_modulus)"));
 
   auto con = root.section("contact");
   cp.tangential = con.choice("tangential", std::string("seed"), {"seed", "marshall"}) == "seed"
@@ -43,6 +45,8 @@ CollisionCase parse_collision_case(Config& cfg) {
   c.time.max_extensions = static_cast<int>(ts.integer("max_extensions", 4, 0, 100));
   c.time.relax_time = ts.number("relax_time", 1e-3, Range::nonnegative("s"));
   c.time.relax_energy = ts.number("relax_energy", 1e-6, Range::positive("F_C delta_C"));
+  c.time.early_stop = ts.boolean("early_stop", true);
+  c.time.early_stop_gap = ts.number("early_stop_gap", 2.0, Range::positive("r_p"));
 
   auto ag = root.section("agglomerate");
   auto& a = c.agglomerate;
@@ -90,6 +94,16 @@ CollisionCase parse_collision_case(Config& cfg) {
   for (const auto& lp : a.particles) any_charge = any_charge || lp.charge != 0.0;
   any_charge = any_charge || p.charge != 0.0;
   c.electrostatics = any_charge;
+  if (c.electrostatics || root.has("electrostatics")) {
+    c.coupling.es = es::parse_electrostatics(root.section("electrostatics"));
+    if (c.coupling.es.force_scale_chi) {
+      if (real_modulus <= 0.0)
+        mat.fail_value("real_youngs_modulus", "electrostatics.force_scale_chi = true needs the real modulus (> 0 Pa)");
+      c.coupling.force_scale = std::pow(cp.youngs_modulus / real_modulus, 0.4);
+    }
+    c.medium_permittivity = c.coupling.es.medium_permittivity;
+    c.electrostatics = c.electrostatics || norm(c.coupling.es.external_field) > 0.0;
+  }
   return c;
 }
 

@@ -46,6 +46,8 @@ struct TimeSpec {
   int max_extensions = 4;
   double relax_time = 1e-3;       // max relaxation of the agglomerate before launch (electrostatics) [s]
   double relax_energy = 1e-6;     // relaxed when kinetic energy < this x F_C delta_C
+  bool early_stop = true;         // stop once clearly broken (fragments escaping and far apart)
+  double early_stop_gap = 2.0;    // ... with surface gaps to the rest of at least this x r_p
 };
 
 struct OutputSpec {

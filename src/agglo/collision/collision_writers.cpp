@@ -34,7 +34,8 @@ nlohmann::json outcome_json(const CollisionOutcome& o) {
   return {{"speed_m_per_s", o.speed},   {"broken", o.broken},          {"undecided", o.undecided},
           {"projectile_contact", o.contact}, {"components", o.components}, {"fragments", frags},
           {"t_first_contact_s", o.t_contact}, {"t_end_s", o.t_end},   {"dt_s", o.dt},
-          {"steps", o.steps},           {"extensions", o.extensions}};
+          {"steps", o.steps},           {"extensions", o.extensions}, {"early_stop", o.early_stop},
+          {"electrostatic_solves", o.es_solves}, {"electrostatic_seconds", o.es_seconds}};
 }
 
 nlohmann::json vcrit_json(const VcritResult& r) {

@@ -2,6 +2,7 @@
 
 #include "agglo/collision/experiment.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -9,36 +10,41 @@
 
 namespace agglo::collision {
 
-ElectrostaticForce::ElectrostaticForce(const CouplingSettings& s) : s_(s), solver_(es::make_solver(s.solver)) {}
+ElectrostaticForce::ElectrostaticForce(const CouplingSettings& s) : s_(s), solver_(es::make_solver(s.es.options)) {}
 
 bool ElectrostaticForce::needs_solve(const dem::Particles& p, long step) const {
   if (x_at_solve_.size() != p.size() || step_at_solve_ < 0) return true;
-  if (s_.update_interval > 0 && step - step_at_solve_ >= s_.update_interval) return true;
-  const double shrink = 1.0 / (1.0 + 0.5 * s_.min_gap);
+  if (s_.es.update_interval > 0 && step - step_at_solve_ >= s_.es.update_interval) return true;
+  const double shrink = es::electrostatic_radius(1.0, s_.es.min_gap);
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::size_t j = i + 1; j < p.size(); ++j) {
       Vec3 now = p.x[j] - p.x[i];
       Vec3 then = x_at_solve_[j] - x_at_solve_[i];
       double gap = norm(now) - shrink * (p.r[i] + p.r[j]);
-      if (norm(now - then) > s_.update_fraction * gap) return true;
+      if (norm(now - then) > s_.es.update_fraction * gap) return true;
     }
   return false;
 }
 
 void ElectrostaticForce::solve(const dem::Particles& p, long step) {
+  std::vector<double> radius(p.r.begin(), p.r.end());
   es::Problem prob;
-  prob.medium_permittivity = s_.medium_permittivity;
-  prob.external_field = s_.external_field;
-  const double shrink = 1.0 / (1.0 + 0.5 * s_.min_gap);
-  for (std::size_t k = 0; k < p.size(); ++k) prob.spheres.push_back({p.x[k], p.r[k] * shrink, p.q[k], p.kappa[k]});
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = i + 1; j < p.size(); ++j)
-      if (norm(p.x[j] - p.x[i]) <= prob.spheres[i].radius + prob.spheres[j].radius)
-        throw NumericalError(fmt::format(
-            "electrostatics: particles {} and {} overlap by more than the min-gap regularisation at step {} "
-            "(overlap {:.3g} m > g_min r); raise electrostatics.min_gap or reduce the impact speed",
-            i, j, step, p.r[i] + p.r[j] - norm(p.x[j] - p.x[i])));
-  last_ = solver_->solve(prob);
+  try {
+    prob = es::make_problem(s_.es, p.x, radius, p.q, p.kappa);
+  } catch (const NumericalError& e) {
+    throw NumericalError(fmt::format("step {}: {} (raise electrostatics.min_gap or lower the impact speed)", step,
+                                     e.what()));
+  }
+  auto t0 = std::chrono::steady_clock::now();
+  bool uniform = true;
+  for (double k : p.kappa) uniform = uniform && k == s_.es.medium_permittivity;
+  if (uniform && !coulomb_) {
+    es::SolverOptions o = s_.es.options;
+    o.solver = "coulomb";
+    coulomb_ = es::make_solver(o);
+  }
+  last_ = uniform ? coulomb_->solve(prob) : solver_->solve(prob);
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (std::size_t k = 0; k < p.size(); ++k)
     if (!isfinite(last_.force[k]) || !isfinite(last_.torque[k]))
       throw NumericalError(fmt::format("electrostatics: non-finite force on particle {} at step {}", k, step));

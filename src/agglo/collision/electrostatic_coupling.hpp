@@ -7,21 +7,19 @@
 //   and spins do not trigger solves), or every `update_interval` steps if set; forces and torques
 //   are held between solves and every solve warm-starts from the previous one.
 // * Optional force scaling chi^(2/5), chi = E_reduced/E_real (for a reduced modulus).
+// * When every particle has kappa_p = kappa_0 there is no polarisation: the exact point-charge
+//   solver is used whatever solver was chosen (MODEL B.2: "the fast path for kappa_p = 1").
 #include <memory>
 
 #include "agglo/dem/external_force.hpp"
+#include "agglo/electrostatics/config.hpp"
 #include "agglo/electrostatics/solver.hpp"
 
 namespace agglo::collision {
 
 struct CouplingSettings {
-  es::SolverOptions solver;
-  double medium_permittivity = 1.0;  // kappa_0
-  Vec3 external_field;               // [V/m]
-  double min_gap = 0.01;             // g_min [-]
-  double update_fraction = 0.01;     // [-]
-  long update_interval = 0;          // steps; 0 = off
-  double force_scale = 1.0;          // chi^(2/5) or 1
+  es::EsConfig es;            // [electrostatics]: solver, kappa_0, field, g_min, update rule
+  double force_scale = 1.0;   // chi^(2/5) with force_scale_chi, else 1
 };
 
 class ElectrostaticForce : public dem::ExternalForce {
@@ -31,6 +29,8 @@ class ElectrostaticForce : public dem::ExternalForce {
                   std::vector<Vec3>& torque) override;
   double energy() const override { return energy_; }
   long solves() const { return solves_; }
+  bool used_fast_path() const { return coulomb_ != nullptr; }
+  double seconds() const { return seconds_; }
   const es::Solution& last() const { return last_; }
 
  private:
@@ -39,11 +39,13 @@ class ElectrostaticForce : public dem::ExternalForce {
 
   CouplingSettings s_;
   std::unique_ptr<es::Solver> solver_;
+  std::unique_ptr<es::Solver> coulomb_;  // exact fast path when every kappa_p equals kappa_0
   es::Solution last_;
   std::vector<Vec3> x_at_solve_;
   long step_at_solve_ = -1;
   double energy_ = 0.0;
   long solves_ = 0;
+  double seconds_ = 0.0;
 };
 
 }  // namespace agglo::collision

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "agglo/collision/agglomerate.hpp"
+#include "agglo/collision/electrostatic_coupling.hpp"
 #include "agglo/core/constants.hpp"
 
 namespace agglo::collision {
@@ -49,6 +50,22 @@ io::ParticleSnapshot snapshot(const dem::DemSystem& sys) {
 }
 
 }  // namespace
+
+// Broken, every fragment escaping, and every fragment's surfaces at least `min_gap` from the rest
+// (beyond adhesive reach; its kinetic energy already exceeds its electrostatic binding).
+bool clearly_broken(const dem::DemSystem& sys, std::size_t n_agg, double kappa0, double min_gap) {
+  auto cl = classify(sys, n_agg, kappa0);
+  if (!cl.broken) return false;
+  const auto& p = sys.particles();
+  for (const auto& f : cl.fragments) {
+    std::vector<char> in(p.size(), 0);
+    for (int k : f.members) in[k] = 1;
+    for (std::size_t a = 0; a < p.size(); ++a)
+      for (std::size_t b = 0; b < p.size(); ++b)
+        if (in[a] && !in[b] && norm(p.x[a] - p.x[b]) - p.r[a] - p.r[b] < min_gap) return false;
+  }
+  return true;
+}
 
 CollisionOutcome classify(const dem::DemSystem& sys, std::size_t n_agg, double kappa0) {
   CollisionOutcome out;
@@ -95,8 +112,27 @@ CollisionOutcome classify(const dem::DemSystem& sys, std::size_t n_agg, double k
   return out;
 }
 
-CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* rec, const ProgressFn& progress) {
-  dem::Particles agg = build_agglomerate(c);
+dem::Particles relaxed_agglomerate(const CollisionCase& c) {
+  dem::DemSystem sys(build_agglomerate(c), c.dem);
+  if (!c.electrostatics || c.time.relax_time <= 0.0) return sys.particles();
+  auto es = make_electrostatic_force(c);
+  sys.set_external_force(es.get());
+  auto jkr = sys.jkr_for(0, 1);
+  const double ke_tol = c.time.relax_energy * jkr.Fc * jkr.deltaC;
+  const long max_steps = static_cast<long>(c.time.relax_time / sys.dt());
+  for (long s = 0; s < max_steps; ++s) {
+    sys.step();
+    if (s > 100 && s % 50 == 0 && sys.kinetic_energy() < ke_tol) break;
+  }
+  dem::Particles p = sys.particles();
+  for (auto& v : p.v) v = {};
+  for (auto& w : p.w) w = {};
+  return p;
+}
+
+CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* rec, const ProgressFn& progress,
+                               const dem::Particles* relaxed) {
+  dem::Particles agg = relaxed ? *relaxed : relaxed_agglomerate(c);
   const std::size_t n_agg = agg.size();
   dem::DemSystem sys(std::move(agg), c.dem);
   std::unique_ptr<dem::ExternalForce> es;
@@ -105,21 +141,8 @@ CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* r
     sys.set_external_force(es.get());
   }
   const double rp = c.agglomerate.radius;
-  auto jkr = sys.jkr_for(0, 1);
   const double u0 = 2.0 * constants::pi * rp * rp * rp * c.agglomerate.charge_density * c.agglomerate.charge_density /
                     constants::eps0;
-
-  // Relax the agglomerate alone (only meaningful with electrostatics).
-  if (es && c.time.relax_time > 0.0) {
-    const double ke_tol = c.time.relax_energy * jkr.Fc * jkr.deltaC;
-    long max_steps = static_cast<long>(c.time.relax_time / sys.dt());
-    for (long s = 0; s < max_steps; ++s) {
-      sys.step();
-      if (s > 100 && s % 50 == 0 && sys.kinetic_energy() < ke_tol) break;
-    }
-    for (auto& v : sys.particles().v) v = {};
-    for (auto& w : sys.particles().w) w = {};
-  }
   const double t_launch = sys.time();
   {
     dem::Particles tmp = sys.particles();
@@ -172,12 +195,18 @@ CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* r
     double t_stop = sys.time() + c.time.after_contact;
     for (int ext = 0;; ++ext) {
       const double t_from = sys.time();
+      bool decided_early = false;
       while (sys.time() < t_stop) {
         sys.step();
         record();
         if (progress && sys.steps() % 2000 == 0)
           progress((sys.time() - t_from) / (t_stop - t_from), sys.time() - t_launch);
+        if (c.time.early_stop && sys.steps() % 500 == 0 && clearly_broken(sys, n_agg, kappa0, c.time.early_stop_gap * rp)) {
+          decided_early = true;
+          break;
+        }
       }
+      out.early_stop = decided_early;
       auto cl = classify(sys, n_agg, kappa0);
       out.broken = cl.broken;
       out.undecided = cl.undecided;
@@ -191,6 +220,10 @@ CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* r
     out.components = {};
   }
   out.t_end = sys.time() - t_launch;
+  if (auto* ef = dynamic_cast<ElectrostaticForce*>(es.get())) {
+    out.es_solves = ef->solves();
+    out.es_seconds = ef->seconds();
+  }
   out.steps = sys.steps();
   return out;
 }

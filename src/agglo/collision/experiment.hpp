@@ -46,6 +46,9 @@ struct CollisionOutcome {
   double t_contact = 0.0, t_end = 0.0, dt = 0.0;
   long steps = 0;
   int extensions = 0;
+  bool early_stop = false;   // decided before after_contact (clearly broken)
+  long es_solves = 0;        // electrostatic solves
+  double es_seconds = 0.0;   // wall time spent in them
 };
 
 // Electrostatic coupling factory (defined in electrostatic_coupling.cpp).
@@ -53,8 +56,13 @@ std::unique_ptr<dem::ExternalForce> make_electrostatic_force(const CollisionCase
 
 // `progress(fraction, simulated time)` is called now and then (may be empty).
 using ProgressFn = std::function<void(double, double)>;
+// `relaxed`: the agglomerate from relaxed_agglomerate(c) (computed here when null); pass it to
+// reuse one relaxation for many speeds.
 CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* rec = nullptr,
-                               const ProgressFn& progress = {});
+                               const ProgressFn& progress = {}, const dem::Particles* relaxed = nullptr);
+
+// The agglomerate alone, relaxed under electrostatics (as built when there is none), at rest.
+dem::Particles relaxed_agglomerate(const CollisionCase& c);
 
 // Radius of gyration [(1/N) sum |x_i - x_c|^2]^(1/2).
 double radius_of_gyration(const dem::Particles& p);
