@@ -13,6 +13,9 @@ namespace agglo::acoustics {
 namespace {
 // Below this many samples a step is too short for a fork/join to pay off.
 constexpr std::size_t kParallelMinSamples = 4096;
+// Large sets are re-sorted by cell every kReorderEvery steps so that a cell's samples are contiguous.
+constexpr std::size_t kReorderMinSamples = 100000;
+constexpr std::uint64_t kReorderEvery = 64;
 }  // namespace
 
 Engine::Engine(EngineSettings s)
@@ -113,6 +116,10 @@ void Engine::step() {
   ++step_;
   if (M.integrator != Integrator::none) check_state();
   bin();
+  if (n >= kReorderMinSamples && step_ % kReorderEvery == 1) {
+    p_.permute(order_);
+    bin();
+  }
   CollisionContext ctx;
   ctx.kernel = &kernel_;
   ctx.outcomes = &s_.outcomes;

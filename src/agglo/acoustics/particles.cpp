@@ -62,3 +62,19 @@ void ParticleSet::copy_sample(std::size_t from, std::size_t to) {
 }
 
 }  // namespace agglo::acoustics
+
+namespace agglo::acoustics {
+
+void ParticleSet::permute(const std::vector<std::uint32_t>& order) {
+  auto apply = [&](auto& v) {
+    auto old = v;
+    for (std::size_t k = 0; k < order.size(); ++k) v[k] = old[order[k]];
+  };
+  for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
+                  &slip_l, &cphi, &sphi, &phase_code})
+    apply(*v);
+  apply(pop);
+  apply(id);
+}
+
+}  // namespace agglo::acoustics

@@ -44,6 +44,8 @@ struct ParticleSet {
   Phase phase(std::size_t i) const { return static_cast<Phase>(static_cast<int>(phase_code[i])); }
   void refresh(std::size_t i, const Gas& gas, const Sound& sound);
   void copy_sample(std::size_t from, std::size_t to);
+  // Reorders the samples: new sample k = old sample order[k] (memory locality of cells).
+  void permute(const std::vector<std::uint32_t>& order);
   double volume(std::size_t i) const { return vol_s[i] + vol_l[i]; }
 };
 
