@@ -45,7 +45,13 @@ void write_run_files(const OutputDir& out, const Config& cfg, const std::string&
 
 namespace agglo::cli {
 
+bool& plots_enabled() {
+  static bool on = true;
+  return on;
+}
+
 void run_plot_script(const std::string& script, const OutputDir& out, const std::vector<std::string>& args) {
+  if (!plots_enabled()) return;
   namespace fs = std::filesystem;
   fs::path path = fs::path(AGGLO_SOURCE_DIR) / "scripts" / script;
   if (!fs::exists(path)) {

@@ -45,5 +45,6 @@ void write_run_files(const OutputDir& out, const Config& cfg, const std::string&
 namespace agglo::cli {
 // Runs `python3 scripts/<script> <outdir> [args...]` to make PNG plots from the CSV outputs.
 // Plotting is best effort: a missing matplotlib gives a warning, never a failed run.
+bool& plots_enabled();  // global --no-plots switch
 void run_plot_script(const std::string& script, const OutputDir& out, const std::vector<std::string>& args = {});
 }  // namespace agglo::cli

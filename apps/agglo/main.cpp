@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
       "Run `agglo <command> --help` for the options of a command."};
   app.set_version_flag("-V,--version", fmt::format("agglo {} (git {})", agglo::kVersion, agglo::kGitHash));
   app.add_flag_callback("-q,--quiet", [] { agglo::Progress::quiet() = true; }, "No progress line on stderr");
+  app.add_flag_callback("--no-plots", [] { agglo::cli::plots_enabled() = false; }, "Do not run the matplotlib plot scripts");
   app.require_subcommand(1);
   app.fallthrough();
   for (auto& reg : agglo::cli::registry()) reg(app);
