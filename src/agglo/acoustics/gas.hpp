@@ -28,7 +28,8 @@ struct Gas {
   double slip_correction(double d) const;
   // Inertia (Schiller-Naumann) correction (seed eq. 4): C_I = 1 + 0.15 Re^0.687.
   static double inertia_correction(double reynolds);
-  // Same with a fast Re^0.687 (relative error < 2e-6 of C_I - 1; used in the motion loop).
+  // Same with exp(0.687 ln Re) evaluated partly in single precision (relative error of C_I - 1 below
+  // 1e-6; used in the motion loop).
   static double inertia_correction_fast(double reynolds);
   // Particle Reynolds number Re = |u - v| d rho_g / mu_g.
   double reynolds(double slip_speed, double d) const { return slip_speed * d * density / viscosity; }
