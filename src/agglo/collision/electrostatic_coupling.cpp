@@ -49,6 +49,8 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
     if (!isfinite(last_.force[k]) || !isfinite(last_.torque[k]))
       throw NumericalError(fmt::format("electrostatics: non-finite force on particle {} at step {}", k, step));
   energy_ = last_.energy;
+  correct_ = !uniform && s_.es.hold == "pair_corrected";
+  if (correct_) pair_terms(p, f_s_, u_s_, n_s_);
   x_at_solve_ = p.x;
   step_at_solve_ = step;
   ++solves_;
@@ -56,11 +58,57 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
 
 void ElectrostaticForce::add_forces(const dem::Particles& p, long step, double, std::vector<Vec3>& force,
                                     std::vector<Vec3>& torque) {
-  if (needs_solve(p, step)) solve(p, step);
+  const bool fresh = needs_solve(p, step);
+  if (fresh) solve(p, step);
   for (std::size_t k = 0; k < p.size(); ++k) {
     force[k] += s_.force_scale * last_.force[k];
     torque[k] += s_.force_scale * last_.torque[k];
   }
+  if (!correct_ || fresh) {
+    energy_ = last_.energy;
+    return;
+  }
+  pair_terms(p, f_now_, u_now_, n_now_);
+  energy_ = last_.energy;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j, ++k) {
+      Vec3 df = s_.force_scale * (f_now_[k] * n_now_[k] - f_s_[k] * n_s_[k]);  // change of the force on j
+      force[j] += df;
+      force[i] -= df;
+      energy_ += u_now_[k] - u_s_[k];
+    }
+}
+
+const PairTable& ElectrostaticForce::table_for(const dem::Particles& p, std::size_t i, std::size_t j) {
+  const double shrink = es::electrostatic_radius(1.0, s_.es.min_gap);
+  PairKey key{p.r[i] * shrink, p.r[j] * shrink, p.kappa[i], p.kappa[j], s_.es.medium_permittivity};
+  auto it = tables_.find(key);
+  if (it == tables_.end()) {
+    double rmin = std::min(key.ri, key.rj);
+    double h_min = 0.1 * std::max(s_.es.min_gap, 1e-3) * rmin;
+    it = tables_.emplace(key, pair_table(s_.es.options, key, h_min, 50.0 * rmin)).first;
+  }
+  return *it->second;
+}
+
+void ElectrostaticForce::pair_terms(const dem::Particles& p, std::vector<double>& f, std::vector<double>& u,
+                                    std::vector<Vec3>& n) {
+  const std::size_t np = p.size() * (p.size() - 1) / 2;
+  f.assign(np, 0.0);
+  u.assign(np, 0.0);
+  n.assign(np, Vec3{});
+  const double shrink = es::electrostatic_radius(1.0, s_.es.min_gap);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j, ++k) {
+      if (p.q[i] == 0.0 && p.q[j] == 0.0) continue;
+      Vec3 d = p.x[j] - p.x[i];
+      double dist = norm(d);
+      n[k] = d / dist;
+      double h = dist - shrink * (p.r[i] + p.r[j]);
+      table_for(p, i, j).eval(h, p.q[i], p.q[j], f[k], u[k]);
+    }
 }
 
 std::unique_ptr<dem::ExternalForce> make_electrostatic_force(const CollisionCase& c) {

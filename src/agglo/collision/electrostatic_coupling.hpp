@@ -5,12 +5,18 @@
 // * Update rule: a new solve runs when some pair's separation vector changed by more than
 //   `update_fraction` x its current electrostatic surface gap since the last solve (rigid motions
 //   and spins do not trigger solves), or every `update_interval` steps if set; forces and torques
-//   are held between solves and every solve warm-starts from the previous one.
+//   are held between solves and every solve warm-starts from the previous one. With
+//   hold = "pair_corrected" (option) the held forces are corrected by the change of each isolated
+//   pair's force since the solve (tabulated two-sphere solutions, pair_table.hpp): the rapidly
+//   varying two-body part follows every step, only the many-body remainder is held. Measured gain:
+//   1.3-2x smaller force error than "constant" in a charged tetrahedron (kappa 15), exact for a pair.
 // * Optional force scaling chi^(2/5), chi = E_reduced/E_real (for a reduced modulus).
 // * When every particle has kappa_p = kappa_0 there is no polarisation: the exact point-charge
 //   solver is used whatever solver was chosen (MODEL B.2: "the fast path for kappa_p = 1").
+#include <map>
 #include <memory>
 
+#include "agglo/collision/pair_table.hpp"
 #include "agglo/dem/external_force.hpp"
 #include "agglo/electrostatics/config.hpp"
 #include "agglo/electrostatics/solver.hpp"
@@ -36,6 +42,9 @@ class ElectrostaticForce : public dem::ExternalForce {
  private:
   bool needs_solve(const dem::Particles& p, long step) const;
   void solve(const dem::Particles& p, long step);
+  // Isolated-pair force on j (along i->j, > 0 repulsive) and energy of every pair at the current state.
+  void pair_terms(const dem::Particles& p, std::vector<double>& f, std::vector<double>& u, std::vector<Vec3>& n);
+  const PairTable& table_for(const dem::Particles& p, std::size_t i, std::size_t j);
 
   CouplingSettings s_;
   std::unique_ptr<es::Solver> solver_;
@@ -45,6 +54,12 @@ class ElectrostaticForce : public dem::ExternalForce {
   long step_at_solve_ = -1;
   double energy_ = 0.0;
   long solves_ = 0;
+  bool correct_ = false;                        // pair-corrected hold active for the last solve
+  std::vector<double> f_s_, u_s_;               // pair terms at the last solve
+  std::vector<Vec3> n_s_;
+  std::vector<double> f_now_, u_now_;
+  std::vector<Vec3> n_now_;
+  std::map<PairKey, std::shared_ptr<const PairTable>> tables_;
   double seconds_ = 0.0;
 };
 

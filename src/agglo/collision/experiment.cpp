@@ -175,6 +175,7 @@ CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* r
   out.speed = speed;
   out.dt = sys.dt();
   // Approach until first contact of the projectile.
+  sys.compute_forces();  // contacts and electrostatic energy of the launch state
   record();
   auto projectile_touches = [&]() {
     for (const auto& pr : sys.pairs())

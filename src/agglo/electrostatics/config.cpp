@@ -19,6 +19,7 @@ EsConfig parse_electrostatics(const ConfigSection& s) {
   ec.update_interval = static_cast<int>(s.integer("update_interval", 0, 0, 1000000000));
   ec.external_field = s.vec3("external_field", Vec3{0, 0, 0}, Range::any("V/m"));
   ec.force_scale_chi = s.boolean("force_scale_chi", false);
+  ec.hold = s.choice("hold", std::string("constant"), {"constant", "pair_corrected"});
   o.max_degree = static_cast<int>(s.integer("max_degree", 0, 0, 200));
   o.target_accuracy = s.number("target_accuracy", 1e-4, Range::closed_open(1e-12, 1.0));
   o.max_degree_limit = static_cast<int>(s.integer("max_degree_limit", 80, 2, 200));

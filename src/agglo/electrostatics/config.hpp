@@ -10,6 +10,7 @@
 //   update_interval     = 0           # also re-solve at least every N steps (0 = off)
 //   external_field      = [0, 0, 0]    # V/m
 //   force_scale_chi     = false        # scale forces by chi^(2/5) (reduced-modulus users)
+//   hold                = "constant"   # forces between solves: held (MODEL B.3), or "pair_corrected"
 //   max_degree = 0, target_accuracy = 1e-4, max_degree_limit = 80          # spectral
 //   patches_per_sphere = 2000, tolerance = 1e-6, max_iterations = 200,       # bem (tolerance and
 //   matvec = "fmm", fmm_order = 0, fmm_leaf_size = 64                        #  iterations: all)
@@ -35,6 +36,7 @@ struct EsConfig {
   int update_interval = 0;           // steps; 0 = off
   Vec3 external_field;               // [V/m]
   bool force_scale_chi = false;
+  std::string hold = "constant";  // between solves: "constant" (MODEL B.3) | "pair_corrected" (DEM coupling)
 };
 
 // Parse and range-check `section` (normally cfg.root().section("electrostatics")); defaults are
