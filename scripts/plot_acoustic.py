@@ -43,7 +43,8 @@ def main(out):
         axs[1].plot(d, [float(r["total_dNdlogd_cm3"]) for r in rows], label=f"t = {tt:g} s")
     for a, title in zip(axs, ["solid fines", "all particles"]):
         a.set_xscale("log")
-        a.set_yscale("symlog", linthresh=1.0)
+        a.set_yscale("log")
+        a.set_ylim(bottom=1.0)
         a.set_xlabel("d / um")
         a.set_ylabel("dN/dlog d / cm^-3")
         a.set_title(title)
@@ -79,7 +80,7 @@ def main(out):
                 a.set_aspect("equal")
             axs[-1, 0].set_xlabel("x / cm")
             fig.tight_layout()
-            fig.savefig(os.path.join(out, "snapshots.png"), dpi=120)
+            fig.savefig(os.path.join(out, "snapshots.png"), dpi=90)
             plt.close(fig)
 
 
