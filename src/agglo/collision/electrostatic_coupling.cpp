@@ -16,8 +16,9 @@ bool ElectrostaticForce::needs_solve(const dem::Particles& p, long step) const {
   if (x_at_solve_.size() != p.size() || step_at_solve_ < 0) return true;
   if (s_.es.update_interval > 0 && step - step_at_solve_ >= s_.es.update_interval) return true;
   const double shrink = es::electrostatic_radius(1.0, s_.es.min_gap);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = i + 1; j < p.size(); ++j) {
+  for (std::size_t a = 0; a < visible_.size(); ++a)
+    for (std::size_t b = a + 1; b < visible_.size(); ++b) {
+      const std::size_t i = visible_[a], j = visible_[b];
       Vec3 now = p.x[j] - p.x[i];
       Vec3 then = x_at_solve_[j] - x_at_solve_[i];
       double gap = norm(now) - shrink * (p.r[i] + p.r[j]);
@@ -27,23 +28,43 @@ bool ElectrostaticForce::needs_solve(const dem::Particles& p, long step) const {
 }
 
 void ElectrostaticForce::solve(const dem::Particles& p, long step) {
-  std::vector<double> radius(p.r.begin(), p.r.end());
+  // Uncharged particles with kappa_p = kappa_0 are electrostatically invisible: leave them out.
+  visible_.clear();
+  for (std::size_t k = 0; k < p.size(); ++k)
+    if (p.q[k] != 0.0 || p.kappa[k] != s_.es.medium_permittivity) visible_.push_back(k);
+  std::vector<Vec3> x;
+  std::vector<double> radius, q, kappa;
+  for (auto k : visible_) {
+    x.push_back(p.x[k]);
+    radius.push_back(p.r[k]);
+    q.push_back(p.q[k]);
+    kappa.push_back(p.kappa[k]);
+  }
   es::Problem prob;
   try {
-    prob = es::make_problem(s_.es, p.x, radius, p.q, p.kappa);
+    prob = es::make_problem(s_.es, x, radius, q, kappa);
   } catch (const NumericalError& e) {
-    throw NumericalError(fmt::format("step {}: {} (raise electrostatics.min_gap or lower the impact speed)", step,
-                                     e.what()));
+    throw NumericalError(fmt::format("step {}: {} (particle numbers among the charged/dielectric ones; raise "
+                                     "electrostatics.min_gap or lower the impact speed)",
+                                     step, e.what()));
   }
   auto t0 = std::chrono::steady_clock::now();
   bool uniform = true;
-  for (double k : p.kappa) uniform = uniform && k == s_.es.medium_permittivity;
+  for (double k : kappa) uniform = uniform && k == s_.es.medium_permittivity;
   if (uniform && !coulomb_) {
     es::SolverOptions o = s_.es.options;
     o.solver = "coulomb";
     coulomb_ = es::make_solver(o);
   }
-  last_ = uniform ? coulomb_->solve(prob) : solver_->solve(prob);
+  es::Solution sub;
+  if (!prob.spheres.empty()) sub = uniform ? coulomb_->solve(prob) : solver_->solve(prob);
+  last_ = sub;
+  last_.force.assign(p.size(), Vec3{});
+  last_.torque.assign(p.size(), Vec3{});
+  for (std::size_t a = 0; a < visible_.size(); ++a) {
+    last_.force[visible_[a]] = sub.force[a];
+    last_.torque[visible_[a]] = sub.torque[a];
+  }
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (std::size_t k = 0; k < p.size(); ++k)
     if (!isfinite(last_.force[k]) || !isfinite(last_.torque[k]))

@@ -13,6 +13,8 @@
 // * Optional force scaling chi^(2/5), chi = E_reduced/E_real (for a reduced modulus).
 // * When every particle has kappa_p = kappa_0 there is no polarisation: the exact point-charge
 //   solver is used whatever solver was chosen (MODEL B.2: "the fast path for kappa_p = 1").
+// * Uncharged particles with kappa_p = kappa_0 (e.g. the neutral projectile) feel and exert no
+//   electrostatic force; they are left out of the solve.
 #include <map>
 #include <memory>
 
@@ -51,6 +53,7 @@ class ElectrostaticForce : public dem::ExternalForce {
   std::unique_ptr<es::Solver> coulomb_;  // exact fast path when every kappa_p equals kappa_0
   es::Solution last_;
   std::vector<Vec3> x_at_solve_;
+  std::vector<std::size_t> visible_;  // particles in the last solve (charged or kappa_p != kappa_0)
   long step_at_solve_ = -1;
   double energy_ = 0.0;
   long solves_ = 0;
