@@ -148,3 +148,21 @@ TEST(Motion, NaNStopsTheRunNamingStepAndParticle) {
     EXPECT_NE(m.find("particle 0"), std::string::npos) << m;
   }
 }
+
+TEST(Motion, StokesDriftOfAFineParticleInTheTravellingWave) {
+  // A particle that follows the gas drifts along the wave at the Lagrangian (Stokes) drift
+  // u_amp^2 / (2 c) (second order in u_amp); the exact integrator captures it at dt = 1e-5 s.
+  Engine e = test::make_engine(single_particle_case(0.2e-6, 2500.0, "exact", 1e-5, 1e-5, 1.0, true, false, true, "steady"));
+  const double L = e.settings().motion.domain.L[0];
+  double xu = 0.0, xp = e.particles().x[0];
+  while (e.time() < 0.05 - 1e-12) {
+    e.step();
+    double dx = e.particles().x[0] - xp;
+    dx -= L * std::nearbyint(dx / L);
+    xu += dx;
+    xp = e.particles().x[0];
+  }
+  const auto& s = e.settings().motion;
+  const double drift = s.sound.u_amp * s.sound.u_amp / (2.0 * s.gas.sound_speed);
+  EXPECT_NEAR(xu / e.time() / drift, 1.0, 0.01);
+}
