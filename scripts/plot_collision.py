@@ -19,8 +19,10 @@ def main(outdir):
     ax[0, 0].set_ylabel("kinetic energy [fJ]")
     ax[0, 1].plot(t, d["U_over_U0"])
     ax[0, 1].set_ylabel("U / U0")
-    ax[1, 0].plot(t, d["radius_of_gyration"] * 1e6)
+    ax[1, 0].plot(t, d["radius_of_gyration"] * 1e6, label="all particles")
+    ax[1, 0].plot(t, d["radius_of_gyration_agglomerate"] * 1e6, label="original agglomerate")
     ax[1, 0].set_ylabel("radius of gyration [um]")
+    ax[1, 0].legend()
     ax[1, 1].step(t, d["n_contacts"], where="post")
     ax[1, 1].set_ylabel("contacts")
     for a in ax[1]:

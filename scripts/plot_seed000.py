@@ -76,10 +76,10 @@ def main(out, wall):
                       ("hist_k15_0.18", "kappa_p = 15, 0.18 m/s")):
         d = load(name)
         if d is not None:
-            ax.plot(d["t"] * 1e3, d["radius_of_gyration"] / 10e-6, label=lab)
+            ax.plot(d["t"] * 1e3, d["radius_of_gyration_agglomerate"] / 10e-6, label=lab)
     ax.set_xlabel("t [ms]")
-    ax.set_ylabel("R_g / r_p")
-    ax.set_title("radius of gyration (seed Fig. 5)")
+    ax.set_ylabel("R_g / r_p (original 4 particles)")
+    ax.set_title("radius of gyration of the agglomerate (seed Fig. 5)")
     ax.legend()
     ax.grid(alpha=0.3)
     fig.tight_layout()

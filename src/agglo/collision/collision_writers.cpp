@@ -6,10 +6,11 @@ namespace agglo::collision {
 
 void write_timeseries(const OutputDir& out, const Recorder& rec) {
   out.write("timeseries.csv", [&](std::ostream& o) {
-    o << "t,kinetic_energy,electrostatic_energy,U_over_U0,radius_of_gyration,n_contacts\n";
+    o << "t,kinetic_energy,electrostatic_energy,U_over_U0,radius_of_gyration,n_contacts,"
+         "radius_of_gyration_agglomerate\n";
     for (const auto& r : rec.rows)
-      o << fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{}\n", r.t, r.kinetic, r.electrostatic, r.u_over_u0, r.rg,
-                       r.contacts);
+      o << fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{},{:.9e}\n", r.t, r.kinetic, r.electrostatic, r.u_over_u0,
+                       r.rg, r.contacts, r.rg_agglomerate);
   });
 }
 

@@ -8,7 +8,8 @@
 
 namespace agglo::collision {
 
-// timeseries.csv: t,kinetic_energy,electrostatic_energy,U_over_U0,radius_of_gyration,n_contacts
+// timeseries.csv: t,kinetic_energy,electrostatic_energy,U_over_U0,radius_of_gyration,n_contacts,
+//                 radius_of_gyration_agglomerate (the original particles only)
 void write_timeseries(const OutputDir& out, const Recorder& rec);
 // snapshots/particles_NNNN.vtp + particles.pvd
 void write_snapshots(const OutputDir& out, const Recorder& rec);

@@ -10,13 +10,14 @@
 
 namespace agglo::collision {
 
-double radius_of_gyration(const dem::Particles& p) {
+double radius_of_gyration(const dem::Particles& p, std::size_t n) {
+  if (n == 0 || n > p.size()) n = p.size();
   Vec3 c;
-  for (const auto& x : p.x) c += x;
-  c /= static_cast<double>(p.size());
+  for (std::size_t k = 0; k < n; ++k) c += p.x[k];
+  c /= static_cast<double>(n);
   double s = 0.0;
-  for (const auto& x : p.x) s += norm2(x - c);
-  return std::sqrt(s / static_cast<double>(p.size()));
+  for (std::size_t k = 0; k < n; ++k) s += norm2(p.x[k] - c);
+  return std::sqrt(s / static_cast<double>(n));
 }
 
 namespace {
@@ -162,7 +163,8 @@ CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* r
     if (t + 1e-15 >= next_row) {
       double ues = sys.external_energy();
       rec->rows.push_back({t, sys.kinetic_energy(), ues, u0 > 0 ? ues / u0 : 0.0,
-                           radius_of_gyration(sys.particles()), sys.active_contacts()});
+                           radius_of_gyration(sys.particles()), radius_of_gyration(sys.particles(), n_agg),
+                           sys.active_contacts()});
       next_row += c.output.timeseries_interval;
     }
     if (c.output.snapshot_interval > 0.0 && t + 1e-15 >= next_snap) {

@@ -20,6 +20,7 @@ struct TimeseriesRow {
   double electrostatic = 0.0;  // [J]
   double u_over_u0 = 0.0;  // electrostatic energy / U0, U0 = 2 pi r_p^3 sigma_f^2 / eps0
   double rg = 0.0;         // radius of gyration of all particles [m]
+  double rg_agglomerate = 0.0;  // radius of gyration of the original agglomerate particles [m]
   int contacts = 0;
 };
 
@@ -64,8 +65,8 @@ CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* r
 // The agglomerate alone, relaxed under electrostatics (as built when there is none), at rest.
 dem::Particles relaxed_agglomerate(const CollisionCase& c);
 
-// Radius of gyration [(1/N) sum |x_i - x_c|^2]^(1/2).
-double radius_of_gyration(const dem::Particles& p);
+// Radius of gyration [(1/N) sum |x_i - x_c|^2]^(1/2) of the first `n` particles (all if n = 0).
+double radius_of_gyration(const dem::Particles& p, std::size_t n = 0);
 
 // Classification of the current state (used by run_collision; exposed for tests).
 CollisionOutcome classify(const dem::DemSystem& sys, std::size_t n_agglomerate, double medium_permittivity);
