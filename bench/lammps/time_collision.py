@@ -40,7 +40,8 @@ def main():
     nsteps = setup.contact_steps(a.speed) + int(-(-setup.after_contact // setup.dt))
     with open(os.path.join(work, "in.collision"), "w") as f:
         f.write(setup.lammps_input(a.speed, nsteps, "end.dump"))
-    agglo_cmd = [os.path.abspath(a.agglo), "collide", os.path.abspath(a.case), "--speed", repr(a.speed), "-j", "1",
+    agglo_cmd = [os.path.abspath(a.agglo), "--no-plots", "collide", os.path.abspath(a.case), "--speed", repr(a.speed), "-j", "1",
+                 "--set", "time.early_stop=false",  # same simulated time as LAMMPS
                  "--set", "output.snapshot_interval=0", "--out", os.path.join(work, "agglo_out")]
     for s in a.sets:
         agglo_cmd += ["--set", s]
