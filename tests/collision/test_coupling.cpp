@@ -1,9 +1,8 @@
-// Electrostatics-DEM coupling (MODEL.md B.3): the pair-corrected hold reproduces fresh solves far
-// better than holding forces constant; coupling forces obey action-reaction; the coulomb fast path
-// is exact for kappa_p = kappa_0; the break-up classification of hand-made states.
+// Electrostatics-DEM coupling (MODEL.md B.3): the pair-corrected hold is exact for an isolated pair
+// and keeps action-reaction; the coulomb fast path is exact for kappa_p = kappa_0; the break-up
+// classification of hand-made states.
 #include <gtest/gtest.h>
 
-#include <random>
 
 #include "agglo/collision/agglomerate.hpp"
 #include "agglo/collision/electrostatic_coupling.hpp"
