@@ -48,25 +48,53 @@ void Engine::refresh_all() {
   bin();
 }
 
-void Engine::bin() {
+void Engine::compute_cells(std::size_t begin, std::size_t end) {
   const Domain& D = s_.motion.domain;
+  const double fx = D.cells[0] / D.L[0], fy = D.cells[1] / D.L[1], fz = D.cells[2] / D.L[2];
+  const int c0 = D.cells[0], c1 = D.cells[1], c2 = D.cells[2];
+  const double* x = p_.x.data();
+  const double* y = p_.y.data();
+  const double* z = p_.z.data();
+  std::uint32_t* co = cell_of_.data();
+  for (std::size_t i = begin; i < end; ++i) {
+    const int cx = std::min(c0 - 1, static_cast<int>(x[i] * fx));
+    const int cy = std::min(c1 - 1, static_cast<int>(y[i] * fy));
+    const int cz = std::min(c2 - 1, static_cast<int>(z[i] * fz));
+    co[i] = static_cast<std::uint32_t>((cz * c1 + cy) * c0 + cx);
+  }
+}
+
+bool Engine::state_ok(std::size_t begin, std::size_t end) const {
+  // Branch-free form of check_state's tests: a comparison with NaN is false, and v - v is 0 only
+  // for finite v.
+  const Domain& D = s_.motion.domain;
+  const double Lx = D.L[0], Ly = D.L[1], Lz = D.L[2];
+  bool ok = true;
+  for (std::size_t i = begin; i < end; ++i) {
+    const double x = p_.x[i], y = p_.y[i], z = p_.z[i], vx = p_.vx[i], vy = p_.vy[i], vz = p_.vz[i];
+    const double w = p_.w[i], m = p_.mass[i];
+    ok &= (x >= 0.0) & (x < Lx) & (y >= 0.0) & (y < Ly) & (z >= 0.0) & (z < Lz) & (w >= 0.0) &
+          (vx - vx == 0.0) & (vy - vy == 0.0) & (vz - vz == 0.0) & (w - w == 0.0) & (m - m == 0.0);
+  }
+  return ok;
+}
+
+void Engine::bin() {
   const std::size_t n = p_.size();
-  const std::size_t nc = static_cast<std::size_t>(D.num_cells());
   cell_of_.resize(n);
   order_.resize(n);
+  compute_cells(0, n);
+  sort_cells();
+}
+
+void Engine::sort_cells() {
+  const std::size_t n = p_.size();
+  const std::size_t nc = static_cast<std::size_t>(s_.motion.domain.num_cells());
   start_.assign(nc + 1, 0);
-  const double fx = D.cells[0] / D.L[0], fy = D.cells[1] / D.L[1], fz = D.cells[2] / D.L[2];
-  for (std::size_t i = 0; i < n; ++i) {
-    const int cx = std::min(D.cells[0] - 1, static_cast<int>(p_.x[i] * fx));
-    const int cy = std::min(D.cells[1] - 1, static_cast<int>(p_.y[i] * fy));
-    const int cz = std::min(D.cells[2] - 1, static_cast<int>(p_.z[i] * fz));
-    const std::uint32_t c = static_cast<std::uint32_t>((cz * D.cells[1] + cy) * D.cells[0] + cx);
-    cell_of_[i] = c;
-    ++start_[c + 1];
-  }
+  for (std::size_t i = 0; i < n; ++i) ++start_[cell_of_[i] + 1];
   for (std::size_t c = 0; c < nc; ++c) start_[c + 1] += start_[c];
-  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) order_[fill[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  fill_.assign(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) order_[fill_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
 }
 
 double Engine::max_guard_pn() const {
@@ -105,17 +133,27 @@ void Engine::step() {
   const double t0 = time();
   const std::size_t n = p_.size();
   const Motion& M = s_.motion;
-  if (M.integrator != Integrator::none) {
-#pragma omp parallel if (n >= kParallelMinSamples)
-    {
-      const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
-      const std::size_t tid = static_cast<std::size_t>(omp_get_thread_num());
-      M.advance(p_, n * tid / nt, n * (tid + 1) / nt, t0, s_.collision_dt, substeps_);
+  // Motion, state check and cell index of each sample in one parallel pass over the samples.
+  cell_of_.resize(n);
+  order_.resize(n);
+  bool all_ok = true;
+  const bool moving = M.integrator != Integrator::none;
+#pragma omp parallel if (n >= kParallelMinSamples) reduction(&& : all_ok)
+  {
+    const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t tid = static_cast<std::size_t>(omp_get_thread_num());
+    const std::size_t b = n * tid / nt, e = n * (tid + 1) / nt;
+    bool ok = true;
+    if (moving) {
+      M.advance(p_, b, e, t0, s_.collision_dt, substeps_);
+      ok = state_ok(b, e);
     }
+    if (ok) compute_cells(b, e);  // only for valid positions (otherwise the step throws below)
+    all_ok = all_ok && ok;
   }
   ++step_;
-  if (M.integrator != Integrator::none) check_state();
-  bin();
+  if (!all_ok) check_state();  // throws with the message naming the first bad particle
+  sort_cells();
   if (n >= kReorderMinSamples && step_ % kReorderEvery == 1) {
     p_.permute(order_);
     bin();

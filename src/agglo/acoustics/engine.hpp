@@ -61,6 +61,9 @@ class Engine {
 
  private:
   void bin();
+  void compute_cells(std::size_t begin, std::size_t end);  // cell_of_ for samples [begin, end)
+  void sort_cells();                                        // order_, start_ from cell_of_
+  bool state_ok(std::size_t begin, std::size_t end) const;  // fast test of check_state's conditions
   EngineSettings s_;
   ParticleSet p_;
   Kernel kernel_;
@@ -68,7 +71,7 @@ class Engine {
   NanbuStats stats_;
   std::uint64_t step_ = 0;
   int substeps_ = 1;
-  std::vector<std::uint32_t> cell_of_, order_, start_;
+  std::vector<std::uint32_t> cell_of_, order_, start_, fill_;
   std::vector<NanbuStats> cell_stats_;
 };
 

@@ -102,8 +102,8 @@ double Kernel::beta(const ParticleSet& p, std::size_t i, std::size_t j, double r
 void CellBounds::include(const ParticleSet& p, std::size_t i, const Gas& gas) {
   d_max = std::max(d_max, p.d[i]);
   vol_max = std::max(vol_max, p.volume(i));
-  dl_max = std::max(dl_max, p.d[i] * p.slip_l[i]);
-  ccd_max = std::max(ccd_max, p.cc[i] / p.d[i]);
+  dl_max = std::max(dl_max, p.dl[i]);
+  ccd_max = std::max(ccd_max, p.ccd[i]);
   w_max = std::max(w_max, p.w[i]);
   const double ex = p.vx[i] - vref[0], ey = p.vy[i] - vref[1], ez = p.vz[i] - vref[2];
   const double s2 = ex * ex + ey * ey + ez * ez;
@@ -157,7 +157,7 @@ double Kernel::bound(const ParticleSet& p, std::size_t i, const CellBounds& cb) 
                                                                         cb.speed_dev_max);
   }
   // With r >= (d_i+d_j)/2: AWE <= (3/8) u_amp (d_i+d_j)(d_i l_i + max d l).
-  if (s_.acoustic_wake) b += 0.375 * sound_.u_amp * sd * (di * p.slip_l[i] + cb.dl_max);
+  if (s_.acoustic_wake) b += 0.375 * sound_.u_amp * sd * (p.dl[i] + cb.dl_max);
   // MRPE <= 2 pref d_i^2 d_j^2 / (d_i+d_j) <= 2 pref d_i d_max min(d_i, d_max) (l <= 1, cos <= 1).
   if (s_.radiation_pressure) {
     const double pref = std::sqrt(3.0) * gas_.density * sound_.u_amp * sound_.u_amp / (144.0 * pi * gas_.viscosity);
@@ -165,7 +165,7 @@ double Kernel::bound(const ParticleSet& p, std::size_t i, const CellBounds& cb) 
   }
   if (s_.brownian) {
     // Fuchs <= continuum+slip form is not guaranteed; use the larger of it and the free-molecular bound.
-    double bd = 2.0 * k_B * gas_.temperature / (3.0 * gas_.viscosity) * sd * (p.cc[i] / di + cb.ccd_max);
+    double bd = 2.0 * k_B * gas_.temperature / (3.0 * gas_.viscosity) * sd * (p.ccd[i] + cb.ccd_max);
     if (s_.brownian_form == BrownianForm::fuchs) {
       const double ci = thermal_speed(gas_, p.mass[i]);
       bd = std::max(bd, 0.25 * pi * sd * sd * std::sqrt(ci * ci + cb.cbar_max * cb.cbar_max));

@@ -51,8 +51,30 @@ CellBounds cell_bounds(const ParticleSet& p, const std::uint32_t* idx, std::size
     cb.vref[1] = my / sw;
     cb.vref[2] = mz / sw;
   }
-  for (std::size_t a = 0; a < n; ++a)
-    if (p.w[idx[a]] > 0.0) cb.include(p, idx[a], gas);
+  // Same maxima as calling cb.include for every live sample, in one pass (sqrt once at the end:
+  // it is monotone, so sqrt of the largest square is the value include() would have kept).
+  double d_max = 0.0, vol_max = 0.0, dl_max = 0.0, ccd_max = 0.0, w_max = 0.0, s2_max = 0.0;
+  for (std::size_t a = 0; a < n; ++a) {
+    const std::size_t i = idx[a];
+    if (p.w[i] <= 0.0) continue;
+    d_max = std::max(d_max, p.d[i]);
+    vol_max = std::max(vol_max, p.vol_s[i] + p.vol_l[i]);
+    dl_max = std::max(dl_max, p.dl[i]);
+    ccd_max = std::max(ccd_max, p.ccd[i]);
+    w_max = std::max(w_max, p.w[i]);
+    const double ex = p.vx[i] - cb.vref[0], ey = p.vy[i] - cb.vref[1], ez = p.vz[i] - cb.vref[2];
+    s2_max = std::max(s2_max, ex * ex + ey * ey + ez * ez);
+  }
+  cb.d_max = d_max;
+  cb.vol_max = vol_max;
+  cb.dl_max = dl_max;
+  cb.ccd_max = ccd_max;
+  cb.w_max = w_max;
+  cb.speed_dev2_max = s2_max;
+  cb.speed_dev_max = s2_max > 0.0 ? std::sqrt(s2_max) : 0.0;
+  if (cb.need_cbar)
+    for (std::size_t a = 0; a < n; ++a)
+      if (p.w[idx[a]] > 0.0) cb.cbar_max = std::max(cb.cbar_max, thermal_speed(gas, p.mass[idx[a]]));
   return cb;
 }
 

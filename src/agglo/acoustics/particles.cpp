@@ -17,7 +17,7 @@ const char* phase_name(Phase p) {
 
 void ParticleSet::resize(std::size_t n) {
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
-                  &slip_l, &cphi, &sphi, &phase_code})
+                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd})
     v->resize(n, 0.0);
   pop.resize(n, 0);
   id.resize(n, 0);
@@ -52,11 +52,13 @@ void ParticleSet::refresh(std::size_t i, const Gas& gas, const Sound& sound) {
   cphi[i] = 1.0 / s;
   sphi[i] = wt / s;
   phase_code[i] = vol_l[i] <= 0.0 ? 0.0 : (vol_s[i] <= 0.0 ? 1.0 : 2.0);
+  dl[i] = d[i] * slip_l[i];
+  ccd[i] = cc[i] / d[i];
 }
 
 void ParticleSet::copy_sample(std::size_t from, std::size_t to) {
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
-                  &slip_l, &cphi, &sphi, &phase_code})
+                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd})
     (*v)[to] = (*v)[from];
   pop[to] = pop[from];
 }
@@ -71,7 +73,7 @@ void ParticleSet::permute(const std::vector<std::uint32_t>& order) {
     for (std::size_t k = 0; k < order.size(); ++k) v[k] = old[order[k]];
   };
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
-                  &slip_l, &cphi, &sphi, &phase_code})
+                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd})
     apply(*v);
   apply(pop);
   apply(id);

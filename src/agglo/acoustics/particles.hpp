@@ -35,6 +35,8 @@ struct ParticleSet {
   std::vector<double> slip_l;         // slip coefficient l = w tau / sqrt(1 + (w tau)^2)
   std::vector<double> cphi, sphi;     // cos/sin of phase lag phi = atan(w tau)
   std::vector<double> phase_code;     // Phase as double (0 solid, 1 liquid, 2 mixed) for SIMD-free lookups
+  std::vector<double> dl;             // d l [m] (kernel majorant, CellBounds)
+  std::vector<double> ccd;            // C_c / d [1/m] (kernel majorant, CellBounds)
 
   std::size_t size() const { return x.size(); }
   void resize(std::size_t n);
