@@ -46,8 +46,21 @@ void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, do
   const double A = sound.u_amp;
   double s0 = 0.0, c0 = 1.0;
   if (A > 0.0) {
-    const double kx = sound.wavenumber * p.x[i];
-    const double skx = std::sin(kx), ckx = std::cos(kx);
+    // sin, cos(k x) from the per-sample cache at x_ref rotated by delta = k (x - x_ref); the cache is
+    // refilled from libm when |delta| > 0.05 (x moved > 1.4 mm at 2 kHz, a wrap, or an empty cache).
+    const double k = sound.wavenumber;
+    double dlt = k * (p.x[i] - p.x_ref[i]);
+    if (!(std::abs(dlt) <= 0.05)) {
+      p.x_ref[i] = p.x[i];
+      p.skx[i] = std::sin(k * p.x[i]);
+      p.ckx[i] = std::cos(k * p.x[i]);
+      dlt = 0.0;
+    }
+    // Taylor series of sin, cos(delta), |delta| <= 0.05: truncation below 1e-19.
+    const double d2 = dlt * dlt;
+    const double sd = dlt * (1.0 - d2 * (1.0 / 6) * (1.0 - d2 * (1.0 / 20) * (1.0 - d2 * (1.0 / 42))));
+    const double cd = 1.0 - d2 * 0.5 * (1.0 - d2 * (1.0 / 12) * (1.0 - d2 * (1.0 / 30) * (1.0 - d2 * (1.0 / 56))));
+    const double skx = p.skx[i] * cd + p.ckx[i] * sd, ckx = p.ckx[i] * cd - p.skx[i] * sd;
     s0 = tr.swt * ckx - tr.cwt * skx;  // sin(omega t - k x)
     c0 = tr.cwt * ckx + tr.swt * skx;
   }
@@ -89,10 +102,10 @@ void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, do
   }
   if (A > 0.0) {
     const double w = sound.omega;
-    const double q = w * te, D = 1.0 + q * q;
+    const double q = w * te, AD = A / (1.0 + q * q);
     const double s1 = s0 * tr.cwh + c0 * tr.swh, c1 = c0 * tr.cwh - s0 * tr.swh;
-    const double vs0 = A * (s0 - q * c0) / D, vs1 = A * (s1 - q * c1) / D;
-    const double dX = -A * ((c1 - c0) + q * (s1 - s0)) / (w * D);
+    const double vs0 = AD * (s0 - q * c0), vs1 = AD * (s1 - q * c1);
+    const double dX = -AD * ((c1 - c0) + q * (s1 - s0)) / w;
     const double dv = p.vx[i] - vs0;
     p.x[i] += dX + dv * te * omE;
     p.vx[i] = vs1 + dv * E;

@@ -30,14 +30,6 @@ double Gas::slip_correction(double d) const {
 double Gas::inertia_correction(double re) { return re > 0.0 ? 1.0 + 0.15 * std::pow(re, 0.687) : 1.0; }
 
 
-double Gas::inertia_correction_fast(double re) {
-  // Re^0.687 = exp(0.687 ln Re) with ln in double and exp in single precision (relative error ~1e-7);
-  // outside the float range fall back to pow.
-  if (!(re > 0.0)) return 1.0;
-  if (re < 1e-30 || re > 1e30) return 1.0 + 0.15 * std::pow(re, 0.687);
-  return 1.0 + 0.15 * static_cast<double>(std::exp(static_cast<float>(0.687 * std::log(re))));
-}
-
 double Gas::relaxation_time(double rho_p, double d) const {
   return rho_p * d * d * slip_correction(d) / (18.0 * viscosity);
 }

@@ -1,6 +1,7 @@
 #include "agglo/acoustics/particles.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "agglo/core/constants.hpp"
 
@@ -19,6 +20,9 @@ void ParticleSet::resize(std::size_t n) {
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
                   &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd})
     v->resize(n, 0.0);
+  x_ref.resize(n, std::numeric_limits<double>::quiet_NaN());
+  skx.resize(n, 0.0);
+  ckx.resize(n, 1.0);
   pop.resize(n, 0);
   id.resize(n, 0);
 }
@@ -58,7 +62,7 @@ void ParticleSet::refresh(std::size_t i, const Gas& gas, const Sound& sound) {
 
 void ParticleSet::copy_sample(std::size_t from, std::size_t to) {
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
-                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd})
+                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd, &x_ref, &skx, &ckx})
     (*v)[to] = (*v)[from];
   pop[to] = pop[from];
 }
@@ -73,7 +77,7 @@ void ParticleSet::permute(const std::vector<std::uint32_t>& order) {
     for (std::size_t k = 0; k < order.size(); ++k) v[k] = old[order[k]];
   };
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
-                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd})
+                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd, &x_ref, &skx, &ckx})
     apply(*v);
   apply(pop);
   apply(id);
