@@ -207,15 +207,8 @@ void collide_cell(ParticleSet& p, const std::uint32_t* idx, std::size_t n, std::
 
   // One Nanbu trial of sample i over an interval h with majorant probability pbound.
   // Returns true if i collided (its state changed).
-  auto trial = [&](std::size_t i, double h, double pbound) -> bool {
-    ++st.trials;
-    const double R = rng.uniform();
-    std::size_t ja = static_cast<std::size_t>(R * static_cast<double>(N));
-    if (ja >= N) ja = N - 1;
-    const std::size_t j = idx[ja];
-    if (j == i || p.w[j] <= 0.0) return false;
-    const double thr = static_cast<double>(ja + 1) * invN - R;
-    if (thr >= pbound) return false;  // majorant rejection: P_ij <= pbound <= thr
+  // Kernel evaluation of a draw that passed the majorant: collide iff P_ij > thr.
+  auto evaluate = [&](std::size_t i, std::size_t j, double h, double thr) -> bool {
     if (excl && p.pop[i] == p.pop[j]) return false;
     ++st.kernel_evals;
     double r = 0.0;
@@ -236,24 +229,63 @@ void collide_cell(ParticleSet& p, const std::uint32_t* idx, std::size_t n, std::
     return false;
   };
 
+  // One Nanbu trial of sample i over an interval h with majorant probability pbound.
+  // Returns true if i collided (its state changed).
+  auto trial = [&](std::size_t i, double h, double pbound) -> bool {
+    ++st.trials;
+    const double R = rng.uniform();
+    std::size_t ja = static_cast<std::size_t>(R * static_cast<double>(N));
+    if (ja >= N) ja = N - 1;
+    const std::size_t j = idx[ja];
+    if (j == i || p.w[j] <= 0.0) return false;
+    const double thr = static_cast<double>(ja + 1) * invN - R;
+    if (thr >= pbound) return false;  // majorant rejection: P_ij <= pbound <= thr
+    return evaluate(i, j, h, thr);
+  };
+
   const double pfac = ctx.dt / (2.0 * Vc);
   double pcell = K.bound_cell(cb) * cb.w_max * pfac;
   std::uint64_t seen = st.collisions;
-  for (std::size_t a = 0; a < n; ++a) {
-    const std::size_t i = idx[a];
-    if (p.w[i] <= 0.0) continue;
-    ++st.particle_steps;
-    // Fast path: the cell-wide majorant already meets the bound for a full step.
+  std::size_t a = 0;
+  while (a < n) {
     if (st.collisions != seen) {  // cell bounds changed
       pcell = K.bound_cell(cb) * cb.w_max * pfac;
       seen = st.collisions;
     }
-    if (pcell * static_cast<double>(N) <= 1.0) {
-      st.max_bound_pn = std::max(st.max_bound_pn, pcell * static_cast<double>(N));
-      trial(i, ctx.dt, pcell);
-      st.max_subcycles = std::max<std::uint64_t>(st.max_subcycles, 1);
+    const double pe = pcell * static_cast<double>(N);
+    if (pe <= 1.0) {
+      // Fast path: the cell-wide majorant meets the bound for a full step. A trial (R, candidate
+      // ja = int(R N), threshold thr = (ja+1)/N - R) passes the majorant (thr < pcell) with
+      // probability N pcell, and then ja is uniform and thr uniform in (0, pcell). The samples whose
+      // trial passes are found by geometric skipping (one draw per passing trial instead of one per
+      // sample); the trials of the skipped samples are rejections and need no draw.
+      std::size_t skip = n - a;
+      if (pe > 0.0) {
+        const double g = std::floor(std::log1p(-rng.uniform()) / std::log1p(-std::min(pe, 1.0 - 1e-16)));
+        if (g < static_cast<double>(n - a)) skip = static_cast<std::size_t>(g);
+      }
+      std::uint64_t live = 0;
+      for (const std::size_t stop = a + skip; a < stop; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
+      if (a < n && p.w[idx[a]] > 0.0) ++live;
+      if (live > 0) {
+        st.particle_steps += live;
+        st.trials += live;
+        st.max_bound_pn = std::max(st.max_bound_pn, pe);
+        st.max_subcycles = std::max<std::uint64_t>(st.max_subcycles, 1);
+      }
+      if (a == n) break;
+      const std::size_t i = idx[a++];
+      if (p.w[i] <= 0.0) continue;
+      std::size_t ja = static_cast<std::size_t>(rng.uniform() * static_cast<double>(N));
+      if (ja >= N) ja = N - 1;
+      const std::size_t j = idx[ja];
+      if (j == i || p.w[j] <= 0.0) continue;
+      evaluate(i, j, ctx.dt, pcell * (1.0 - rng.uniform()));
       continue;
     }
+    const std::size_t i = idx[a++];
+    if (p.w[i] <= 0.0) continue;
+    ++st.particle_steps;
     double remaining = ctx.dt;
     std::uint64_t intervals = 0;
     bool first = true;
