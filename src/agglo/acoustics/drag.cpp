@@ -39,7 +39,8 @@ void Motion::wrap(ParticleSet& p, std::size_t i) const {
 
 Motion::StepTrig Motion::trig(double t, double h) const {
   return {std::sin(sound.omega * t),       std::cos(sound.omega * t),       std::sin(sound.omega * h),
-          std::cos(sound.omega * h),       std::sin(0.5 * sound.omega * h), std::cos(0.5 * sound.omega * h)};
+          std::cos(sound.omega * h),       std::sin(0.5 * sound.omega * h), std::cos(0.5 * sound.omega * h),
+          1.0 / sound.omega};
 }
 
 void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, double h) const {
@@ -80,7 +81,7 @@ void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, do
         const double sh = s0 * tr.cwh2 + c0 * tr.swh2, ch = c0 * tr.cwh2 - s0 * tr.swh2;
         vxh = A * (sh - q * ch) / D + (p.vx[i] - A * (s0 - q * c0) / D) * Eh;
         const double sxh = A * sh - vxh;
-        const double vt = -gas.gravity * (p.rho[i] - gas.density) / p.rho[i] * te;
+        const double vt = p.acc_z[i] * te;
         const double vyh = p.vy[i] * Eh, vzh = vt + (p.vz[i] - vt) * Eh;
         const double slh = std::sqrt(sxh * sxh + vyh * vyh + vzh * vzh);
         te = p.tau[i] / Gas::inertia_correction_fast(gas.reynolds(slh, p.d[i]));
@@ -94,7 +95,7 @@ void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, do
     E = 0.0;
     omE = 1.0;
   } else if (x > 0.01) {
-    E = std::exp(-x);
+    E = detail_exp_small(-x);  // inline polynomial exp (relative error ~1e-15)
     omE = 1.0 - E;
   } else {
     omE = -std::expm1(-x);
@@ -105,7 +106,7 @@ void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, do
     const double q = w * te, AD = A / (1.0 + q * q);
     const double s1 = s0 * tr.cwh + c0 * tr.swh, c1 = c0 * tr.cwh - s0 * tr.swh;
     const double vs0 = AD * (s0 - q * c0), vs1 = AD * (s1 - q * c1);
-    const double dX = -AD * ((c1 - c0) + q * (s1 - s0)) / w;
+    const double dX = -AD * ((c1 - c0) + q * (s1 - s0)) * tr.inv_omega;
     const double dv = p.vx[i] - vs0;
     p.x[i] += dX + dv * te * omE;
     p.vx[i] = vs1 + dv * E;
@@ -115,7 +116,7 @@ void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, do
   }
   p.y[i] += p.vy[i] * te * omE;
   p.vy[i] *= E;
-  const double vt = -gas.gravity * (p.rho[i] - gas.density) / p.rho[i] * te;
+  const double vt = p.acc_z[i] * te;
   const double dz = p.vz[i] - vt;
   p.z[i] += vt * h + dz * te * omE;
   p.vz[i] = vt + dz * E;

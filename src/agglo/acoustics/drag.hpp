@@ -47,6 +47,7 @@ struct Motion {
   // swt, cwt = sin, cos(omega t); swh, cwh = sin, cos(omega h).
   struct StepTrig {
     double swt, cwt, swh, cwh, swh2, cwh2;  // ... and sin, cos(omega h / 2)
+    double inv_omega;                        // 1 / omega
   };
   StepTrig trig(double t, double h) const;
   void advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, double h) const;

@@ -18,7 +18,7 @@ const char* phase_name(Phase p) {
 
 void ParticleSet::resize(std::size_t n) {
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
-                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd})
+                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd, &acc_z})
     v->resize(n, 0.0);
   x_ref.resize(n, std::numeric_limits<double>::quiet_NaN());
   skx.resize(n, 0.0);
@@ -58,11 +58,12 @@ void ParticleSet::refresh(std::size_t i, const Gas& gas, const Sound& sound) {
   phase_code[i] = vol_l[i] <= 0.0 ? 0.0 : (vol_s[i] <= 0.0 ? 1.0 : 2.0);
   dl[i] = d[i] * slip_l[i];
   ccd[i] = cc[i] / d[i];
+  acc_z[i] = -gas.gravity * (rho[i] - gas.density) / rho[i];
 }
 
 void ParticleSet::copy_sample(std::size_t from, std::size_t to) {
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
-                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd, &x_ref, &skx, &ckx})
+                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd, &acc_z, &x_ref, &skx, &ckx})
     (*v)[to] = (*v)[from];
   pop[to] = pop[from];
 }
@@ -77,7 +78,7 @@ void ParticleSet::permute(const std::vector<std::uint32_t>& order) {
     for (std::size_t k = 0; k < order.size(); ++k) v[k] = old[order[k]];
   };
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
-                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd, &x_ref, &skx, &ckx})
+                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd, &acc_z, &x_ref, &skx, &ckx})
     apply(*v);
   apply(pop);
   apply(id);

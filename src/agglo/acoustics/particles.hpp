@@ -37,6 +37,7 @@ struct ParticleSet {
   std::vector<double> phase_code;     // Phase as double (0 solid, 1 liquid, 2 mixed) for SIMD-free lookups
   std::vector<double> dl;             // d l [m] (kernel majorant, CellBounds)
   std::vector<double> ccd;            // C_c / d [1/m] (kernel majorant, CellBounds)
+  std::vector<double> acc_z;          // -g (rho - rho_g) / rho [m/s^2]: gravity + buoyancy per unit tau (motion)
   // Wave-phase cache of the exact integrator (drag.cpp): sin, cos(k x_ref) at x_ref (NaN = empty).
   // sin(k x) is obtained from it by a small rotation k (x - x_ref) while |k (x - x_ref)| is small.
   std::vector<double> x_ref, skx, ckx;
