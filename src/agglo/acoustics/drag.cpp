@@ -1,5 +1,6 @@
 #include "agglo/acoustics/drag.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace agglo::acoustics {
@@ -44,83 +45,121 @@ Motion::StepTrig Motion::trig(double t, double h) const {
 }
 
 void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, double h) const {
+  advance_exact_block(p, i, i + 1, tr, h);
+}
+
+// The step of one sample is a long chain of dependent operations (phase -> slip -> C_I -> tau_e ->
+// exp -> update). To let the processor overlap many samples, the step runs in stages over blocks
+// of samples; every sample sees exactly the arithmetic of the one-sample form.
+void Motion::advance_exact_block(ParticleSet& p, std::size_t begin, std::size_t end, const StepTrig& tr,
+                                 double h) const {
+  constexpr std::size_t B = 64;
+  double S0[B], C0[B], TE[B], CI[B], EE[B], OME[B];
   const double A = sound.u_amp;
-  double s0 = 0.0, c0 = 1.0;
-  if (A > 0.0) {
-    // sin, cos(k x) from the per-sample cache at x_ref rotated by delta = k (x - x_ref); the cache is
-    // refilled from libm when |delta| > 0.05 (x moved > 1.4 mm at 2 kHz, a wrap, or an empty cache).
-    const double k = sound.wavenumber;
-    double dlt = k * (p.x[i] - p.x_ref[i]);
-    if (!(std::abs(dlt) <= 0.05)) {
-      p.x_ref[i] = p.x[i];
-      p.skx[i] = std::sin(k * p.x[i]);
-      p.ckx[i] = std::cos(k * p.x[i]);
-      dlt = 0.0;
-    }
-    // Taylor series of sin, cos(delta), |delta| <= 0.05: truncation below 1e-19.
-    const double d2 = dlt * dlt;
-    const double sd = dlt * (1.0 - d2 * (1.0 / 6) * (1.0 - d2 * (1.0 / 20) * (1.0 - d2 * (1.0 / 42))));
-    const double cd = 1.0 - d2 * 0.5 * (1.0 - d2 * (1.0 / 12) * (1.0 - d2 * (1.0 / 30) * (1.0 - d2 * (1.0 / 56))));
-    const double skx = p.skx[i] * cd + p.ckx[i] * sd, ckx = p.ckx[i] * cd - p.skx[i] * sd;
-    s0 = tr.swt * ckx - tr.cwt * skx;  // sin(omega t - k x)
-    c0 = tr.cwt * ckx + tr.swt * skx;
-  }
-  double te = p.tau[i];
-  if (inertia_correction) {
-    const double sx = A * s0 - p.vx[i];
-    const double slip = std::sqrt(sx * sx + p.vy[i] * p.vy[i] + p.vz[i] * p.vz[i]);
-    const double re = gas.reynolds(slip, p.d[i]);
-    const double ci = Gas::inertia_correction_fast(re);
-    te /= ci;
-    if (ci > 1.001) {
-      // Predict the slip at mid-step with this C_I, then take C_I there.
-      const double xh = 0.5 * h / te, Eh = std::exp(-xh);
-      double vxh = p.vx[i] * Eh;
-      if (A > 0.0) {
-        const double q = sound.omega * te, D = 1.0 + q * q;
-        const double sh = s0 * tr.cwh2 + c0 * tr.swh2, ch = c0 * tr.cwh2 - s0 * tr.swh2;
-        vxh = A * (sh - q * ch) / D + (p.vx[i] - A * (s0 - q * c0) / D) * Eh;
-        const double sxh = A * sh - vxh;
-        const double vt = p.acc_z[i] * te;
-        const double vyh = p.vy[i] * Eh, vzh = vt + (p.vz[i] - vt) * Eh;
-        const double slh = std::sqrt(sxh * sxh + vyh * vyh + vzh * vzh);
-        te = p.tau[i] / Gas::inertia_correction_fast(gas.reynolds(slh, p.d[i]));
+  const double k = sound.wavenumber;
+  for (std::size_t i0 = begin; i0 < end; i0 += B) {
+    const std::size_t m = std::min(B, end - i0);
+    // Stage 1: sin, cos(omega t - k x).
+    if (A > 0.0) {
+      for (std::size_t a = 0; a < m; ++a) {
+        const std::size_t i = i0 + a;
+        // sin, cos(k x) from the per-sample cache at x_ref rotated by delta = k (x - x_ref); the cache is
+        // refilled from libm when |delta| > 0.05 (x moved > 1.4 mm at 2 kHz, a wrap, or an empty cache).
+        double dlt = k * (p.x[i] - p.x_ref[i]);
+        if (!(std::abs(dlt) <= 0.05)) {
+          p.x_ref[i] = p.x[i];
+          p.skx[i] = std::sin(k * p.x[i]);
+          p.ckx[i] = std::cos(k * p.x[i]);
+          dlt = 0.0;
+        }
+        // Taylor series of sin, cos(delta), |delta| <= 0.05: truncation below 1e-19.
+        const double d2 = dlt * dlt;
+        const double sd = dlt * (1.0 - d2 * (1.0 / 6) * (1.0 - d2 * (1.0 / 20) * (1.0 - d2 * (1.0 / 42))));
+        const double cd =
+            1.0 - d2 * 0.5 * (1.0 - d2 * (1.0 / 12) * (1.0 - d2 * (1.0 / 30) * (1.0 - d2 * (1.0 / 56))));
+        const double skx = p.skx[i] * cd + p.ckx[i] * sd, ckx = p.ckx[i] * cd - p.skx[i] * sd;
+        S0[a] = tr.swt * ckx - tr.cwt * skx;  // sin(omega t - k x)
+        C0[a] = tr.cwt * ckx + tr.swt * skx;
+      }
+    } else {
+      for (std::size_t a = 0; a < m; ++a) {
+        S0[a] = 0.0;
+        C0[a] = 1.0;
       }
     }
+    // Stage 2: tau_e = tau / C_I (C_I at the start of the step; at mid-step for C_I - 1 > 1e-3).
+    if (inertia_correction) {
+      for (std::size_t a = 0; a < m; ++a) {
+        const std::size_t i = i0 + a;
+        const double sx = A * S0[a] - p.vx[i];
+        const double slip = std::sqrt(sx * sx + p.vy[i] * p.vy[i] + p.vz[i] * p.vz[i]);
+        CI[a] = gas.reynolds(slip, p.d[i]);
+      }
+      for (std::size_t a = 0; a < m; ++a) CI[a] = Gas::inertia_correction_fast(CI[a]);
+      for (std::size_t a = 0; a < m; ++a) TE[a] = p.tau[i0 + a] / CI[a];
+      for (std::size_t a = 0; a < m; ++a) {
+        if (!(CI[a] > 1.001)) continue;
+        const std::size_t i = i0 + a;
+        const double s0 = S0[a], c0 = C0[a];
+        double te = TE[a];
+        // Predict the slip at mid-step with this C_I, then take C_I there.
+        const double xh = 0.5 * h / te, Eh = std::exp(-xh);
+        double vxh = p.vx[i] * Eh;
+        if (A > 0.0) {
+          const double q = sound.omega * te, D = 1.0 + q * q;
+          const double sh = s0 * tr.cwh2 + c0 * tr.swh2, ch = c0 * tr.cwh2 - s0 * tr.swh2;
+          vxh = A * (sh - q * ch) / D + (p.vx[i] - A * (s0 - q * c0) / D) * Eh;
+          const double sxh = A * sh - vxh;
+          const double vt = p.acc_z[i] * te;
+          const double vyh = p.vy[i] * Eh, vzh = vt + (p.vz[i] - vt) * Eh;
+          const double slh = std::sqrt(sxh * sxh + vyh * vyh + vzh * vzh);
+          te = p.tau[i] / Gas::inertia_correction_fast(gas.reynolds(slh, p.d[i]));
+        }
+        TE[a] = te;
+      }
+    } else {
+      for (std::size_t a = 0; a < m; ++a) TE[a] = p.tau[i0 + a];
+    }
+    // Stage 3: exp(-h/tau_e) and 1 - exp(-h/tau_e); expm1 only where 1 - exp(-x) would lose digits.
+    for (std::size_t a = 0; a < m; ++a) {
+      const double x = h / TE[a];
+      if (x > 40.0) {  // exp(-x) < 4.3e-18: below the rounding of every term it multiplies
+        EE[a] = 0.0;
+        OME[a] = 1.0;
+      } else if (x > 0.01) {
+        EE[a] = detail_exp_small(-x);  // inline polynomial exp (relative error ~1e-15)
+        OME[a] = 1.0 - EE[a];
+      } else {
+        OME[a] = -std::expm1(-x);
+        EE[a] = 1.0 - OME[a];
+      }
+    }
+    // Stage 4: closed-form update of velocity and position.
+    for (std::size_t a = 0; a < m; ++a) {
+      const std::size_t i = i0 + a;
+      const double te = TE[a], E = EE[a], omE = OME[a], s0 = S0[a], c0 = C0[a];
+      if (A > 0.0) {
+        const double w = sound.omega;
+        const double q = w * te, AD = A / (1.0 + q * q);
+        const double s1 = s0 * tr.cwh + c0 * tr.swh, c1 = c0 * tr.cwh - s0 * tr.swh;
+        const double vs0 = AD * (s0 - q * c0), vs1 = AD * (s1 - q * c1);
+        const double dX = -AD * ((c1 - c0) + q * (s1 - s0)) * tr.inv_omega;
+        const double dv = p.vx[i] - vs0;
+        p.x[i] += dX + dv * te * omE;
+        p.vx[i] = vs1 + dv * E;
+      } else {
+        p.x[i] += p.vx[i] * te * omE;
+        p.vx[i] *= E;
+      }
+      p.y[i] += p.vy[i] * te * omE;
+      p.vy[i] *= E;
+      const double vt = p.acc_z[i] * te;
+      const double dz = p.vz[i] - vt;
+      p.z[i] += vt * h + dz * te * omE;
+      p.vz[i] = vt + dz * E;
+      wrap(p, i);
+    }
   }
-  const double x = h / te;
-  // exp(-x) and 1 - exp(-x); expm1 only where 1 - exp(-x) would lose digits.
-  double E, omE;
-  if (x > 40.0) {  // exp(-x) < 4.3e-18: below the rounding of every term it multiplies
-    E = 0.0;
-    omE = 1.0;
-  } else if (x > 0.01) {
-    E = detail_exp_small(-x);  // inline polynomial exp (relative error ~1e-15)
-    omE = 1.0 - E;
-  } else {
-    omE = -std::expm1(-x);
-    E = 1.0 - omE;
-  }
-  if (A > 0.0) {
-    const double w = sound.omega;
-    const double q = w * te, AD = A / (1.0 + q * q);
-    const double s1 = s0 * tr.cwh + c0 * tr.swh, c1 = c0 * tr.cwh - s0 * tr.swh;
-    const double vs0 = AD * (s0 - q * c0), vs1 = AD * (s1 - q * c1);
-    const double dX = -AD * ((c1 - c0) + q * (s1 - s0)) * tr.inv_omega;
-    const double dv = p.vx[i] - vs0;
-    p.x[i] += dX + dv * te * omE;
-    p.vx[i] = vs1 + dv * E;
-  } else {
-    p.x[i] += p.vx[i] * te * omE;
-    p.vx[i] *= E;
-  }
-  p.y[i] += p.vy[i] * te * omE;
-  p.vy[i] *= E;
-  const double vt = p.acc_z[i] * te;
-  const double dz = p.vz[i] - vt;
-  p.z[i] += vt * h + dz * te * omE;
-  p.vz[i] = vt + dz * E;
-  wrap(p, i);
 }
 
 void Motion::advance_exact(ParticleSet& p, std::size_t i, double t, double h) const {
@@ -171,7 +210,7 @@ void Motion::advance(ParticleSet& p, std::size_t begin, std::size_t end, double 
     const double hs = h / substeps;
     for (int s = 0; s < substeps; ++s) {
       const StepTrig tr = trig(t + s * hs, hs);
-      for (std::size_t i = begin; i < end; ++i) advance_exact(p, i, tr, hs);
+      advance_exact_block(p, begin, end, tr, hs);
     }
     return;
   }

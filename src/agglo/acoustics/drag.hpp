@@ -51,6 +51,8 @@ struct Motion {
   };
   StepTrig trig(double t, double h) const;
   void advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, double h) const;
+  // Same for samples [begin, end), in stages over blocks of samples (instruction-level parallelism).
+  void advance_exact_block(ParticleSet& p, std::size_t begin, std::size_t end, const StepTrig& tr, double h) const;
   void advance_explicit(ParticleSet& p, std::size_t i, double t, double h) const;
   void wrap(ParticleSet& p, std::size_t i) const;
 };

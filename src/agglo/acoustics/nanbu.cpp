@@ -58,13 +58,15 @@ CellBounds cell_bounds(const ParticleSet& p, const std::uint32_t* idx, std::size
     const std::size_t i = idx[a];
     if (p.w[i] <= 0.0) continue;
     d_max = std::max(d_max, p.d[i]);
-    vol_max = std::max(vol_max, p.vol_s[i] + p.vol_l[i]);
     dl_max = std::max(dl_max, p.dl[i]);
     ccd_max = std::max(ccd_max, p.ccd[i]);
     w_max = std::max(w_max, p.w[i]);
     const double ex = p.vx[i] - cb.vref[0], ey = p.vy[i] - cb.vref[1], ez = p.vz[i] - cb.vref[2];
     s2_max = std::max(s2_max, ex * ex + ey * ey + ez * ez);
   }
+  if (k.settings().model == KernelModel::additive)  // vol_max is used by the additive kernel only
+    for (std::size_t a = 0; a < n; ++a)
+      if (p.w[idx[a]] > 0.0) vol_max = std::max(vol_max, p.vol_s[idx[a]] + p.vol_l[idx[a]]);
   cb.d_max = d_max;
   cb.vol_max = vol_max;
   cb.dl_max = dl_max;
