@@ -65,18 +65,20 @@ void Engine::compute_cells(std::size_t begin, std::size_t end) {
 }
 
 bool Engine::state_ok(std::size_t begin, std::size_t end) const {
-  // Branch-free form of check_state's tests: a comparison with NaN is false, and v - v is 0 only
-  // for finite v.
+  // Branch-free form of check_state's tests: v - v is 0 for finite v and NaN otherwise, so the sum
+  // `nf` is 0 iff everything is finite; x < L iff x - L < 0. A false alarm (none is expected) only
+  // costs a call of check_state.
   const Domain& D = s_.motion.domain;
   const double Lx = D.L[0], Ly = D.L[1], Lz = D.L[2];
-  bool ok = true;
+  double nf = 0.0, lo = 0.0, hi = -1.0;
   for (std::size_t i = begin; i < end; ++i) {
     const double x = p_.x[i], y = p_.y[i], z = p_.z[i], vx = p_.vx[i], vy = p_.vy[i], vz = p_.vz[i];
     const double w = p_.w[i], m = p_.mass[i];
-    ok &= (x >= 0.0) & (x < Lx) & (y >= 0.0) & (y < Ly) & (z >= 0.0) & (z < Lz) & (w >= 0.0) &
-          (vx - vx == 0.0) & (vy - vy == 0.0) & (vz - vz == 0.0) & (w - w == 0.0) & (m - m == 0.0);
+    nf += ((x - x) + (y - y)) + ((z - z) + (vx - vx)) + ((vy - vy) + (vz - vz)) + ((w - w) + (m - m));
+    lo = std::min(lo, std::min(std::min(x, y), std::min(z, w)));
+    hi = std::max(hi, std::max(std::max(x - Lx, y - Ly), z - Lz));
   }
-  return ok;
+  return nf == 0.0 && lo >= 0.0 && hi < 0.0;
 }
 
 void Engine::bin() {
@@ -152,7 +154,10 @@ void Engine::step() {
     all_ok = all_ok && ok;
   }
   ++step_;
-  if (!all_ok) check_state();  // throws with the message naming the first bad particle
+  if (!all_ok) {
+    check_state();       // throws with the message naming the first bad particle
+    compute_cells(0, n);  // (not reached unless the fast test gave a false alarm)
+  }
   sort_cells();
   if (n >= kReorderMinSamples && step_ % kReorderEvery == 1) {
     p_.permute(order_);
