@@ -255,6 +255,16 @@ void collide_cell(ParticleSet& p, const std::uint32_t* idx, std::size_t n, std::
       seen = st.collisions;
     }
     const double pe = pcell * static_cast<double>(N);
+    if (pe > 0.25 && pe <= 1.0) {
+      // Majorant met for a full step but most trials pass it: one plain trial per sample.
+      const std::size_t i = idx[a++];
+      if (p.w[i] <= 0.0) continue;
+      ++st.particle_steps;
+      st.max_bound_pn = std::max(st.max_bound_pn, pe);
+      trial(i, ctx.dt, pcell);
+      st.max_subcycles = std::max<std::uint64_t>(st.max_subcycles, 1);
+      continue;
+    }
     if (pe <= 1.0) {
       // Fast path: the cell-wide majorant meets the bound for a full step. A trial (R, candidate
       // ja = int(R N), threshold thr = (ja+1)/N - R) passes the majorant (thr < pcell) with
