@@ -16,6 +16,8 @@ constexpr std::size_t kParallelMinSamples = 4096;
 // Large sets are re-sorted by cell every kReorderEvery steps so that a cell's samples are contiguous.
 constexpr std::size_t kReorderMinSamples = 100000;
 constexpr std::uint64_t kReorderEvery = 64;
+// Samples per work item of the parallel motion pass.
+constexpr std::size_t kMotionChunk = 512;
 }  // namespace
 
 Engine::Engine(EngineSettings s)
@@ -142,15 +144,21 @@ void Engine::step() {
   const bool moving = M.integrator != Integrator::none;
 #pragma omp parallel if (n >= kParallelMinSamples) reduction(&& : all_ok)
   {
-    const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
-    const std::size_t tid = static_cast<std::size_t>(omp_get_thread_num());
-    const std::size_t b = n * tid / nt, e = n * (tid + 1) / nt;
+    // Chunks handed out dynamically: a thread that the OS holds back (shared machine) does not hold
+    // up the others for its whole static share.
     bool ok = true;
-    if (moving) {
-      M.advance(p_, b, e, t0, s_.collision_dt, substeps_);
-      ok = state_ok(b, e);
+    const long nchunks = static_cast<long>((n + kMotionChunk - 1) / kMotionChunk);
+#pragma omp for schedule(dynamic, 1) nowait
+    for (long c = 0; c < nchunks; ++c) {
+      const std::size_t b = static_cast<std::size_t>(c) * kMotionChunk, e = std::min(n, b + kMotionChunk);
+      bool chunk_ok = true;
+      if (moving) {
+        M.advance(p_, b, e, t0, s_.collision_dt, substeps_);
+        chunk_ok = state_ok(b, e);
+      }
+      if (chunk_ok) compute_cells(b, e);  // only for valid positions (otherwise the step throws below)
+      ok = ok && chunk_ok;
     }
-    if (ok) compute_cells(b, e);  // only for valid positions (otherwise the step throws below)
     all_ok = all_ok && ok;
   }
   ++step_;
