@@ -78,7 +78,6 @@ void gradient(int L, const double* a, double* gx, double* gy, double* gz) {
   const int n = ncoef(L);
   std::vector<cplx> v(n), dx(n, 0.0), dy(n, 0.0), dz(n, 0.0);
   to_complex(L, a, v.data());
-  const cplx I(0.0, 1.0);
   for (int l = 1; l <= L; ++l) {
     for (int mu = -l; mu <= l; ++mu) {
       cplx c = v[idx(l, mu)];
@@ -92,13 +91,13 @@ void gradient(int L, const double* a, double* gx, double* gy, double* gz) {
         double f = std::sqrt(double((l - mu) * (l - mu - 1)));
         plus = c * (mu >= 0 ? -f : f);
         dx[idx(l - 1, up)] += 0.5 * plus;
-        dy[idx(l - 1, up)] += plus / (2.0 * I);
+        dy[idx(l - 1, up)] += cplx(0.5 * plus.imag(), -0.5 * plus.real());  // plus / 2i
       }
       if (std::abs(dn) <= l - 1) {
         double f = std::sqrt(double((l + mu) * (l + mu - 1)));
         minus = c * (mu >= 1 ? f : -f);
         dx[idx(l - 1, dn)] += 0.5 * minus;
-        dy[idx(l - 1, dn)] -= minus / (2.0 * I);
+        dy[idx(l - 1, dn)] -= cplx(0.5 * minus.imag(), -0.5 * minus.real());  // minus / 2i
       }
     }
   }
@@ -115,19 +114,18 @@ void rotation_generator(int L, const double* a, double* rx, double* ry, double* 
   const int n = ncoef(L);
   std::vector<cplx> v(n), gx(n, 0.0), gy(n, 0.0), gz(n, 0.0);
   to_complex(L, a, v.data());
-  const cplx I(0.0, 1.0);
   for (int l = 1; l <= L; ++l) {
     for (int mu = -l; mu <= l; ++mu) {
       cplx c = v[idx(l, mu)];
-      gz[idx(l, mu)] += I * double(mu) * c;
+      gz[idx(l, mu)] += cplx(-double(mu) * c.imag(), double(mu) * c.real());  // i mu c
       if (mu + 1 <= l) {
         cplx p = c * std::sqrt(double((l - mu) * (l + mu + 1))) * (mu >= 0 ? -1.0 : 1.0);
-        gx[idx(l, mu + 1)] += 0.5 * I * p;
+        gx[idx(l, mu + 1)] += cplx(-0.5 * p.imag(), 0.5 * p.real());  // i p / 2
         gy[idx(l, mu + 1)] += 0.5 * p;
       }
       if (mu - 1 >= -l) {
         cplx q = c * std::sqrt(double((l + mu) * (l - mu + 1))) * (mu >= 1 ? -1.0 : 1.0);
-        gx[idx(l, mu - 1)] += 0.5 * I * q;
+        gx[idx(l, mu - 1)] += cplx(-0.5 * q.imag(), 0.5 * q.real());  // i q / 2
         gy[idx(l, mu - 1)] -= 0.5 * q;
       }
     }

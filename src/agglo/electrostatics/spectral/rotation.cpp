@@ -73,16 +73,18 @@ void FrameRotation::build(const Vec3& e, int L, int M) {
       }
     }
   }
-  auto ISQ = [&](int j, int m) { return isq_[std::size_t(j) * (sqL_ + 1) + (m < 0 ? -m : m)]; };
-  auto SQ = [&](int j, int m) { return sq_[std::size_t(j) * (sqL_ + 1) + (m < 0 ? -m : m)]; };
   std::vector<std::size_t> doff(L + 2, 0);
   for (int j = 0; j <= L; ++j) doff[j + 1] = doff[j] + std::size_t(j + 1) * (j + 1);
   d_.resize(doff[L + 1]);
-  auto D = [&](int j, int p, int q) -> double& { return d_[doff[j] + p * p + p + q]; };
   const double cb = std::cos(b), ch = std::cos(0.5 * b), sh = std::sin(0.5 * b);
   const double lc = std::log(ch), ls = std::log(sh);
+  const std::size_t S1 = std::size_t(sqL_) + 1;
+  // Three-term recurrence in j for every (p, q); the chains of one p (all q) are independent and
+  // advanced together so that the processor overlaps them. Index of d^j_{pq}: doff[j] + p^2 + p + q.
+  std::vector<double> prev(2 * L + 1), cur(2 * L + 1), c2q(2 * L + 1), icq(2 * L + 1);
   for (int p = 0; p <= L; ++p) {
     const int qm = std::min(p, M_);  // only |q| <= M is needed for frame orders <= M
+    const int nq = 2 * qm + 1;
     for (int q = -qm; q <= qm; ++q) {
       // start: d^p_{p q} = (-1)^(p-q) sqrt((2p)!/((p+q)!(p-q)!)) c^(p+q) s^(p-q)
       double e = 0.5 * (lf_[2 * p] - lf_[p + q] - lf_[p - q]);
@@ -90,63 +92,74 @@ void FrameRotation::build(const Vec3& e, int L, int M) {
       if (p - q > 0) e += (p - q) * ls;
       double v = std::exp(e);
       if ((p - q) & 1) v = -v;
-      D(p, p, q) = v;
-      double prev = 0.0, cur = v;
-      for (int j = p; j < L; ++j) {
-        double next;
-        if (j == 0) {
-          next = cb;  // d^1_00
-        } else {
-          double jj = j;
-          double c1 = (2 * jj + 1) * (jj * (jj + 1) * cb - double(p) * q);
-          double c2 = (jj + 1) * SQ(j, q) * SQ(j, p);
-          double ic0 = ij_[j] * ISQ(j + 1, q) * ISQ(j + 1, p);
-          next = (c1 * cur - c2 * prev) * ic0;
-        }
-        D(j + 1, p, q) = next;
-        prev = cur;
-        cur = next;
+      d_[doff[p] + std::size_t(p * p + p + q)] = v;
+      prev[q + qm] = 0.0;
+      cur[q + qm] = v;
+    }
+    for (int j = p; j < L; ++j) {
+      double* out = &d_[doff[j + 1] + std::size_t(p * p + p - qm)];
+      if (j == 0) {  // p = q = 0: d^1_00
+        out[0] = cb;
+        prev[0] = cur[0];
+        cur[0] = cb;
+        continue;
+      }
+      const double jj = j;
+      const double sjp = sq_[std::size_t(j) * S1 + p], isjp = isq_[std::size_t(j + 1) * S1 + p];
+      const double tj = jj * (jj + 1) * cb;
+      for (int k = 0; k < nq; ++k) {
+        const int aq = std::abs(k - qm);
+        c2q[k] = (jj + 1) * sq_[std::size_t(j) * S1 + aq] * sjp;
+        icq[k] = ij_[j] * isq_[std::size_t(j + 1) * S1 + aq] * isjp;
+      }
+      for (int k = 0; k < nq; ++k) {
+        const double c1 = (2 * jj + 1) * (tj - double(p) * (k - qm));
+        const double next = (c1 * cur[k] - c2q[k] * prev[k]) * icq[k];
+        out[k] = next;
+        prev[k] = cur[k];
+        cur[k] = next;
       }
     }
   }
-  // d^j_{m' m} for any |m'|, |m| <= j from the stored region m' >= |m|:
-  // d_{m'm} = (-1)^(m-m') d_{m m'} = d_{-m,-m'}.
-  auto d = [&](int j, int mp, int m) -> double {
-    auto sgn = [](int k) { return (k & 1) ? -1.0 : 1.0; };
-    if (mp >= std::abs(m)) return D(j, mp, m);
-    if (-mp >= std::abs(m)) return sgn(-mp + m) * D(j, -mp, -m);  // d_{mp,m} = d_{-m,-mp} = (-1)^(-mp+m) d_{-mp,-m}
-    if (m >= 0) return sgn(m - mp) * D(j, m, mp);                  // |m| > |mp|
-    return D(j, -m, -mp);                                          // d_{mp,m} = d_{-m,-mp}
-  };
   // Real blocks. G_{m' m} = coefficient of Z_{m'} in Z_m(R^{-1} x), R = R_y(b), orthonormal real Z;
   // in our basis (Y = Z * s_m * const, s_0 = 1, s_m = 1/sqrt2) the frame map is
-  // c'_{m'} = sum_m G_{m m'} (s_m / s_{m'}) c_m.
+  // c'_{m'} = sum_m G_{m m'} (s_m / s_{m'}) c_m. Needed: d^l_{m, +-m'} for m' <= min(l, M), read
+  // from the stored region (first index >= |second|) with d_{m m'} = (-1)^(m'-m) d_{m' m} and
+  // d_{m,-m'} = d_{m',-m} (both for m < m').
   off_.assign(L + 2, 0);
   for (int l = 0; l <= L; ++l) {
     int ml = std::min(l, M_);
     off_[l + 1] = off_[l] + (ml + 1) * (l + 1) + ml * l;
   }
   blk_.assign(off_[L + 1], 0.0);
-  const double r2 = std::sqrt(2.0);
+  const double r2 = std::sqrt(2.0), ir2 = 1.0 / r2;
   auto sgn = [](int k) { return (k & 1) ? -1.0 : 1.0; };
   for (int l = 0; l <= L; ++l) {
     double* C = &blk_[off_[l]];
     const int ml = std::min(l, M_);
     double* S = C + (ml + 1) * (l + 1);
-    auto Gc = [&](int mp, int m) -> double {  // cos block, m', m >= 0
-      if (m > 0 && mp > 0) return sgn(m + mp) * d(l, mp, m) + sgn(mp) * d(l, mp, -m);
-      if (m > 0) return r2 * sgn(m) * d(l, 0, m);
-      if (mp > 0) return r2 * sgn(mp) * d(l, mp, 0);
-      return d(l, 0, 0);
-    };
-    auto Gs = [&](int mp, int m) -> double {  // sin block, m', m >= 1
-      return sgn(m + mp) * d(l, mp, m) - sgn(mp) * d(l, mp, -m);
-    };
-    auto s = [&](int m) { return m == 0 ? 1.0 : 1.0 / r2; };
-    for (int mp = 0; mp <= ml; ++mp)
-      for (int m = 0; m <= l; ++m) C[mp * (l + 1) + m] = Gc(m, mp) * s(m) / s(mp);
-    for (int mp = 1; mp <= ml; ++mp)
-      for (int m = 1; m <= l; ++m) S[(mp - 1) * l + (m - 1)] = Gs(m, mp);
+    const double* Dl = &d_[doff[l]];
+    auto at = [Dl](int p, int q) { return Dl[p * p + p + q]; };
+    // m' = 0 row: G(m, 0) s_m.
+    C[0] = at(0, 0);
+    for (int m = 1; m <= l; ++m) C[m] = r2 * sgn(m) * at(m, 0) * ir2;
+    for (int mp = 1; mp <= ml; ++mp) {
+      double* Cr = C + mp * (l + 1);
+      double* Sr = S + (mp - 1) * l;
+      Cr[0] = r2 * sgn(mp) * (sgn(mp) * at(mp, 0)) / ir2;
+      for (int m = 1; m <= l; ++m) {
+        double dpos, dneg;  // d^l_{m, m'}, d^l_{m, -m'}
+        if (m >= mp) {
+          dpos = at(m, mp);
+          dneg = at(m, -mp);
+        } else {
+          dpos = sgn(mp - m) * at(mp, m);
+          dneg = at(mp, -m);
+        }
+        Cr[m] = (sgn(m + mp) * dpos + sgn(m) * dneg) * ir2 / ir2;
+        Sr[m - 1] = sgn(m + mp) * dpos - sgn(m) * dneg;
+      }
+    }
   }
 }
 
