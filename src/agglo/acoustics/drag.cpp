@@ -5,6 +5,49 @@
 
 namespace agglo::acoustics {
 
+namespace {
+// First-order correction, in k xi, to the frozen-phase step (the acoustic or Stokes drift).
+// Over a step the true forcing is A sin(psi(s) - k xi(s)) ~ A sin psi(s) - A k xi(s) cos psi(s),
+// psi(s) = psi0 + w s, xi(s) = x(s) - x(0) from the zeroth-order (frozen-phase) solution:
+//   xi = X(s) - X(0) + dv te (1 - E(s)),  X = -(A/(w D)) (cos psi + q sin psi),  E = exp(-s/te).
+// The extra forcing f1 = -A k xi cos psi splits into
+//   G (1 + cos 2psi + q sin 2psi) + H cos psi + K E(s) cos psi,
+//   G = A^2 k/(2 w D), H = A k (X(0) - dv te), K = A k dv te,
+// and te v1' + v1 = f1, v1(0) = 0 is solved in closed form for each part. Adds the correction to
+// the end-of-step velocity (dvx) and displacement (dx). q = w te, D = 1 + q^2.
+inline void drift_correction(double A, double k, double w, double iw, double te, double iD, double h, double E,
+                             double omE, double s0, double c0, double s1, double c1, double dv, double& dx,
+                             double& dvx) {
+  // iw = 1/w, iD = 1/D
+  const double q = w * te;
+  const double G = 0.5 * A * A * k * iw * iD;
+  const double X0 = -(A * iw * iD) * (c0 + q * s0);
+  const double teomE = te * omE;
+  // constant part G
+  double v1 = G * omE;
+  double x1 = G * (h - teomE);
+  // G (cos 2psi + q sin 2psi): periodic response alpha cos 2psi + beta sin 2psi
+  const double GD2 = G / (1.0 + 4.0 * q * q);
+  const double al = GD2 * (1.0 - 2.0 * q * q), be = 3.0 * q * GD2;
+  const double C20 = c0 * c0 - s0 * s0, S20 = 2.0 * s0 * c0, C21 = c1 * c1 - s1 * s1, S21 = 2.0 * s1 * c1;
+  const double P20 = al * C20 + be * S20;
+  v1 += (al * C21 + be * S21) - P20 * E;
+  x1 += (al * (S21 - S20) - be * (C21 - C20)) * (0.5 * iw) - P20 * teomE;
+  // H cos psi
+  const double HD = A * k * (X0 - dv * te) * iD;  // H / D
+  const double ab = HD, bb = HD * q;
+  const double P10 = ab * c0 + bb * s0;
+  v1 += (ab * c1 + bb * s1) - P10 * E;
+  x1 += (ab * (s1 - s0) - bb * (c1 - c0)) * iw - P10 * teomE;
+  // K E(s) cos psi: v1 = (K/q) E(s) (sin psi(s) - sin psi0), K/q = A k dv / w
+  const double Kq = A * k * dv * iw;
+  v1 += Kq * E * (s1 - s0);
+  x1 += Kq * te * ((s0 - E * s1 - q * (E * c1 - c0)) * iD - s0 * omE);
+  dx += x1;
+  dvx += v1;
+}
+}  // namespace
+
 double Motion::effective_tau(const ParticleSet& p, std::size_t i, double t) const {
   if (!inertia_correction) return p.tau[i];
   const double ug = sound.u_amp * std::sin(sound.omega * t - sound.wavenumber * p.x[i]);
@@ -140,13 +183,15 @@ void Motion::advance_exact_block(ParticleSet& p, std::size_t begin, std::size_t 
       const double te = TE[a], E = EE[a], omE = OME[a], s0 = S0[a], c0 = C0[a];
       if (A > 0.0) {
         const double w = sound.omega;
-        const double q = w * te, AD = A / (1.0 + q * q);
+        const double q = w * te, iD = 1.0 / (1.0 + q * q), AD = A * iD;
         const double s1 = s0 * tr.cwh + c0 * tr.swh, c1 = c0 * tr.cwh - s0 * tr.swh;
         const double vs0 = AD * (s0 - q * c0), vs1 = AD * (s1 - q * c1);
         const double dX = -AD * ((c1 - c0) + q * (s1 - s0)) * tr.inv_omega;
         const double dv = p.vx[i] - vs0;
-        p.x[i] += dX + dv * te * omE;
-        p.vx[i] = vs1 + dv * E;
+        double dx = dX + dv * te * omE, vx = vs1 + dv * E;
+        drift_correction(A, k, w, tr.inv_omega, te, iD, h, E, omE, s0, c0, s1, c1, dv, dx, vx);
+        p.x[i] += dx;
+        p.vx[i] = vx;
       } else {
         p.x[i] += p.vx[i] * te * omE;
         p.vx[i] *= E;
@@ -176,8 +221,10 @@ void Motion::advance_exact(ParticleSet& p, std::size_t i, double t, double h) co
     const double vs0 = A * (s0 - q * c0) / D, vs1 = A * (s1 - q * c1) / D;
     const double X0 = -A * (c0 + q * s0) / (w * D), X1 = -A * (c1 + q * s1) / (w * D);
     const double dv = p.vx[i] - vs0;
-    p.x[i] += (X1 - X0) + dv * te * omE;
-    p.vx[i] = vs1 + dv * E;
+    double dx = (X1 - X0) + dv * te * omE, vx = vs1 + dv * E;
+    drift_correction(A, sound.wavenumber, w, 1.0 / w, te, 1.0 / D, h, E, omE, s0, c0, s1, c1, dv, dx, vx);
+    p.x[i] += dx;
+    p.vx[i] = vx;
   } else {
     p.x[i] += p.vx[i] * te * omE;
     p.vx[i] *= E;

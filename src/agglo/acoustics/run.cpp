@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 
@@ -106,6 +107,21 @@ nlohmann::json run_acoustic(Config& cfg, const OutputDir& out, const RunOptions&
                      S.t_end, S.collision_dt, S.motion_dt, eng.motion_substeps(),
                      M.integrator == Integrator::exact ? "exact" : M.integrator == Integrator::none ? "none" : "explicit",
                      kernel_model_name(S.kernel.model));
+  if (M.integrator == Integrator::exact && M.sound.u_amp > 0.0 && M.inertia_correction) {
+    // C_I is held piecewise constant over a motion step. With an odd or fractional-but-locked number
+    // of steps per acoustic period the sampled phases are not symmetric under psi -> psi + pi and a
+    // droplet with C_I > 1 picks up a spurious mean drift (docs/acoustics.md sec. 3).
+    const double per = 1.0 / (M.sound.frequency * S.motion_dt);
+    const double even = 2.0 * std::round(0.5 * per);
+    if (per < 40.0 && std::abs(per - even) > 1e-6 * per) {
+      const std::string w = fmt::format(
+          "warning: motion_dt = {:g} s gives {:.4g} steps per acoustic period; use an even whole number "
+          "(e.g. motion_dt = {:g} s) to avoid a spurious drift of droplets with C_I > 1\n",
+          S.motion_dt, per, 1.0 / (M.sound.frequency * std::max(2.0, even)));
+      log << w;
+      std::fputs(w.c_str(), stderr);
+    }
+  }
   for (std::size_t k = 0; k < eng.sampled().size(); ++k) {
     const auto& sp = eng.sampled()[k];
     log << fmt::format("population {} '{}': {} samples, requested N V = {:.6g}, sum of integer weights = {:.6g} "
