@@ -10,6 +10,7 @@
 #include "agglo/core/error.hpp"
 #include "agglo/electrostatics/bem/gmres.hpp"
 #include "agglo/electrostatics/bem/patches.hpp"
+#include "agglo/electrostatics/bem/sphere_triangulation.hpp"
 #include "agglo/electrostatics/fmm/direct.hpp"
 #include "agglo/electrostatics/fmm/fmm.hpp"
 
@@ -26,6 +27,20 @@ class BemSolver final : public Solver {
   std::string name() const override { return "bem"; }
   Solution solve(const Problem& p) override;
   std::vector<SurfaceSample> surface() const override { return surface_; }
+  // The convex hull of the patch centres of each sphere (cached per patch count), indices offset
+  // to surface(): body b's patch k is sample b * n + k.
+  std::vector<std::array<int, 3>> surface_triangles() const override {
+    const std::size_t np = unit_.size();
+    if (surface_.empty() || np < 4 || surface_.size() % np != 0) return {};
+    const auto& sphere = bem::fibonacci_sphere_triangles(static_cast<int>(np));
+    std::vector<std::array<int, 3>> tri;
+    tri.reserve(surface_.size() / np * sphere.size());
+    for (std::size_t b = 0; b < surface_.size() / np; ++b) {
+      const int off = static_cast<int>(b * np);
+      for (const auto& t : sphere) tri.push_back({t[0] + off, t[1] + off, t[2] + off});
+    }
+    return tri;
+  }
 
  private:
   SolverOptions opt_;
