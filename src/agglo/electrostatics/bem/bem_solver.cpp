@@ -8,11 +8,11 @@
 
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
-#include "agglo/electrostatics/bem/gmres.hpp"
 #include "agglo/electrostatics/bem/patches.hpp"
 #include "agglo/electrostatics/bem/sphere_triangulation.hpp"
 #include "agglo/electrostatics/fmm/direct.hpp"
 #include "agglo/electrostatics/fmm/fmm.hpp"
+#include "agglo/electrostatics/gmres.hpp"
 
 namespace agglo::es {
 
@@ -184,14 +184,16 @@ Solution BemSolver::solve(const Problem& prob) {
     project(u);
   }
   std::vector<double> pv(N);
-  bem::LinearOp op = [&](std::span<const double> in, std::span<double> out) {
+  LinearOperator op = [&](std::span<const double> in, std::span<double> out) {
     std::copy(in.begin(), in.end(), pv.begin());
     project(pv);
     apply_A(pv, out);
     project(out);
   };
   const int restart = std::min(opt_.max_iterations, 100);
-  const bem::GmresResult gr = bem::gmres(op, rhs, u, area, opt_.tolerance, opt_.max_iterations, restart);
+  // Area-weighted inner product; explicit true residual at every restart and at the end.
+  const GmresOptions go{opt_.tolerance, opt_.max_iterations, restart, true};
+  const GmresResult gr = gmres(op, rhs, u, area, go);
   if (!gr.converged)
     throw NumericalError("bem: GMRES did not converge within " + std::to_string(opt_.max_iterations) +
                          " iterations (relative residual " + std::to_string(gr.residual) + " > tolerance " +
