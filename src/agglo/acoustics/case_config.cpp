@@ -23,6 +23,7 @@ PopulationSpec parse_population(const ConfigSection& s) {
   p.number_concentration = s.number("number_concentration", std::nullopt, Range::nonnegative("1/m^3"));
   p.density = s.number("density", p.phase == Phase::solid ? 2500.0 : 1000.0, Range::positive("kg/m^3"));
   p.samples = s.integer("samples", std::nullopt, 1, 100000000);
+  p.conserving_rounding = s.choice("weight_rounding", "nearest", {"nearest", "conserving"}) == "conserving";
   if (dist == "lognormal") {
     p.distribution = Distribution::lognormal;
     p.geometric_mean_diameter = s.number("geometric_mean_diameter", std::nullopt, Range::positive("m"));

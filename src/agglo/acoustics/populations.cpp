@@ -81,11 +81,19 @@ SampledPopulation sample_population(const PopulationSpec& s, int index, const Do
   SampledPopulation out;
   out.first = p.size();
   out.real_number = Ntot;
+  double cum = 0.0, cum_rounded = 0.0;  // running real number and its rounding (conserving rounding)
   for (std::size_t m = 0; m < diam.size(); ++m) {
     CounterRng rng(seed, 0x9000000000ULL + static_cast<std::uint64_t>(index), m);
     const double x = rng.uniform() * dom.L[0], y = rng.uniform() * dom.L[1], z = rng.uniform() * dom.L[2];
     const double vol = pi * diam[m] * diam[m] * diam[m] / 6.0;
-    const double w = std::max(1.0, std::round(num[m]));
+    double w;
+    if (s.conserving_rounding) {
+      cum += num[m];
+      w = std::max(1.0, std::round(cum) - cum_rounded);
+      cum_rounded += w;
+    } else {
+      w = std::max(1.0, std::round(num[m]));
+    }
     const bool solid = s.phase == Phase::solid;
     const std::size_t i = p.add(x, y, z, solid ? vol : 0.0, solid ? 0.0 : vol, s.density * vol, w, index, gas, sound);
     p.id[i] = i;

@@ -128,6 +128,15 @@ nlohmann::json run_acoustic(Config& cfg, const OutputDir& out, const RunOptions&
                        "(rel. diff {:.3g})\n",
                        k, S.populations[k].name, sp.count, sp.real_number, sp.weight_sum,
                        sp.real_number > 0 ? sp.weight_sum / sp.real_number - 1.0 : 0.0);
+    if (sp.real_number > 0 && std::abs(sp.weight_sum / sp.real_number - 1.0) > 0.01) {
+      const std::string w = fmt::format(
+          "warning: population {} '{}': the integer sample weights represent {:.4g} particles instead of {:.4g} "
+          "({:+.2f} %); set weight_rounding = \"conserving\" or choose samples so that N V / samples is near a "
+          "whole number\n",
+          k, S.populations[k].name, sp.weight_sum, sp.real_number, 100.0 * (sp.weight_sum / sp.real_number - 1.0));
+      log << w;
+      std::fputs(w.c_str(), stderr);
+    }
   }
   log << fmt::format("nanbu guard at start: max N*P_bound(dt_c) = {:.4g} ({})\n", eng.max_guard_pn(),
                      eng.max_guard_pn() > 1.0 ? "sub-cycling needed" : "bound met without sub-cycling");
