@@ -10,6 +10,7 @@ $A --help >/dev/null || fail "--help"
 $A --version | grep -q "agglo" || fail "--version"
 $A collide --help | grep -q -- "--set" || fail "collide --help"
 $A vcrit --help | grep -q -- "--out" || fail "vcrit --help"
+$A breakup --help | grep -q -- "--out" || fail "breakup --help"
 
 bad() {  # bad <expected fragment> <toml text> [extra args]
   local frag=$1 text=$2; shift 2
@@ -31,6 +32,9 @@ bad "projectile.speed' = \"fast\"" $'[projectile]\nspeed = "fast"'
 bad "contact.break_rule" $'[contact]\nbreak_rule = "never"'
 bad "material.restitution' = 0" '' --set material.restitution=0
 bad "--set" '' --set novalue
+bad "breakup.samples' = 0" $'[breakup]\nsamples = 0'
+bad "breakup.offset_spread' = -1" $'[breakup]\noffset_spread = -1.0'
+bad "breakup.speeds' = []" $'[breakup]\nspeeds = []'
 
 # A good, short run writes the documented files.
 $A -q collide "$SRC/cases/seed000_neutral_tetrahedron.toml" --out "$T/good" --set time.after_contact=2e-4 \
@@ -45,4 +49,13 @@ ls "$T/good" | grep -q 'tmp-' && fail "temporary files left behind"
 # The resolved config reproduces the run.
 $A -q collide "$T/good/config.resolved.toml" --out "$T/again" > /dev/null 2>&1 || fail "resolved config does not run"
 cmp -s <(grep -v wall "$T/good/result.json") <(grep -v wall "$T/again/result.json") || fail "rerun differs"
+
+# A small break-up ensemble writes its table and JSON.
+$A -q --no-plots breakup "$SRC/cases/seed000_neutral_tetrahedron.toml" --out "$T/bu" \
+  --set 'breakup.speeds=[0.12,0.3]' --set breakup.samples=2 > /dev/null 2>&1 || fail "breakup run failed"
+for f in breakup.csv breakup.json config.resolved.toml run.json; do
+  [ -s "$T/bu/$f" ] || fail "breakup: missing $f"
+done
+[ "$(wc -l < "$T/bu/breakup.csv")" -eq 3 ] || fail "breakup.csv must have a header and 2 rows"
+grep -q '^0.3,2,2,' "$T/bu/breakup.csv" || fail "breakup: 0.3 m/s must break for both offsets"
 echo "ok"

@@ -90,6 +90,15 @@ CollisionCase parse_collision_case(Config& cfg) {
   c.vcrit.scan_points = static_cast<int>(vc.integer("scan_points", 12, 3, 1000));
   c.vcrit.tolerance = vc.number("tolerance", 5e-4, Range::positive("m/s"));
 
+  auto bu = root.section("breakup");
+  std::vector<double> grid(c.vcrit.scan_points);
+  for (int k = 0; k < c.vcrit.scan_points; ++k)
+    grid[k] = c.vcrit.v_min + (c.vcrit.v_max - c.vcrit.v_min) * k / (c.vcrit.scan_points - 1);
+  c.breakup.speeds = bu.numbers("speeds", grid, Range::positive("m/s"));
+  if (c.breakup.speeds.empty()) bu.fail_value("speeds", "needs at least one speed");
+  c.breakup.samples = static_cast<int>(bu.integer("samples", 16, 1, 100000));
+  c.breakup.offset_spread = bu.number("offset_spread", 0.05, Range::nonnegative("r_p"));
+
   bool any_charge = a.charged && a.charge_density > 0.0;
   for (const auto& lp : a.particles) any_charge = any_charge || lp.charge != 0.0;
   any_charge = any_charge || p.charge != 0.0;

@@ -62,6 +62,14 @@ struct VcritSpec {
   double tolerance = 5e-4;   // bisection tolerance [m/s]
 };
 
+// Break-up probability (agglo breakup): at each speed, `samples` runs whose projectile offset is
+// spread evenly over offset_radii +- offset_spread (stratified, no random numbers).
+struct BreakupSpec {
+  std::vector<double> speeds;     // [m/s]; default: the vcrit scan grid (v_min .. v_max, scan_points)
+  int samples = 16;               // runs per speed
+  double offset_spread = 0.05;    // half-width of the offset range [r_p]
+};
+
 struct CollisionCase {
   std::string name = "collision";
   dem::DemParams dem;
@@ -70,6 +78,7 @@ struct CollisionCase {
   TimeSpec time;
   OutputSpec output;
   VcritSpec vcrit;
+  BreakupSpec breakup;
   bool electrostatics = false;          // derived: any charge or field present
   double medium_permittivity = 1.0;     // kappa_0
   CouplingSettings coupling;            // [electrostatics]

@@ -47,4 +47,26 @@ nlohmann::json vcrit_json(const VcritResult& r) {
           {"warnings", r.warnings}};
 }
 
+void write_breakup(const OutputDir& out, const BreakupResult& r) {
+  out.write("breakup.csv", [&](std::ostream& os) {
+    os << "speed_m_s,runs,broken,undecided,p_break,ci95_lo,ci95_hi\n";
+    for (const auto& p : r.points)
+      os << fmt::format("{:.9g},{},{},{},{:.6g},{:.6g},{:.6g}\n", p.speed, p.runs, p.broken, p.undecided, p.p,
+                        p.ci_lo, p.ci_hi);
+  });
+  auto level = [](double v) { return v < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(v); };
+  nlohmann::json pts = nlohmann::json::array(), runs = nlohmann::json::array();
+  for (const auto& p : r.points)
+    pts.push_back({{"speed", p.speed}, {"runs", p.runs}, {"broken", p.broken}, {"undecided", p.undecided},
+                   {"p_break", p.p}, {"ci95", {p.ci_lo, p.ci_hi}}});
+  const std::size_t m = r.offsets.size();
+  for (std::size_t j = 0; j < r.outcomes.size(); ++j) {
+    const auto& o = r.outcomes[j];
+    runs.push_back({{"v", o.speed}, {"offset_radii", r.offsets[j % m]}, {"broken", o.broken},
+                    {"undecided", o.undecided}, {"contact", o.contact}});
+  }
+  out.write_json("breakup.json", {{"v10", level(r.v10)}, {"v50", level(r.v50)}, {"v90", level(r.v90)},
+                                  {"offsets_radii", r.offsets}, {"points", pts}, {"runs", runs}});
+}
+
 }  // namespace agglo::collision

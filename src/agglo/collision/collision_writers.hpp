@@ -1,7 +1,8 @@
 #pragma once
-// Observers of the collision experiment: CSV time series, VTK snapshots, result and vcrit JSON.
+// Observers of the collision experiment: CSV time series, VTK snapshots, result, vcrit and breakup output.
 #include <nlohmann/json.hpp>
 
+#include "agglo/collision/breakup.hpp"
 #include "agglo/collision/experiment.hpp"
 #include "agglo/collision/vcrit.hpp"
 #include "agglo/core/output.hpp"
@@ -15,5 +16,8 @@ void write_timeseries(const OutputDir& out, const Recorder& rec);
 void write_snapshots(const OutputDir& out, const Recorder& rec);
 nlohmann::json outcome_json(const CollisionOutcome& o);
 nlohmann::json vcrit_json(const VcritResult& r);
+// breakup.csv: speed_m_s,runs,broken,undecided,p_break,ci95_lo,ci95_hi; breakup.json: the same plus
+// v10/v50/v90 (null if not reached), the offsets and every run's outcome.
+void write_breakup(const OutputDir& out, const BreakupResult& r);
 
 }  // namespace agglo::collision

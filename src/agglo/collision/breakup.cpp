@@ -1,0 +1,80 @@
+#include "agglo/collision/breakup.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+
+namespace agglo::collision {
+
+void wilson_interval(int k, int n, double& lo, double& hi) {
+  if (n <= 0) {
+    lo = 0.0;
+    hi = 1.0;
+    return;
+  }
+  const double z = 1.96, p = static_cast<double>(k) / n, z2n = z * z / n;
+  const double centre = (p + 0.5 * z2n) / (1.0 + z2n);
+  const double half = z * std::sqrt(p * (1.0 - p) / n + 0.25 * z2n / n) / (1.0 + z2n);
+  lo = std::max(0.0, centre - half);
+  hi = std::min(1.0, centre + half);
+}
+
+double first_crossing(const std::vector<BreakupPoint>& pts, double level) {
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (pts[i].p < level) continue;
+    if (i == 0) return pts[0].speed;
+    const auto& a = pts[i - 1];
+    const auto& b = pts[i];
+    return a.speed + (b.speed - a.speed) * (level - a.p) / (b.p - a.p);
+  }
+  return -1.0;
+}
+
+BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, const OffsetRunFunction& run,
+                                  const std::function<void(double)>& progress) {
+  BreakupResult res;
+  std::vector<double> speeds = spec.speeds;
+  std::sort(speeds.begin(), speeds.end());
+  const int m = spec.samples;
+  for (int k = 0; k < m; ++k)
+    res.offsets.push_back(m == 1 ? offset_radii : offset_radii + spec.offset_spread * (2.0 * (k + 0.5) / m - 1.0));
+  const std::int64_t njobs = static_cast<std::int64_t>(speeds.size()) * m;
+  res.outcomes.assign(static_cast<std::size_t>(njobs), CollisionOutcome{});
+  std::vector<std::exception_ptr> err(static_cast<std::size_t>(njobs));
+  std::atomic<std::int64_t> done{0};
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::int64_t j = 0; j < njobs; ++j) {
+    try {
+      res.outcomes[j] = run(speeds[j / m], res.offsets[j % m]);
+    } catch (...) {
+      err[j] = std::current_exception();
+    }
+    const std::int64_t d = ++done;
+    if (progress) {
+#pragma omp critical(agglo_breakup_progress)
+      progress(static_cast<double>(d) / static_cast<double>(njobs));
+    }
+  }
+  for (auto& e : err)
+    if (e) std::rethrow_exception(e);
+  for (std::size_t s = 0; s < speeds.size(); ++s) {
+    BreakupPoint pt;
+    pt.speed = speeds[s];
+    for (int k = 0; k < m; ++k) {
+      const auto& o = res.outcomes[s * m + k];
+      ++pt.runs;
+      pt.broken += o.broken ? 1 : 0;
+      pt.undecided += o.undecided ? 1 : 0;
+    }
+    pt.p = static_cast<double>(pt.broken) / pt.runs;
+    wilson_interval(pt.broken, pt.runs, pt.ci_lo, pt.ci_hi);
+    res.points.push_back(pt);
+  }
+  res.v10 = first_crossing(res.points, 0.1);
+  res.v50 = first_crossing(res.points, 0.5);
+  res.v90 = first_crossing(res.points, 0.9);
+  return res;
+}
+
+}  // namespace agglo::collision

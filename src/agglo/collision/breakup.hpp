@@ -1,0 +1,42 @@
+#pragma once
+// Break-up probability of an agglomerate vs projectile speed. Near the threshold the outcome of one
+// collision is non-monotonic in the speed (fragments recaptured, chaotic contact sequences), so the
+// single-trajectory v_crit of vcrit.hpp depends on which speeds a scan happens to test. This
+// observable runs, at each speed, M collisions whose lateral impact offset is spread evenly over
+// offset_radii +- offset_spread (stratified: offset_k = offset + spread (2(k + 1/2)/M - 1), no random
+// numbers), and reports the fraction that breaks with its Wilson 95 % interval, and the speeds at which
+// the fraction first reaches 0.1, 0.5 and 0.9 (linear interpolation between tested speeds).
+#include <functional>
+#include <vector>
+
+#include "agglo/collision/experiment.hpp"
+
+namespace agglo::collision {
+
+struct BreakupPoint {
+  double speed = 0.0;                      // [m/s]
+  int runs = 0, broken = 0, undecided = 0;  // undecided outcomes count as not broken (as in vcrit)
+  double p = 0.0;                          // broken / runs
+  double ci_lo = 0.0, ci_hi = 0.0;         // Wilson score interval, 95 %
+};
+
+struct BreakupResult {
+  std::vector<BreakupPoint> points;        // sorted by speed
+  std::vector<double> offsets;             // offsets used at every speed [r_p]
+  double v10 = -1.0, v50 = -1.0, v90 = -1.0;  // first speed where p reaches 0.1 / 0.5 / 0.9; -1 if never
+  std::vector<CollisionOutcome> outcomes;  // every run, speed-major, offset-minor
+};
+
+// Runs the outcomes with `run(speed, offset_radii)`, concurrently from several threads (must be
+// thread-safe); results do not depend on the thread count.
+using OffsetRunFunction = std::function<CollisionOutcome(double speed, double offset_radii)>;
+BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, const OffsetRunFunction& run,
+                                  const std::function<void(double)>& progress = {});
+
+// Wilson score interval for k successes in n trials (z = 1.96).
+void wilson_interval(int k, int n, double& lo, double& hi);
+
+// First speed at which the piecewise-linear p(v) reaches `level` (-1 if it never does).
+double first_crossing(const std::vector<BreakupPoint>& pts, double level);
+
+}  // namespace agglo::collision
