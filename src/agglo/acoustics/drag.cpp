@@ -46,6 +46,15 @@ inline void drift_correction(double A, double k, double w, double iw, double te,
   dx += x1;
   dvx += v1;
 }
+// Closed-form step of y (no forcing) and z (settling to the terminal velocity vt) over h, shared by
+// the block and the one-sample exact steps. E = exp(-h/te), omE = 1 - E.
+inline void transverse_step(ParticleSet& p, std::size_t i, double te, double h, double E, double omE, double vt) {
+  p.y[i] += p.vy[i] * te * omE;
+  p.vy[i] *= E;
+  const double dz = p.vz[i] - vt;
+  p.z[i] += vt * h + dz * te * omE;
+  p.vz[i] = vt + dz * E;
+}
 }  // namespace
 
 double Motion::effective_tau(const ParticleSet& p, std::size_t i, double t) const {
@@ -196,12 +205,7 @@ void Motion::advance_exact_block(ParticleSet& p, std::size_t begin, std::size_t 
         p.x[i] += p.vx[i] * te * omE;
         p.vx[i] *= E;
       }
-      p.y[i] += p.vy[i] * te * omE;
-      p.vy[i] *= E;
-      const double vt = p.acc_z[i] * te;
-      const double dz = p.vz[i] - vt;
-      p.z[i] += vt * h + dz * te * omE;
-      p.vz[i] = vt + dz * E;
+      transverse_step(p, i, te, h, E, omE, p.acc_z[i] * te);
       wrap(p, i);
     }
   }
@@ -229,12 +233,7 @@ void Motion::advance_exact(ParticleSet& p, std::size_t i, double t, double h) co
     p.x[i] += p.vx[i] * te * omE;
     p.vx[i] *= E;
   }
-  p.y[i] += p.vy[i] * te * omE;
-  p.vy[i] *= E;
-  const double vt = -gas.gravity * (p.rho[i] - gas.density) / p.rho[i] * te;  // terminal velocity
-  const double dz = p.vz[i] - vt;
-  p.z[i] += vt * h + dz * te * omE;
-  p.vz[i] = vt + dz * E;
+  transverse_step(p, i, te, h, E, omE, -gas.gravity * (p.rho[i] - gas.density) / p.rho[i] * te);
   wrap(p, i);
 }
 
