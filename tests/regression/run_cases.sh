@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Runs every shipped case (cases/*.toml) with the command(s) it is meant for, shortened where the
+# case is long, on 2 threads and without plots, into OUTROOT/<case>-<command>/.
+# Usage: run_cases.sh AGGLO_EXECUTABLE SOURCE_DIR OUTROOT   (case paths are given as cases/<name>.toml
+# relative to SOURCE_DIR, so that run.json does not depend on where the checkout lives)
+# Used by the output regression test (check.sh) and by scripts/regression_compare.sh, which runs it
+# with the executable of an older commit so that outputs can be compared on one machine.
+set -u
+A=$(realpath "$1"); O=$(realpath -m "$3"); cd "$2" || exit 2; C=cases
+mkdir -p "$O"
+status=0
+run() {  # run <command> <case stem> [args...]
+  local t0=$SECONDS
+  local cmd=$1 stem=$2; shift 2
+  local dir="$O/$stem-$cmd"
+  rm -rf "$dir"
+  if ! "$A" -q --no-plots "$cmd" "$C/$stem.toml" --out "$dir" --threads 2 "$@" >"$O/$stem-$cmd.stdout" 2>"$O/$stem-$cmd.stderr"; then
+    echo "run_cases: $cmd $stem failed: $(head -c 300 "$O/$stem-$cmd.stderr")" >&2
+    status=1
+  fi
+  rm -f "$O/$stem-$cmd.stdout" "$O/$stem-$cmd.stderr"
+  [ -n "${VERBOSE:-}" ] && echo "$cmd $stem $((SECONDS - t0)) s" >&2
+}
+SHORT_DEM=(--set time.after_contact=2e-4 --set output.snapshot_interval=5e-5)
+SHORT_CHARGED=(--set time.after_contact=4e-5 --set output.snapshot_interval=2e-5 --set projectile.gap_radii=0.3)
+for c in "$C"/seed000_neutral_*.toml "$C"/seed000_charged_*_k1.toml; do
+  run collide "$(basename "$c" .toml)" "${SHORT_DEM[@]}"
+done
+for c in "$C"/seed000_charged_*_k2p5.toml "$C"/seed000_charged_*_k15.toml; do
+  run collide "$(basename "$c" .toml)" "${SHORT_CHARGED[@]}"
+done
+VC=(--set vcrit.scan_points=4 --set vcrit.v_min=0.05 --set vcrit.v_max=0.8 --set vcrit.tolerance=0.03)
+run vcrit seed000_neutral_tetrahedron "${SHORT_DEM[@]}" "${VC[@]}"
+run vcrit seed000_charged_tetrahedron_k1 "${SHORT_DEM[@]}" "${VC[@]}"
+BU=(--set 'breakup.speeds=[0.12,0.4]' --set breakup.samples=2)
+run breakup seed000_neutral_square "${SHORT_DEM[@]}" "${BU[@]}"
+run breakup seed000_charged_square_k1 "${SHORT_DEM[@]}" "${BU[@]}"
+for c in "$C"/electrostatics_*.toml; do
+  run electrostatics "$(basename "$c" .toml)"
+done
+run electrostatics electrostatics_tetrahedron --set electrostatics.solver=bem --set electrostatics.patches_per_sphere=200
+mv "$O/electrostatics_tetrahedron-electrostatics" "$O/electrostatics_tetrahedron_bem-electrostatics" 2>/dev/null
+run electrostatics electrostatics_tetrahedron
+for c in "$C"/seed002_*.toml; do
+  run acoustic "$(basename "$c" .toml)" --set time.end=0.02 --set "output.snapshot_times=[0.0,0.01]" --set "output.psd_times=[0.0,0.02]"
+done
+run sweep seed002_baseline --param population.1.diameter --values 10e-6,30e-6 --set time.end=0.01 --set "output.snapshot_times=[0.0]" --set "output.psd_times=[0.0,0.01]"
+exit $status
