@@ -18,8 +18,8 @@
 #include <filesystem>
 #include <random>
 
-#include "agglo/collision/collision_case.hpp"
-#include "agglo/collision/experiment.hpp"
+#include "agglo/impact/impact_case.hpp"
+#include "agglo/impact/experiment.hpp"
 #include "agglo/core/config.hpp"
 #include "agglo/dem/dem_system.hpp"
 #include "agglo/dem/jkr.hpp"
@@ -100,12 +100,12 @@ void BM_Collision2ms(benchmark::State& state) {
   for (const char* s : {"contact.break_rule=lammps", "contact.tangential=marshall", "material.restitution=0.9",
                         "material.friction=0.3", "time.early_stop=false"})  // full 2 ms, as LAMMPS
     cfg.apply_override(s);
-  auto c = agglo::collision::parse_collision_case(cfg);
+  auto c = agglo::impact::parse_impact_case(cfg);
   const double speed = 0.18;
   long steps = 0;
   bool broken = false;
   for (auto _ : state) {
-    auto out = agglo::collision::run_collision(c, speed, nullptr);
+    auto out = agglo::impact::run_impact(c, speed, nullptr);
     steps = out.steps;
     broken = out.broken;
   }

@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "agglo/collision/breakup.hpp"
-#include "agglo/collision/collision_writers.hpp"
+#include "agglo/impact/breakup.hpp"
+#include "agglo/impact/impact_writers.hpp"
 #include "agglo/core/progress.hpp"
 #include "command.hpp"
 
@@ -21,21 +21,21 @@ agglo::cli::Registration reg([](CLI::App& app) {
   sub->callback([args] {
     auto start = std::chrono::steady_clock::now();
     auto cfg = agglo::cli::load_case(*args);
-    auto c = agglo::collision::parse_collision_case(cfg);
+    auto c = agglo::impact::parse_impact_case(cfg);
     cfg.check_unknown_keys();
     auto out = agglo::cli::open_output(*args, "breakup");
     agglo::Progress prog("breakup", true);
-    const auto relaxed = agglo::collision::relaxed_agglomerate(c);  // independent of the projectile offset
-    auto res = agglo::collision::breakup_probability(
+    const auto relaxed = agglo::impact::relaxed_agglomerate(c);  // independent of the projectile offset
+    auto res = agglo::impact::breakup_probability(
         c.breakup, c.projectile.offset_radii,
         [&c, &relaxed](double v, double offset) {
           auto ck = c;
           ck.projectile.offset_radii = offset;
-          return agglo::collision::run_collision(ck, v, nullptr, {}, &relaxed);
+          return agglo::impact::run_impact(ck, v, nullptr, {}, &relaxed);
         },
         [&](double f) { prog.update(f, 0.0); });
     prog.finish();
-    agglo::collision::write_breakup(out, res);
+    agglo::impact::write_breakup(out, res);
     agglo::cli::write_run_files(out, cfg, "breakup", 0, start);
     agglo::cli::run_plot_script("plot_breakup.py", out);
     auto fmtv = [](double v) { return v < 0.0 ? std::string("not reached") : fmt::format("{:.4f} m/s", v); };

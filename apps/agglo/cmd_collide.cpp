@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "agglo/collision/collision_writers.hpp"
+#include "agglo/impact/impact_writers.hpp"
 #include "agglo/core/progress.hpp"
 #include "command.hpp"
 
@@ -20,17 +20,17 @@ agglo::cli::Registration reg([](CLI::App& app) {
     auto start = std::chrono::steady_clock::now();
     auto cfg = agglo::cli::load_case(*args);
     if (*speed >= 0.0) cfg.apply_override(fmt::format("projectile.speed={}", *speed));
-    auto c = agglo::collision::parse_collision_case(cfg);
+    auto c = agglo::impact::parse_impact_case(cfg);
     cfg.check_unknown_keys();
     auto out = agglo::cli::open_output(*args, "collide");
-    agglo::collision::Recorder rec;
+    agglo::impact::Recorder rec;
     agglo::Progress prog("collide", true);
-    auto res = agglo::collision::run_collision(c, c.projectile.speed, &rec,
+    auto res = agglo::impact::run_impact(c, c.projectile.speed, &rec,
                                                [&](double f, double t) { prog.update(f, t); });
     prog.finish();
-    agglo::collision::write_timeseries(out, rec);
-    agglo::collision::write_snapshots(out, rec);
-    out.write_json("result.json", agglo::collision::outcome_json(res));
+    agglo::impact::write_timeseries(out, rec);
+    agglo::impact::write_snapshots(out, rec);
+    out.write_json("result.json", agglo::impact::outcome_json(res));
     agglo::cli::write_run_files(out, cfg, "collide", 0, start);
     agglo::cli::run_plot_script("plot_collision.py", out);
     std::printf("%s: v_in = %.6g m/s -> %s (%zu fragment(s)); outputs in %s\n", c.name.c_str(), res.speed,

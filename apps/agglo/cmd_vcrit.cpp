@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <omp.h>
 
-#include "agglo/collision/collision_writers.hpp"
+#include "agglo/impact/impact_writers.hpp"
 #include "agglo/core/progress.hpp"
 #include "command.hpp"
 
@@ -16,17 +16,17 @@ agglo::cli::Registration reg([](CLI::App& app) {
   sub->callback([args] {
     auto start = std::chrono::steady_clock::now();
     auto cfg = agglo::cli::load_case(*args);
-    auto c = agglo::collision::parse_collision_case(cfg);
+    auto c = agglo::impact::parse_impact_case(cfg);
     cfg.check_unknown_keys();
     auto out = agglo::cli::open_output(*args, "vcrit");
     agglo::Progress prog("vcrit", true);
-    const auto relaxed = agglo::collision::relaxed_agglomerate(c);  // one relaxation for every speed
-    auto res = agglo::collision::find_vcrit(
+    const auto relaxed = agglo::impact::relaxed_agglomerate(c);  // one relaxation for every speed
+    auto res = agglo::impact::find_vcrit(
         c.vcrit, omp_get_max_threads(),
-        [&c, &relaxed](double v) { return agglo::collision::run_collision(c, v, nullptr, {}, &relaxed); },
+        [&c, &relaxed](double v) { return agglo::impact::run_impact(c, v, nullptr, {}, &relaxed); },
         [&](double f) { prog.update(f, 0.0); });
     prog.finish();
-    out.write_json("vcrit.json", agglo::collision::vcrit_json(res));
+    out.write_json("vcrit.json", agglo::impact::vcrit_json(res));
     agglo::cli::write_run_files(out, cfg, "vcrit", 0, start);
     agglo::cli::run_plot_script("plot_vcrit.py", out);
     std::printf("%s: v_crit = %.4f m/s (bracket [%.5f, %.5f], %zu runs)\n", c.name.c_str(), res.v_crit, res.lo,

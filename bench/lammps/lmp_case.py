@@ -2,7 +2,7 @@
 """LAMMPS twin of `agglo collide` for the particle-agglomerate collision (MODEL.md A.3).
 
 Reads the same case TOML as agglo (plus `--set key=value` overrides), rebuilds the same
-initial state (geometry of src/agglo/collision/agglomerate.cpp: equal spheres, neighbour
+initial state (geometry of src/agglo/impact/agglomerate.cpp: equal spheres, neighbour
 centre distance L = 2r - delta0, delta0 = a0^2/(3R); projectile gap_radii*r before the
 agglomerate, offset_radii*r along y, velocity along +x), writes a LAMMPS input
 (units si, atom_style sphere, pair_style granular jkr ... tangential mindlin ... damping tsuji,
@@ -182,7 +182,7 @@ def read_dump(path):
 
 
 def classify(atoms, n_agg, delta_break):
-    """Same rule as agglo::collision::classify (neutral case)."""
+    """Same rule as agglo::impact::classify (neutral case)."""
     n = len(atoms)
     X = [(a["x"], a["y"], a["z"]) for a in atoms]
     parent = list(range(n))

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Critical break-up velocity with LAMMPS, by the same search as `agglo vcrit`
-(src/agglo/collision/vcrit.cpp): a scan of vcrit.scan_points speeds on [v_min, v_max], then rounds
+(src/agglo/impact/vcrit.cpp): a scan of vcrit.scan_points speeds on [v_min, v_max], then rounds
 of `parallel` equally spaced speeds inside the bracket above the highest non-breaking speed, until
 the bracket is narrower than vcrit.tolerance; v_crit = upper end of the bracket.
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "agglo/collision/collision_case.hpp"
+#include "agglo/impact/impact_case.hpp"
 #include "agglo/core/config.hpp"
 #include "agglo/core/error.hpp"
 
@@ -15,7 +15,7 @@ std::string error_of(const std::string& toml, const std::vector<std::string>& se
   try {
     auto cfg = Config::from_string(toml, "case.toml");
     for (const auto& s : sets) cfg.apply_override(s);
-    collision::parse_collision_case(cfg);
+    impact::parse_impact_case(cfg);
     cfg.check_unknown_keys();
   } catch (const ConfigError& e) {
     std::string m = e.what();
@@ -65,7 +65,7 @@ TEST(Config, OverridesApplyAndAreValidated) {
   auto cfg = Config::from_string("[material]\nrestitution = 0.5\n", "case.toml");
   cfg.apply_override("material.restitution=0.8");
   cfg.apply_override("contact.tangential=marshall");  // bare word = string
-  auto c = collision::parse_collision_case(cfg);
+  auto c = impact::parse_impact_case(cfg);
   cfg.check_unknown_keys();
   EXPECT_DOUBLE_EQ(c.dem.contact.restitution, 0.8);
   EXPECT_EQ(c.dem.contact.tangential, dem::TangentialModel::marshall);
@@ -76,11 +76,11 @@ TEST(Config, OverridesApplyAndAreValidated) {
 
 TEST(Config, ResolvedConfigHoldsDefaults) {
   auto cfg = Config::from_string("[material]\nrestitution = 0.5\n", "case.toml");
-  collision::parse_collision_case(cfg);
+  impact::parse_impact_case(cfg);
   auto text = cfg.resolved_toml();
   // Round trip: the resolved text parses to the same values, with every default present.
   auto again = Config::from_string(text, "resolved.toml");
-  auto c = collision::parse_collision_case(again);
+  auto c = impact::parse_impact_case(again);
   again.check_unknown_keys();
   EXPECT_DOUBLE_EQ(c.dem.contact.restitution, 0.5);
   EXPECT_NE(text.find("youngs_modulus"), std::string::npos);

@@ -8,8 +8,8 @@
 #include <random>
 #include <set>
 
-#include "agglo/collision/agglomerate.hpp"
-#include "agglo/collision/experiment.hpp"
+#include "agglo/impact/agglomerate.hpp"
+#include "agglo/impact/experiment.hpp"
 #include "agglo/dem/dem_system.hpp"
 
 using namespace agglo;
@@ -108,8 +108,8 @@ TEST(DemDynamics, PairAtEquilibriumStaysAtRest) {
   }
 }
 
-collision::CollisionCase tetra_case(dem::TangentialModel tm) {
-  collision::CollisionCase c;
+impact::ImpactCase tetra_case(dem::TangentialModel tm) {
+  impact::ImpactCase c;
   c.dem.contact.tangential = tm;
   c.dem.contact.rolling = c.dem.contact.twisting = (tm == dem::TangentialModel::marshall);
   return c;
@@ -120,8 +120,8 @@ collision::CollisionCase tetra_case(dem::TangentialModel tm) {
 void check_conservation(dem::TangentialModel tm) {
   auto c = tetra_case(tm);
   c.projectile.offset_radii = 0.7;
-  auto p = collision::build_agglomerate(c);
-  collision::add_projectile(p, c, 0.5);
+  auto p = impact::build_agglomerate(c);
+  impact::add_projectile(p, c, 0.5);
   p.v[0] = {0.01, -0.02, 0.03};  // make the agglomerate move too
   DemSystem sys(p, c.dem);
   Vec3 P0 = sys.momentum(), L0 = sys.angular_momentum();

@@ -9,7 +9,7 @@
 #include <array>
 #include <vector>
 
-#include "agglo/acoustics/particles.hpp"
+#include "agglo/acoustics/samples.hpp"
 
 namespace agglo::acoustics {
 

@@ -13,7 +13,7 @@
 #include <cstddef>
 
 #include "agglo/acoustics/gas.hpp"
-#include "agglo/acoustics/particles.hpp"
+#include "agglo/acoustics/samples.hpp"
 #include "agglo/acoustics/sound.hpp"
 
 namespace agglo::acoustics {

@@ -12,7 +12,7 @@
 #include "agglo/acoustics/kernels.hpp"
 #include "agglo/acoustics/nanbu.hpp"
 #include "agglo/acoustics/outcomes.hpp"
-#include "agglo/acoustics/particles.hpp"
+#include "agglo/acoustics/samples.hpp"
 #include "agglo/acoustics/populations.hpp"
 
 namespace agglo::acoustics {

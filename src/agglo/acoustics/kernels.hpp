@@ -16,7 +16,7 @@
 #include <string>
 
 #include "agglo/acoustics/gas.hpp"
-#include "agglo/acoustics/particles.hpp"
+#include "agglo/acoustics/samples.hpp"
 #include "agglo/acoustics/sound.hpp"
 
 namespace agglo::acoustics {

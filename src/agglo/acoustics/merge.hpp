@@ -14,7 +14,7 @@
 // rebounding pair in its centre-of-mass frame (momentum exact, energy increased by the debt).
 #include <cstddef>
 
-#include "agglo/acoustics/particles.hpp"
+#include "agglo/acoustics/samples.hpp"
 #include "agglo/core/vec3.hpp"
 
 namespace agglo::acoustics {

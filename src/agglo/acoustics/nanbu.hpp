@@ -21,7 +21,7 @@
 #include "agglo/acoustics/drag.hpp"
 #include "agglo/acoustics/kernels.hpp"
 #include "agglo/acoustics/outcomes.hpp"
-#include "agglo/acoustics/particles.hpp"
+#include "agglo/acoustics/samples.hpp"
 
 namespace agglo::acoustics {
 

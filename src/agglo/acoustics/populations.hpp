@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "agglo/acoustics/drag.hpp"
-#include "agglo/acoustics/particles.hpp"
+#include "agglo/acoustics/samples.hpp"
 
 namespace agglo::acoustics {
 

@@ -5,7 +5,7 @@
 
 
 #include "agglo/electrostatics/spectral/harmonics.hpp"
-#include "agglo/electrostatics/spectral/kernels.hpp"
+#include "agglo/electrostatics/spectral/dense_ops.hpp"
 
 namespace agglo::es::sh {
 

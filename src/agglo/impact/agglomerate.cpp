@@ -1,13 +1,13 @@
-#include "agglo/collision/agglomerate.hpp"
+#include "agglo/impact/agglomerate.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "agglo/dem/jkr.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
-dem::Particles build_agglomerate(const CollisionCase& c) {
+dem::Particles build_agglomerate(const ImpactCase& c) {
   const auto& a = c.agglomerate;
   dem::Particles p;
   if (a.shape == "list") {
@@ -30,7 +30,7 @@ dem::Particles build_agglomerate(const CollisionCase& c) {
   return p;
 }
 
-void add_projectile(dem::Particles& p, const CollisionCase& c, double speed) {
+void add_projectile(dem::Particles& p, const ImpactCase& c, double speed) {
   const auto& pj = c.projectile;
   Vec3 centroid;
   double xmin = 1e300, rref = c.agglomerate.radius;
@@ -42,4 +42,4 @@ void add_projectile(dem::Particles& p, const CollisionCase& c, double speed) {
   p.add(start, pj.radius, c.agglomerate.density, {speed, 0.0, 0.0}, pj.charge, pj.permittivity);
 }
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

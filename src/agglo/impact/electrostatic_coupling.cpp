@@ -1,6 +1,6 @@
-#include "agglo/collision/electrostatic_coupling.hpp"
+#include "agglo/impact/electrostatic_coupling.hpp"
 
-#include "agglo/collision/experiment.hpp"
+#include "agglo/impact/experiment.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "agglo/core/error.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 ElectrostaticForce::ElectrostaticForce(const CouplingSettings& s) : s_(s), solver_(es::make_solver(s.es.options)) {}
 
@@ -132,8 +132,8 @@ void ElectrostaticForce::pair_terms(const dem::Particles& p, std::vector<double>
     }
 }
 
-std::unique_ptr<dem::ExternalForce> make_electrostatic_force(const CollisionCase& c) {
+std::unique_ptr<dem::ExternalForce> make_electrostatic_force(const ImpactCase& c) {
   return std::make_unique<ElectrostaticForce>(c.coupling);
 }
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

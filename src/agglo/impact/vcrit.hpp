@@ -7,22 +7,22 @@
 #include <string>
 #include <vector>
 
-#include "agglo/collision/experiment.hpp"
+#include "agglo/impact/experiment.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 struct VcritResult {
   double v_crit = 0.0;           // = bracket hi: lowest speed with all higher tested speeds breaking
   double lo = 0.0, hi = 0.0;     // bracket [m/s]
-  std::vector<CollisionOutcome> runs;  // every run, sorted by speed
+  std::vector<ImpactOutcome> runs;  // every run, sorted by speed
   std::vector<std::string> warnings;   // non-monotonic or undecided outcomes
   int rounds = 0;
 };
 
-using RunFunction = std::function<CollisionOutcome(double)>;
+using RunFunction = std::function<ImpactOutcome(double)>;
 
 // `run` is called concurrently from several threads (it must be thread-safe).
 VcritResult find_vcrit(const VcritSpec& spec, int parallel_runs, const RunFunction& run,
                        const std::function<void(double)>& progress = {});
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

@@ -18,12 +18,12 @@
 #include <map>
 #include <memory>
 
-#include "agglo/collision/pair_table.hpp"
+#include "agglo/impact/pair_table.hpp"
 #include "agglo/dem/external_force.hpp"
 #include "agglo/electrostatics/config.hpp"
 #include "agglo/electrostatics/solver.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 struct CouplingSettings {
   es::EsConfig es;            // [electrostatics]: solver, kappa_0, field, g_min, update rule
@@ -66,4 +66,4 @@ class ElectrostaticForce : public dem::ExternalForce {
   double seconds_ = 0.0;
 };
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

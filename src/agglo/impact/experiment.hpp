@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "agglo/collision/collision_case.hpp"
+#include "agglo/impact/impact_case.hpp"
 #include "agglo/dem/dem_system.hpp"
 #include "agglo/io/vtk_particles.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 struct TimeseriesRow {
   double t = 0.0;          // time since launch [s]
@@ -37,7 +37,7 @@ struct Fragment {
   double binding = 0.0;          // point-charge electrostatic binding to the rest (>= 0) [J]
 };
 
-struct CollisionOutcome {
+struct ImpactOutcome {
   double speed = 0.0;
   bool broken = false;
   bool undecided = false;       // fragments neither escaping nor re-attached after all extensions
@@ -53,22 +53,22 @@ struct CollisionOutcome {
 };
 
 // Electrostatic coupling factory (defined in electrostatic_coupling.cpp).
-std::unique_ptr<dem::ExternalForce> make_electrostatic_force(const CollisionCase& c);
+std::unique_ptr<dem::ExternalForce> make_electrostatic_force(const ImpactCase& c);
 
 // `progress(fraction, simulated time)` is called now and then (may be empty).
 using ProgressFn = std::function<void(double, double)>;
 // `relaxed`: the agglomerate from relaxed_agglomerate(c) (computed here when null); pass it to
 // reuse one relaxation for many speeds.
-CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* rec = nullptr,
+ImpactOutcome run_impact(const ImpactCase& c, double speed, Recorder* rec = nullptr,
                                const ProgressFn& progress = {}, const dem::Particles* relaxed = nullptr);
 
 // The agglomerate alone, relaxed under electrostatics (as built when there is none), at rest.
-dem::Particles relaxed_agglomerate(const CollisionCase& c);
+dem::Particles relaxed_agglomerate(const ImpactCase& c);
 
 // Radius of gyration [(1/N) sum |x_i - x_c|^2]^(1/2) of the first `n` particles (all if n = 0).
 double radius_of_gyration(const dem::Particles& p, std::size_t n = 0);
 
-// Classification of the current state (used by run_collision; exposed for tests).
-CollisionOutcome classify(const dem::DemSystem& sys, std::size_t n_agglomerate, double medium_permittivity);
+// Classification of the current state (used by run_impact; exposed for tests).
+ImpactOutcome classify(const dem::DemSystem& sys, std::size_t n_agglomerate, double medium_permittivity);
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

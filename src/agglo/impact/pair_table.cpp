@@ -1,4 +1,4 @@
-#include "agglo/collision/pair_table.hpp"
+#include "agglo/impact/pair_table.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "agglo/core/constants.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 bool PairKey::operator<(const PairKey& o) const {
   return std::tie(ri, rj, ki, kj, k0) < std::tie(o.ri, o.rj, o.ki, o.kj, o.k0);
@@ -112,4 +112,4 @@ std::shared_ptr<const PairTable> pair_table(const es::SolverOptions& opt, const 
   return cache.emplace(ck, table).first->second;
 }
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

@@ -4,14 +4,14 @@
 // of gap_radii * r_p before the agglomerate and moves along +x towards its centroid, offset along y.
 //   tetrahedron: regular, edge (0,1) along z facing the projectile; charges +,-,+,-.
 //   square:      2x2 in the x-y plane, side (0,3) facing the projectile; charges +,-,+,- round the ring.
-#include "agglo/collision/collision_case.hpp"
+#include "agglo/impact/impact_case.hpp"
 #include "agglo/dem/particles.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 // Agglomerate only (index 0..N-1), at rest, centroid at the origin.
-dem::Particles build_agglomerate(const CollisionCase& c);
+dem::Particles build_agglomerate(const ImpactCase& c);
 // Appends the projectile (index N) for speed v [m/s].
-void add_projectile(dem::Particles& p, const CollisionCase& c, double speed);
+void add_projectile(dem::Particles& p, const ImpactCase& c, double speed);
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

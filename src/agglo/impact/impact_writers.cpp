@@ -1,8 +1,8 @@
-#include "agglo/collision/collision_writers.hpp"
+#include "agglo/impact/impact_writers.hpp"
 
 #include <fmt/format.h>
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 void write_timeseries(const OutputDir& out, const Recorder& rec) {
   out.write("timeseries.csv", [&](std::ostream& o) {
@@ -24,7 +24,7 @@ void write_snapshots(const OutputDir& out, const Recorder& rec) {
   if (!files.empty()) out.write("particles.pvd", [&](std::ostream& o) { io::write_pvd(o, files); });
 }
 
-nlohmann::json outcome_json(const CollisionOutcome& o) {
+nlohmann::json outcome_json(const ImpactOutcome& o) {
   nlohmann::json frags = nlohmann::json::array();
   for (const auto& f : o.fragments)
     frags.push_back({{"members", f.members},
@@ -69,4 +69,4 @@ void write_breakup(const OutputDir& out, const BreakupResult& r) {
                                   {"offsets_radii", r.offsets}, {"points", pts}, {"runs", runs}});
 }
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

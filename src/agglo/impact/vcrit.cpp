@@ -1,4 +1,4 @@
-#include "agglo/collision/vcrit.hpp"
+#include "agglo/impact/vcrit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,11 +6,11 @@
 
 #include "agglo/core/error.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 namespace {
-std::vector<CollisionOutcome> run_all(const std::vector<double>& speeds, const RunFunction& run) {
-  std::vector<CollisionOutcome> out(speeds.size());
+std::vector<ImpactOutcome> run_all(const std::vector<double>& speeds, const RunFunction& run) {
+  std::vector<ImpactOutcome> out(speeds.size());
   std::vector<std::exception_ptr> err(speeds.size());
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t k = 0; k < static_cast<std::int64_t>(speeds.size()); ++k) {
@@ -33,7 +33,7 @@ VcritResult find_vcrit(const VcritSpec& spec, int parallel_runs, const RunFuncti
   std::vector<double> scan(spec.scan_points);
   for (int k = 0; k < spec.scan_points; ++k)
     scan[k] = spec.v_min + (spec.v_max - spec.v_min) * k / (spec.scan_points - 1);
-  auto add = [&](const std::vector<CollisionOutcome>& o) { res.runs.insert(res.runs.end(), o.begin(), o.end()); };
+  auto add = [&](const std::vector<ImpactOutcome>& o) { res.runs.insert(res.runs.end(), o.begin(), o.end()); };
   add(run_all(scan, run));
   auto sorted = [&]() {
     std::sort(res.runs.begin(), res.runs.end(), [](const auto& a, const auto& b) { return a.speed < b.speed; });
@@ -44,7 +44,7 @@ VcritResult find_vcrit(const VcritSpec& spec, int parallel_runs, const RunFuncti
   if (progress) progress(0.0);
   for (;;) {
     // Highest non-breaking speed, and the lowest breaking speed above it.
-    const CollisionOutcome* last_nb = nullptr;
+    const ImpactOutcome* last_nb = nullptr;
     for (const auto& r : res.runs)
       if (!r.broken) last_nb = &r;
     if (!last_nb)
@@ -75,4 +75,4 @@ VcritResult find_vcrit(const VcritSpec& spec, int parallel_runs, const RunFuncti
   return res;
 }
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

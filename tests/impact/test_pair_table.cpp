@@ -3,10 +3,10 @@
 
 #include <cmath>
 
-#include "agglo/collision/pair_table.hpp"
+#include "agglo/impact/pair_table.hpp"
 
 using namespace agglo;
-using namespace agglo::collision;
+using namespace agglo::impact;
 
 TEST(PairTable, MatchesDirectSolvesBetweenNodes) {
   es::SolverOptions opt;

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <omp.h>
 
-#include "agglo/collision/breakup.hpp"
-#include "agglo/collision/collision_case.hpp"
+#include "agglo/impact/breakup.hpp"
+#include "agglo/impact/impact_case.hpp"
 #include "agglo/core/config.hpp"
 
 using namespace agglo;
-using namespace agglo::collision;
+using namespace agglo::impact;
 
 TEST(Breakup, WilsonIntervalKnownValues) {
   double lo, hi;
@@ -49,7 +49,7 @@ TEST(Breakup, StratifiedOffsetsAndThreadIndependence) {
   spec.samples = 10;
   spec.offset_spread = 0.1;
   auto run = [](double v, double off) {
-    CollisionOutcome o;
+    ImpactOutcome o;
     o.speed = v;
     o.contact = true;
     o.broken = v > 0.1 + off;
@@ -81,14 +81,14 @@ TEST(Breakup, NeutralTetrahedronFarFromThreshold) {
   // v_crit of this case is 0.1775 m/s; 0.12 m/s never breaks and 0.3 m/s always does, whatever the
   // impact offset in 0.05 +- 0.05 r_p.
   Config cfg = Config::load(std::string(AGGLO_SOURCE_DIR) + "/cases/seed000_neutral_tetrahedron.toml");
-  CollisionCase c = parse_collision_case(cfg);
+  ImpactCase c = parse_impact_case(cfg);
   c.breakup.speeds = {0.12, 0.3};
   c.breakup.samples = 4;
   const auto relaxed = relaxed_agglomerate(c);
   const BreakupResult r = breakup_probability(c.breakup, c.projectile.offset_radii, [&](double v, double off) {
     auto ck = c;
     ck.projectile.offset_radii = off;
-    return run_collision(ck, v, nullptr, {}, &relaxed);
+    return run_impact(ck, v, nullptr, {}, &relaxed);
   });
   ASSERT_EQ(r.points.size(), 2u);
   EXPECT_EQ(r.points[0].broken, 0);

@@ -1,14 +1,14 @@
-#include "agglo/collision/experiment.hpp"
+#include "agglo/impact/experiment.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
-#include "agglo/collision/agglomerate.hpp"
-#include "agglo/collision/electrostatic_coupling.hpp"
+#include "agglo/impact/agglomerate.hpp"
+#include "agglo/impact/electrostatic_coupling.hpp"
 #include "agglo/core/constants.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 double radius_of_gyration(const dem::Particles& p, std::size_t n) {
   if (n == 0 || n > p.size()) n = p.size();
@@ -68,8 +68,8 @@ bool clearly_broken(const dem::DemSystem& sys, std::size_t n_agg, double kappa0,
   return true;
 }
 
-CollisionOutcome classify(const dem::DemSystem& sys, std::size_t n_agg, double kappa0) {
-  CollisionOutcome out;
+ImpactOutcome classify(const dem::DemSystem& sys, std::size_t n_agg, double kappa0) {
+  ImpactOutcome out;
   const auto& p = sys.particles();
   out.components = components(sys);
   // The component holding most original particles is the main body; others holding originals are fragments.
@@ -113,7 +113,7 @@ CollisionOutcome classify(const dem::DemSystem& sys, std::size_t n_agg, double k
   return out;
 }
 
-dem::Particles relaxed_agglomerate(const CollisionCase& c) {
+dem::Particles relaxed_agglomerate(const ImpactCase& c) {
   dem::DemSystem sys(build_agglomerate(c), c.dem);
   if (!c.electrostatics || c.time.relax_time <= 0.0) return sys.particles();
   auto es = make_electrostatic_force(c);
@@ -131,7 +131,7 @@ dem::Particles relaxed_agglomerate(const CollisionCase& c) {
   return p;
 }
 
-CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* rec, const ProgressFn& progress,
+ImpactOutcome run_impact(const ImpactCase& c, double speed, Recorder* rec, const ProgressFn& progress,
                                const dem::Particles* relaxed) {
   dem::Particles agg = relaxed ? *relaxed : relaxed_agglomerate(c);
   const std::size_t n_agg = agg.size();
@@ -173,7 +173,7 @@ CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* r
     }
   };
 
-  CollisionOutcome out;
+  ImpactOutcome out;
   out.speed = speed;
   out.dt = sys.dt();
   // Approach until first contact of the projectile.
@@ -231,4 +231,4 @@ CollisionOutcome run_collision(const CollisionCase& c, double speed, Recorder* r
   return out;
 }
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

@@ -9,9 +9,9 @@
 #include <functional>
 #include <vector>
 
-#include "agglo/collision/experiment.hpp"
+#include "agglo/impact/experiment.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 struct BreakupPoint {
   double speed = 0.0;                      // [m/s]
@@ -24,12 +24,12 @@ struct BreakupResult {
   std::vector<BreakupPoint> points;        // sorted by speed
   std::vector<double> offsets;             // offsets used at every speed [r_p]
   double v10 = -1.0, v50 = -1.0, v90 = -1.0;  // first speed where p reaches 0.1 / 0.5 / 0.9; -1 if never
-  std::vector<CollisionOutcome> outcomes;  // every run, speed-major, offset-minor
+  std::vector<ImpactOutcome> outcomes;  // every run, speed-major, offset-minor
 };
 
 // Runs the outcomes with `run(speed, offset_radii)`, concurrently from several threads (must be
 // thread-safe); results do not depend on the thread count.
-using OffsetRunFunction = std::function<CollisionOutcome(double speed, double offset_radii)>;
+using OffsetRunFunction = std::function<ImpactOutcome(double speed, double offset_radii)>;
 BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, const OffsetRunFunction& run,
                                   const std::function<void(double)>& progress = {});
 
@@ -39,4 +39,4 @@ void wilson_interval(int k, int n, double& lo, double& hi);
 // First speed at which the piecewise-linear p(v) reaches `level` (-1 if it never does).
 double first_crossing(const std::vector<BreakupPoint>& pts, double level);
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

@@ -1,17 +1,17 @@
 #pragma once
 // The agglomerate-collision experiment of Ruan & Li (2022), MODEL.md A.3: a particle hits a small
 // agglomerate at speed v_in; break-up is classified at the end. This header holds the validated
-// case description (parsed from TOML by parse_collision_case; every key documented in docs/dem.md).
+// case description (parsed from TOML by parse_impact_case; every key documented in docs/dem.md).
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "agglo/core/config.hpp"
 #include "agglo/core/vec3.hpp"
-#include "agglo/collision/electrostatic_coupling.hpp"
+#include "agglo/impact/electrostatic_coupling.hpp"
 #include "agglo/dem/dem_system.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 struct ListParticle {
   Vec3 position;            // [m]
@@ -70,7 +70,7 @@ struct BreakupSpec {
   double offset_spread = 0.05;    // half-width of the offset range [r_p]
 };
 
-struct CollisionCase {
+struct ImpactCase {
   std::string name = "collision";
   dem::DemParams dem;
   AgglomerateSpec agglomerate;
@@ -85,6 +85,6 @@ struct CollisionCase {
 };
 
 // Reads every section; throws ConfigError naming file, key, value and the allowed range.
-CollisionCase parse_collision_case(Config& cfg);
+ImpactCase parse_impact_case(Config& cfg);
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

@@ -2,22 +2,22 @@
 // Observers of the collision experiment: CSV time series, VTK snapshots, result, vcrit and breakup output.
 #include <nlohmann/json.hpp>
 
-#include "agglo/collision/breakup.hpp"
-#include "agglo/collision/experiment.hpp"
-#include "agglo/collision/vcrit.hpp"
+#include "agglo/impact/breakup.hpp"
+#include "agglo/impact/experiment.hpp"
+#include "agglo/impact/vcrit.hpp"
 #include "agglo/core/output.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 // timeseries.csv: t,kinetic_energy,electrostatic_energy,U_over_U0,radius_of_gyration,n_contacts,
 //                 radius_of_gyration_agglomerate (the original particles only)
 void write_timeseries(const OutputDir& out, const Recorder& rec);
 // snapshots/particles_NNNN.vtp + particles.pvd
 void write_snapshots(const OutputDir& out, const Recorder& rec);
-nlohmann::json outcome_json(const CollisionOutcome& o);
+nlohmann::json outcome_json(const ImpactOutcome& o);
 nlohmann::json vcrit_json(const VcritResult& r);
 // breakup.csv: speed_m_s,runs,broken,undecided,p_break,ci95_lo,ci95_hi; breakup.json: the same plus
 // v10/v50/v90 (null if not reached), the offsets and every run's outcome.
 void write_breakup(const OutputDir& out, const BreakupResult& r);
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

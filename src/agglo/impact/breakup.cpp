@@ -1,11 +1,11 @@
-#include "agglo/collision/breakup.hpp"
+#include "agglo/impact/breakup.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <exception>
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 void wilson_interval(int k, int n, double& lo, double& hi) {
   if (n <= 0) {
@@ -40,7 +40,7 @@ BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, 
   for (int k = 0; k < m; ++k)
     res.offsets.push_back(m == 1 ? offset_radii : offset_radii + spec.offset_spread * (2.0 * (k + 0.5) / m - 1.0));
   const std::int64_t njobs = static_cast<std::int64_t>(speeds.size()) * m;
-  res.outcomes.assign(static_cast<std::size_t>(njobs), CollisionOutcome{});
+  res.outcomes.assign(static_cast<std::size_t>(njobs), ImpactOutcome{});
   std::vector<std::exception_ptr> err(static_cast<std::size_t>(njobs));
   std::atomic<std::int64_t> done{0};
 #pragma omp parallel for schedule(dynamic, 1)
@@ -77,4 +77,4 @@ BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, 
   return res;
 }
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

@@ -1,13 +1,13 @@
-#include "agglo/collision/collision_case.hpp"
+#include "agglo/impact/impact_case.hpp"
 
 #include <cmath>
 
 #include "agglo/core/error.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
-CollisionCase parse_collision_case(Config& cfg) {
-  CollisionCase c;
+ImpactCase parse_impact_case(Config& cfg) {
+  ImpactCase c;
   auto root = cfg.root();
   c.name = root.string("name", std::string("collision"));
 
@@ -116,4 +116,4 @@ CollisionCase parse_collision_case(Config& cfg) {
   return c;
 }
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

@@ -15,7 +15,7 @@
 
 #include "agglo/electrostatics/solver.hpp"
 
-namespace agglo::collision {
+namespace agglo::impact {
 
 struct PairKey {
   double ri, rj, ki, kj, k0;
@@ -42,4 +42,4 @@ class PairTable {
 std::shared_ptr<const PairTable> pair_table(const es::SolverOptions& opt, const PairKey& key, double h_min,
                                             double h_max);
 
-}  // namespace agglo::collision
+}  // namespace agglo::impact

@@ -1,4 +1,4 @@
-#include "agglo/acoustics/particles.hpp"
+#include "agglo/acoustics/samples.hpp"
 
 #include <cmath>
 #include <limits>

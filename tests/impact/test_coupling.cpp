@@ -4,17 +4,17 @@
 #include <gtest/gtest.h>
 
 
-#include "agglo/collision/agglomerate.hpp"
-#include "agglo/collision/electrostatic_coupling.hpp"
-#include "agglo/collision/experiment.hpp"
+#include "agglo/impact/agglomerate.hpp"
+#include "agglo/impact/electrostatic_coupling.hpp"
+#include "agglo/impact/experiment.hpp"
 
 using namespace agglo;
-using namespace agglo::collision;
+using namespace agglo::impact;
 
 namespace {
 
-CollisionCase charged_case(double kappa) {
-  CollisionCase c;
+ImpactCase charged_case(double kappa) {
+  ImpactCase c;
   c.agglomerate.charged = true;
   c.agglomerate.permittivity = kappa;
   c.electrostatics = true;
@@ -23,7 +23,7 @@ CollisionCase charged_case(double kappa) {
   return c;
 }
 
-dem::Particles state(const CollisionCase& c) {
+dem::Particles state(const ImpactCase& c) {
   auto p = build_agglomerate(c);
   add_projectile(p, c, 0.2);
   // Put the projectile in contact with the edge it faces (near-contact gaps everywhere).
@@ -31,7 +31,7 @@ dem::Particles state(const CollisionCase& c) {
   return p;
 }
 
-std::vector<Vec3> fresh_forces(const CollisionCase& c, const dem::Particles& p) {
+std::vector<Vec3> fresh_forces(const ImpactCase& c, const dem::Particles& p) {
   ElectrostaticForce f(c.coupling);
   std::vector<Vec3> F(p.size()), T(p.size());
   f.add_forces(p, 0, 0.0, F, T);
@@ -84,7 +84,7 @@ TEST(Coupling, CoulombFastPathIsExactForUnitPermittivity) {
 
 TEST(Coupling, ClassificationOfHandMadeStates) {
   // Two bonded particles plus one flying away from them: broken; the same one flying back: undecided.
-  CollisionCase c;
+  ImpactCase c;
   dem::Particles p;
   auto jkr = dem::JkrPair::make(5e-6, c.dem.contact.estar(), c.dem.contact.surface_energy);
   double L = 2e-5 - jkr.delta_equilibrium();
