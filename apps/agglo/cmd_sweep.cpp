@@ -1,72 +1,71 @@
-// `agglo sweep CASE.toml --param KEY --values v1,v2,... [--command acoustic]`: independent runs of a
-// command over the values of one config key, on all cores; writes sweep.csv, one folder per case and
-// plots (scripts/plot_sweep.py).
+// `agglo sweep CASE.toml --param KEY --values v1,v2,... [--param KEY2 --values ...] [--command NAME]`:
+// independent runs of any command over a grid of config values, on all cores; writes sweep.csv, one
+// folder per case and a plot (scripts/plot_sweep.py).
 #include <chrono>
-#include <map>
 #include <memory>
 
 #include <fmt/format.h>
 
-#include "agglo/acoustics/case_config.hpp"
-#include "agglo/acoustics/run.hpp"
 #include "agglo/core/error.hpp"
-#include "agglo/core/progress.hpp"
-#include "agglo/sweep/sweep.hpp"
+#include "agglo/io/sweep_table.hpp"
+#include "agglo/run/sweep.hpp"
 #include "command.hpp"
 
 namespace {
 
 struct SweepArgs {
   agglo::cli::CommonArgs common;
-  std::string param, values, command = "acoustic";
+  std::vector<std::string> params, values;
+  std::string command = "acoustic";
 };
 
-struct Runner {
-  agglo::sweep::CaseRunner run;
-  std::function<void(agglo::Config&)> validate;
-  std::string plot;  // per-case plot script ("" = none)
-};
+std::vector<agglo::run::SweepAxis> axes(const SweepArgs& a) {
+  if (a.params.size() != a.values.size())
+    throw agglo::ConfigError(fmt::format("sweep: {} --param but {} --values; give one --values list per --param",
+                                         a.params.size(), a.values.size()));
+  std::vector<agglo::run::SweepAxis> ax;
+  for (std::size_t k = 0; k < a.params.size(); ++k) ax.push_back({a.params[k], agglo::run::split_values(a.values[k])});
+  return ax;
+}
 
-std::map<std::string, Runner> runners() {
-  std::map<std::string, Runner> m;
-  m["acoustic"] = Runner{
-      [](agglo::Config& cfg, const agglo::OutputDir& out, const agglo::sweep::SweepCase& c) {
-        const auto start = std::chrono::steady_clock::now();
-        agglo::acoustics::RunOptions opt;
-        opt.progress = false;
-        nlohmann::json s = agglo::acoustics::run_acoustic(cfg, out, opt);
-        const long long seed = cfg.root().integer("seed", 1, 0, INT64_MAX);
-        nlohmann::json extra = s;
-        extra["sweep_assignment"] = c.assignment;
-        agglo::cli::write_run_files(out, cfg, "acoustic", seed, start, extra);
-        return s;
-      },
-      [](agglo::Config& cfg) { (void)agglo::acoustics::parse_acoustic_case(cfg); }, "plot_acoustic.py"};
-  return m;
+void run(const SweepArgs& a) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto& cmd = agglo::run::find_command(a.command);
+  agglo::Config base = agglo::cli::load_case(a.common);
+  const auto ax = axes(a);
+  const auto path = agglo::cli::output_path(a.common, "sweep");
+  const auto cases = agglo::run::sweep_grid(ax);  // ConfigError before the folder is made
+  agglo::OutputDir out(path);
+  const auto res = agglo::run::run_sweep(cmd, base, ax, out, agglo::cli::context(a.common));
+  std::vector<agglo::io::SweepRow> rows;
+  for (std::size_t i = 0; i < res.cases.size(); ++i)
+    rows.push_back({res.cases[i].values, res.cases[i].folder, res.summaries[i]});
+  std::vector<std::string> keys;
+  for (const auto& x : ax) keys.push_back(x.key);
+  agglo::io::write_sweep_table(out, keys, rows);
+  nlohmann::json details = {{"param", a.params.size() == 1 ? nlohmann::json(a.params[0]) : nlohmann::json(a.params)},
+                            {"values", ax.size() == 1 ? nlohmann::json(ax[0].values) : nlohmann::json(a.values)},
+                            {"command", a.command}};
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  agglo::run::write_run_files(out, base, "sweep", cmd.seed(base), wall, details);
+  std::vector<std::string> plot_args = keys;
+  agglo::cli::run_plot_script("plot_sweep.py", path, plot_args);
 }
 
 agglo::cli::Registration reg([](CLI::App& app) {
   auto a = std::make_shared<SweepArgs>();
-  auto* sub = app.add_subcommand("sweep", "Run a command over the values of one config key, cases in parallel");
+  auto* sub = app.add_subcommand("sweep", "Run any command over a grid of config values, cases in parallel");
   agglo::cli::add_common_options(*sub, a->common);
-  sub->add_option("-p,--param", a->param, "Config key to vary, e.g. population.1.diameter")->required();
-  sub->add_option("-v,--values", a->values, "Comma-separated values, e.g. 10e-6,20e-6,30e-6")->required();
-  sub->add_option("-c,--command", a->command, "Command run for each case (acoustic)")->capture_default_str();
-  sub->callback([a] {
-    const auto start = std::chrono::steady_clock::now();
-    auto all = runners();
-    auto it = all.find(a->command);
-    if (it == all.end()) throw agglo::ConfigError(fmt::format("--command '{}': not sweepable (available: acoustic)", a->command));
-    agglo::Config base = agglo::cli::load_case(a->common);
-    const auto values = agglo::sweep::split_values(a->values);
-    agglo::OutputDir out = agglo::cli::open_output(a->common, "sweep");
-    const auto summaries = agglo::sweep::run_sweep(base, a->param, values, out, it->second.run, it->second.validate,
-                                                   a->common.threads, !agglo::Progress::quiet());
-    agglo::sweep::write_table(out, a->param, values, summaries);
-    nlohmann::json extra = {{"param", a->param}, {"values", values}, {"command", a->command}};
-    agglo::cli::write_run_files(out, base, "sweep", base.root().integer("seed", 1, 0, INT64_MAX), start, extra);
-    agglo::cli::run_plot_script("plot_sweep.py", out, {a->param});
-  });
+  sub->add_option("-p,--param", a->params, "Config key to vary, e.g. population.1.diameter (repeatable: a grid)")
+      ->required()
+      ->take_all();
+  sub->add_option("-v,--values", a->values, "Comma-separated values for the matching --param, e.g. 10e-6,20e-6")
+      ->required()
+      ->take_all();
+  sub->add_option("-c,--command", a->command, "Command run for each case (collide, vcrit, breakup, electrostatics, "
+                                              "acoustic)")
+      ->capture_default_str();
+  sub->callback([a] { run(*a); });
 });
 
 }  // namespace

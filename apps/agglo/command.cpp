@@ -1,6 +1,12 @@
 #include "command.hpp"
 
+#include <csignal>
+#include <cstdlib>
+
+#include <fmt/format.h>
 #include <omp.h>
+
+#include "agglo/io/output_dir.hpp"
 
 namespace agglo::cli {
 
@@ -9,12 +15,24 @@ std::vector<Registrar>& registry() {
   return r;
 }
 
+bool& quiet() {
+  static bool q = false;
+  return q;
+}
+
+bool& plots_enabled() {
+  static bool on = true;
+  return on;
+}
+
 void add_common_options(CLI::App& sub, CommonArgs& args) {
   sub.add_option("case", args.case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
   sub.add_option("-o,--out", args.out, "Output folder (default: results/<case>-<command>)");
   sub.add_option("-s,--set", args.sets, "Override a config key: --set section.key=value (repeatable)")
       ->take_all();
   sub.add_option("-j,--threads", args.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  sub.add_flag("--resume", args.resume,
+               "Reuse the finished jobs recorded in the output folder's journal.jsonl (vcrit, breakup, sweep)");
 }
 
 Config load_case(const CommonArgs& args) {
@@ -24,34 +42,27 @@ Config load_case(const CommonArgs& args) {
   return cfg;
 }
 
-OutputDir open_output(const CommonArgs& args, const std::string& command) {
-  return OutputDir(args.out.empty() ? default_output_dir(args.case_file, command) : std::filesystem::path(args.out));
+std::filesystem::path output_path(const CommonArgs& args, const std::string& command) {
+  return args.out.empty() ? default_output_dir(args.case_file, command) : std::filesystem::path(args.out);
 }
 
-void write_run_files(const OutputDir& out, const Config& cfg, const std::string& command, long long seed,
-                     std::chrono::steady_clock::time_point start, nlohmann::json extra) {
-  out.write_text("config.resolved.toml", cfg.resolved_toml());
-  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  auto meta = run_metadata(command, cfg.file(), seed, wall);
-  if (!extra.is_null() && !extra.empty()) meta["details"] = extra;
-  out.write_json("run.json", meta);
+namespace {
+run::CancelToken& interrupt_token() {
+  static run::CancelToken t;
+  return t;
+}
+extern "C" void on_interrupt(int) { interrupt_token().cancel(); }
+}  // namespace
+
+run::RunContext context(const CommonArgs& args) {
+  static run::TerminalReporter reporter(quiet());
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  return run::RunContext{&reporter, &interrupt_token(), args.threads, args.resume};
 }
 
-}  // namespace agglo::cli
-
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-
-namespace agglo::cli {
-
-bool& plots_enabled() {
-  static bool on = true;
-  return on;
-}
-
-void run_plot_script(const std::string& script, const OutputDir& out, const std::vector<std::string>& args) {
-  if (!plots_enabled()) return;
+void run_plot_script(const std::string& script, const std::filesystem::path& out, const std::vector<std::string>& args) {
+  if (!plots_enabled() || script.empty()) return;
   namespace fs = std::filesystem;
   fs::path path = fs::path(AGGLO_SOURCE_DIR) / "scripts" / script;
   if (!fs::exists(path)) {
@@ -63,10 +74,10 @@ void run_plot_script(const std::string& script, const OutputDir& out, const std:
     for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
     return q + "'";
   };
-  std::string cmd = quote(AGGLO_PYTHON) + " " + quote(path.string()) + " " + quote(out.path().string());
+  std::string cmd = quote(AGGLO_PYTHON) + " " + quote(path.string()) + " " + quote(out.string());
   for (const auto& a : args) cmd += " " + quote(a);
-  int rc = std::system(cmd.c_str());
-  if (rc != 0) std::fprintf(stderr, "agglo: warning: plotting failed (%s); CSV results are complete\n", cmd.c_str());
+  if (std::system(cmd.c_str()) != 0)
+    std::fprintf(stderr, "agglo: warning: plotting failed (%s); CSV results are complete\n", cmd.c_str());
 }
 
 }  // namespace agglo::cli

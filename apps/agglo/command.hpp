@@ -1,7 +1,8 @@
 #pragma once
-// Shared plumbing of the CLI commands: registration, the common options every command takes
-// (CASE.toml, --out, --set, --quiet, --threads) and the run epilogue (config.resolved.toml, run.json).
-#include <chrono>
+// The CLI front end over the run pipeline (src/agglo/run): options every command takes (CASE.toml,
+// --out, --set, --threads, --resume), the terminal reporter, Ctrl-C as a cancel token, and the
+// plot scripts run after a command.
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -9,42 +10,44 @@
 #include <CLI/CLI.hpp>
 
 #include "agglo/core/config.hpp"
-#include "agglo/core/output.hpp"
+#include "agglo/run/command.hpp"
 
 namespace agglo::cli {
-
-using Registrar = std::function<void(CLI::App&)>;
-std::vector<Registrar>& registry();
-
-struct Registration {
-  explicit Registration(Registrar r) { registry().push_back(std::move(r)); }
-};
 
 struct CommonArgs {
   std::string case_file;
   std::string out;
   std::vector<std::string> sets;
   int threads = 0;
+  bool resume = false;
 };
 
-// Adds CASE.toml, --out, --set and --threads to a subcommand.
+// Adds CASE.toml, --out, --set, --threads and --resume to a subcommand.
 void add_common_options(CLI::App& sub, CommonArgs& args);
 
-// Loads the case and applies --set overrides (ConfigError on any problem).
+// Loads the case and applies --set overrides (ConfigError on any problem); sets the OpenMP threads.
 Config load_case(const CommonArgs& args);
 
 // Output folder from --out or the default results/<case>-<command>.
-OutputDir open_output(const CommonArgs& args, const std::string& command);
+std::filesystem::path output_path(const CommonArgs& args, const std::string& command);
 
-// Writes config.resolved.toml and run.json.
-void write_run_files(const OutputDir& out, const Config& cfg, const std::string& command, long long seed,
-                     std::chrono::steady_clock::time_point start, nlohmann::json extra = {});
+// The run context of the CLI: terminal reporter (quiet with -q), Ctrl-C cancels.
+run::RunContext context(const CommonArgs& args);
 
-}  // namespace agglo::cli
+// Global switches (-q, --no-plots).
+bool& quiet();
+bool& plots_enabled();
 
-namespace agglo::cli {
 // Runs `python3 scripts/<script> <outdir> [args...]` to make PNG plots from the CSV outputs.
 // Plotting is best effort: a missing matplotlib gives a warning, never a failed run.
-bool& plots_enabled();  // global --no-plots switch
-void run_plot_script(const std::string& script, const OutputDir& out, const std::vector<std::string>& args = {});
+void run_plot_script(const std::string& script, const std::filesystem::path& out,
+                     const std::vector<std::string>& args = {});
+
+// Subcommands register themselves from their own file: `Registration reg([](CLI::App& app) {...});`
+using Registrar = std::function<void(CLI::App&)>;
+std::vector<Registrar>& registry();
+struct Registration {
+  explicit Registration(Registrar r) { registry().push_back(std::move(r)); }
+};
+
 }  // namespace agglo::cli

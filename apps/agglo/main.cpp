@@ -1,4 +1,5 @@
-// agglo command-line front end. Exit codes: 0 ok, 1 internal error, 2 bad input, 3 numerical failure.
+// agglo command-line front end. Exit codes: 0 ok, 1 internal error, 2 bad input, 3 numerical failure,
+// 130 interrupted (Ctrl-C).
 #include <cstdio>
 #include <exception>
 
@@ -6,7 +7,6 @@
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
-#include "agglo/core/progress.hpp"
 #include "agglo/core/version.hpp"
 #include "command.hpp"
 
@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
       "agglo - adhesive DEM with surface-resolved electrostatics, and DSMC acoustic agglomeration.\n"
       "Run `agglo <command> --help` for the options of a command."};
   app.set_version_flag("-V,--version", fmt::format("agglo {} (git {})", agglo::kVersion, agglo::kGitHash));
-  app.add_flag_callback("-q,--quiet", [] { agglo::Progress::quiet() = true; }, "No progress line on stderr");
+  app.add_flag_callback("-q,--quiet", [] { agglo::cli::quiet() = true; }, "No progress line on stderr");
   app.add_flag_callback("--no-plots", [] { agglo::cli::plots_enabled() = false; }, "Do not run the matplotlib plot scripts");
   app.require_subcommand(1);
   app.fallthrough();
@@ -31,6 +31,10 @@ int main(int argc, char** argv) {
   } catch (const agglo::NumericalError& e) {
     std::fprintf(stderr, "agglo: numerical failure: %s\n", e.what());
     return 3;
+  } catch (const agglo::InterruptedError& e) {
+    std::fprintf(stderr, "agglo: %s; finished jobs are kept in the output folder's journal.jsonl, rerun with --resume "
+                 "to continue\n", e.what());
+    return 130;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "agglo: internal error: %s\n", e.what());
     return 1;

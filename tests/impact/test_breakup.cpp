@@ -7,6 +7,8 @@
 #include <omp.h>
 
 #include "agglo/impact/breakup.hpp"
+#include "agglo/io/impact_writers.hpp"
+#include "agglo/run/impact_ensemble.hpp"
 #include "agglo/impact/impact_case.hpp"
 #include "agglo/core/config.hpp"
 
@@ -42,6 +44,20 @@ TEST(Breakup, FirstCrossingInterpolatesAndReportsNever) {
   EXPECT_EQ(first_crossing(pts, 0.0), 0.1);
 }
 
+// The synthetic impacts as jobs of the ensemble runner on `threads` threads.
+ImpactBatch ensemble_of(const std::function<ImpactOutcome(double, double)>& f, int threads) {
+  return [f, threads](const std::vector<ImpactJob>& batch) {
+    std::vector<agglo::run::Job> jobs;
+    for (const auto& b : batch)
+      jobs.push_back({"", [f, b](const agglo::run::JobContext&) {
+                        return agglo::io::outcome_json(f(b.speed, b.offset_radii));
+                      }});
+    std::vector<ImpactOutcome> out;
+    for (const auto& o : agglo::run::run_jobs(jobs, {threads})) out.push_back(agglo::io::outcome_from_json(o.result));
+    return out;
+  };
+}
+
 TEST(Breakup, StratifiedOffsetsAndThreadIndependence) {
   // Synthetic outcome: breaks iff v > 0.1 + offset (offset in r_p), so p(v) is known exactly.
   BreakupSpec spec;
@@ -55,12 +71,8 @@ TEST(Breakup, StratifiedOffsetsAndThreadIndependence) {
     o.broken = v > 0.1 + off;
     return o;
   };
-  const int nt = omp_get_max_threads();
-  omp_set_num_threads(1);
-  const BreakupResult a = breakup_probability(spec, 0.05, run);
-  omp_set_num_threads(2);
-  const BreakupResult b = breakup_probability(spec, 0.05, run);
-  omp_set_num_threads(nt);
+  const BreakupResult a = breakup_probability(spec, 0.05, ensemble_of(run, 1));
+  const BreakupResult b = breakup_probability(spec, 0.05, ensemble_of(run, 2));
   ASSERT_EQ(a.offsets.size(), 10u);
   for (int k = 0; k < 10; ++k) EXPECT_NEAR(a.offsets[k], -0.05 + 0.01 + 0.02 * k, 1e-15);  // -0.04 .. 0.14
   ASSERT_EQ(a.points.size(), 4u);
@@ -85,11 +97,8 @@ TEST(Breakup, NeutralTetrahedronFarFromThreshold) {
   c.breakup.speeds = {0.12, 0.3};
   c.breakup.samples = 4;
   const auto relaxed = relaxed_agglomerate(c);
-  const BreakupResult r = breakup_probability(c.breakup, c.projectile.offset_radii, [&](double v, double off) {
-    auto ck = c;
-    ck.projectile.offset_radii = off;
-    return run_impact(ck, v, nullptr, {}, &relaxed);
-  });
+  const BreakupResult r =
+      breakup_probability(c.breakup, c.projectile.offset_radii, agglo::run::impact_batch(c, relaxed, {2}));
   ASSERT_EQ(r.points.size(), 2u);
   EXPECT_EQ(r.points[0].broken, 0);
   EXPECT_EQ(r.points[1].broken, 4);

@@ -9,7 +9,9 @@ Stripped before hashing (they change from run to run or machine to machine, neve
              (run.json, summary.json, result.json, stats.json, vcrit.json, breakup.json);
   run.log    'wall_time=<x> s';
   CSV        columns whose header is one of those keys or contains 'seconds' (sweep.csv).
-PNG files are skipped (matplotlib versions differ).
+PNG files are skipped (matplotlib versions differ), and so are the ensemble journals journal.jsonl (a
+work log: its lines are in the order the jobs finished, which depends on scheduling; the results it
+holds are checked through vcrit.json, breakup.json and sweep.csv).
 """
 import csv
 import hashlib
@@ -54,7 +56,7 @@ def normalised(path: Path) -> bytes:
 def checksums(root: Path) -> dict:
     out = {}
     for p in sorted(root.rglob("*")):
-        if p.is_file() and p.suffix != ".png":
+        if p.is_file() and p.suffix != ".png" and p.name != "journal.jsonl":
             out[str(p.relative_to(root))] = hashlib.sha256(normalised(p)).hexdigest()
     return out
 

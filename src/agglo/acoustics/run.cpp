@@ -3,21 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <limits>
-#include <sstream>
 
 #include <fmt/format.h>
 
-#include "agglo/acoustics/diagnostics.hpp"
 #include "agglo/acoustics/engine.hpp"
 #include "agglo/core/error.hpp"
-#include "agglo/core/progress.hpp"
 
 namespace agglo::acoustics {
 
 namespace {
-constexpr double kPerCm3 = 1e-6;  // 1/m^3 -> 1/cm^3
 
 std::string guard_report(const NanbuStats& s) {
   return fmt::format(
@@ -32,25 +27,149 @@ std::string guard_report(const NanbuStats& s) {
       s.max_subcycles, s.max_pn, s.violations, s.refills, s.dead, s.energy_lost, s.energy_returned);
 }
 
-nlohmann::json stats_json(const NanbuStats& s) {
-  return {{"particle_steps", s.particle_steps},
-          {"trials", s.trials},
-          {"kernel_evals", s.kernel_evals},
-          {"collisions", s.collisions},
-          {"coalescences", {{"droplet", s.coalescences[0]}, {"dry", s.coalescences[1]}, {"wet", s.coalescences[2]}}},
-          {"rebounds", {{"droplet", s.rebounds[0]}, {"dry", s.rebounds[1]}, {"wet", s.rebounds[2]}}},
-          {"max_bound_pn", s.max_bound_pn},
-          {"subcycled_particle_steps", s.subcycled},
-          {"max_subcycles", s.max_subcycles},
-          {"max_pn_evaluated", s.max_pn},
-          {"violations", s.violations},
-          {"refills", s.refills},
-          {"dead_samples", s.dead},
-          {"energy_lost_J", s.energy_lost},
-          {"energy_returned_J", s.energy_returned}};
+bool due(double t, double target, double dt) { return std::abs(t - target) < 0.5 * dt; }
+
+const char* integrator_name(Integrator i) {
+  return i == Integrator::exact ? "exact" : i == Integrator::none ? "none" : "explicit";
 }
 
-bool due(double t, double target, double dt) { return std::abs(t - target) < 0.5 * dt; }
+// Derived parameters of the gas, sound, domain and time stepping (first lines of run.log).
+std::string parameters_log(const AcousticCase& c, const Engine& eng) {
+  const auto& S = eng.settings();
+  const Motion& M = S.motion;
+  std::string log = fmt::format("agglo acoustic: case {}\n", c.file);
+  log += fmt::format("gas: T={:g} K P={:g} Pa rho_g={:.6g} kg/m^3 c={:.6g} m/s mu_g={:.6g} Pa s lambda_g={:.6g} m "
+                     "gravity={:g} m/s^2\n",
+                     M.gas.temperature, M.gas.pressure, M.gas.density, M.gas.sound_speed, M.gas.viscosity,
+                     M.gas.mean_free_path, M.gas.gravity);
+  log += fmt::format("sound: enabled={} L={:g} dB f={:g} Hz u_amp={:.6g} m/s wavelength={:.6g} m\n", M.sound.enabled,
+                     M.sound.level_db, M.sound.frequency, M.sound.u_amp, M.sound.wavelength);
+  log += fmt::format("domain: {:.6g} x {:.6g} x {:.6g} m, cells {}x{}x{}, V_c={:.6g} m^3\n", M.domain.L[0],
+                     M.domain.L[1], M.domain.L[2], M.domain.cells[0], M.domain.cells[1], M.domain.cells[2],
+                     M.domain.cell_volume());
+  log += fmt::format("time: end={:g} s collision_dt={:g} s motion_dt={:g} s ({} motion sub-steps) integrator={} "
+                     "kernel={}\n",
+                     S.t_end, S.collision_dt, S.motion_dt, eng.motion_substeps(), integrator_name(M.integrator),
+                     kernel_model_name(S.kernel.model));
+  return log;
+}
+
+// C_I is held piecewise constant over a motion step. With an odd or fractional-but-locked number of
+// steps per acoustic period the sampled phases are not symmetric under psi -> psi + pi and a droplet
+// with C_I > 1 picks up a spurious mean drift (docs/acoustics.md sec. 3). Returns "" when fine.
+std::string step_warning(const EngineSettings& S) {
+  const Motion& M = S.motion;
+  if (M.integrator != Integrator::exact || M.sound.u_amp <= 0.0 || !M.inertia_correction) return {};
+  const double per = 1.0 / (M.sound.frequency * S.motion_dt);
+  const double even = 2.0 * std::round(0.5 * per);
+  if (per >= 40.0 || std::abs(per - even) <= 1e-6 * per) return {};
+  return fmt::format(
+      "motion_dt = {:g} s gives {:.4g} steps per acoustic period; use an even whole number "
+      "(e.g. motion_dt = {:g} s) to avoid a spurious drift of droplets with C_I > 1",
+      S.motion_dt, per, 1.0 / (M.sound.frequency * std::max(2.0, even)));
+}
+
+// Sampling of each population; warns when integer weights miss the requested number by > 1 %.
+std::string sampling_log(const Engine& eng, const RunHooks& hooks) {
+  const auto& S = eng.settings();
+  std::string log;
+  for (std::size_t k = 0; k < eng.sampled().size(); ++k) {
+    const auto& sp = eng.sampled()[k];
+    const double rel = sp.real_number > 0 ? sp.weight_sum / sp.real_number - 1.0 : 0.0;
+    log += fmt::format("population {} '{}': {} samples, requested N V = {:.6g}, sum of integer weights = {:.6g} "
+                       "(rel. diff {:.3g})\n",
+                       k, S.populations[k].name, sp.count, sp.real_number, sp.weight_sum, rel);
+    if (sp.real_number > 0 && std::abs(rel) > 0.01) {
+      const std::string w = fmt::format(
+          "population {} '{}': the integer sample weights represent {:.4g} particles instead of {:.4g} "
+          "({:+.2f} %); set weight_rounding = \"conserving\" or choose samples so that N V / samples is near a "
+          "whole number",
+          k, S.populations[k].name, sp.weight_sum, sp.real_number, 100.0 * rel);
+      log += "warning: " + w + "\n";
+      if (hooks.warning) hooks.warning(w);
+    }
+  }
+  return log;
+}
+
+std::string startup_log(const AcousticCase& c, const Engine& eng, const RunHooks& hooks) {
+  std::string log = parameters_log(c, eng);
+  if (const std::string w = step_warning(eng.settings()); !w.empty()) {
+    log += "warning: " + w + "\n";
+    if (hooks.warning) hooks.warning(w);
+  }
+  log += sampling_log(eng, hooks);
+  log += fmt::format("nanbu guard at start: max N*P_bound(dt_c) = {:.4g} ({})\n", eng.max_guard_pn(),
+                     eng.max_guard_pn() > 1.0 ? "sub-cycling needed" : "bound met without sub-cycling");
+  return log;
+}
+
+double rel_change(double a, double b) { return a > 0 ? b / a - 1 : 0.0; }
+
+std::string closing_log(const AcousticObservations& o) {
+  const Counts &c0 = o.initial, &c1 = o.final;
+  const EfficiencyRow& last = o.efficiency.back();
+  std::string log = guard_report(o.stats);
+  log += fmt::format("conservation: solid volume fraction {:.17g} -> {:.17g} (rel. {:.3g}); liquid {:.17g} -> {:.17g} "
+                     "(rel. {:.3g}); mass {:.17g} -> {:.17g}\n",
+                     c0.solid_volume, c1.solid_volume, rel_change(c0.solid_volume, c1.solid_volume), c0.liquid_volume,
+                     c1.liquid_volume, rel_change(c0.liquid_volume, c1.liquid_volume), c0.mass, c1.mass);
+  log += fmt::format("result: fine_efficiency={:.6g} pure_droplet_fraction={:.6g} wall_time={:.3f} s\n",
+                     last.fine_efficiency, last.pure_droplet_fraction, o.wall_time_s);
+  return log;
+}
+
+// Records the observations of the state at step s (efficiency every efficiency_interval, PSDs and
+// snapshots at their times).
+class Observer {
+ public:
+  Observer(const AcousticCase& c, const Engine& eng, AcousticObservations& obs)
+      : c_(c), eng_(eng), obs_(obs), V_(eng.settings().motion.domain.volume()) {
+    obs_.initial = count(eng.particles(), V_);
+    obs_.bins = PsdBins::log_spaced(c.output.psd_d_min, c.output.psd_d_max, c.output.psd_bins);
+    obs_.last_time_with_pure_droplets = obs_.initial.n_phase[1] > 0 ? 0.0 : -1.0;
+    const double dt = eng.settings().collision_dt;
+    every_ = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(c.output.efficiency_interval / dt)));
+  }
+
+  void observe(std::uint64_t s) {
+    const double dt = eng_.settings().collision_dt, t = static_cast<double>(s) * dt;
+    if (s % every_ == 0 || s == eng_.total_steps()) efficiency(t);
+    for (double tp : c_.output.psd_times)
+      if (due(t, tp, dt)) obs_.psd.push_back({t, psd(eng_.particles(), V_, obs_.bins)});
+    for (double ts : c_.output.snapshot_times)
+      if (due(t, ts, dt)) snapshot(t);
+  }
+
+ private:
+  void efficiency(double t) {
+    EfficiencyRow r;
+    r.t = t;
+    r.counts = count(eng_.particles(), V_);
+    const double nf0 = obs_.initial.n_phase[0], nl0 = obs_.initial.n_phase[1];
+    r.fine_efficiency = nf0 > 0 ? (nf0 - r.counts.n_phase[0]) / nf0 : 0.0;
+    r.pure_droplet_fraction = nl0 > 0 ? r.counts.n_phase[1] / nl0 : 0.0;
+    if (r.counts.n_phase[1] > 0) obs_.last_time_with_pure_droplets = t;
+    r.collisions = eng_.stats().collisions;
+    r.subcycled = eng_.stats().subcycled;
+    obs_.efficiency.push_back(r);
+  }
+
+  void snapshot(double t) {
+    const ParticleSet& p = eng_.particles();
+    const double xmax = c_.output.snapshot_x_fraction * eng_.settings().motion.domain.L[0];
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.w[i] > 0 && p.x[i] <= xmax)
+        obs_.snapshots.push_back({t, p.x[i], p.y[i], p.z[i], p.d[i], p.vol_s[i], p.vol_l[i], p.w[i], p.id[i], p.phase(i)});
+  }
+
+  const AcousticCase& c_;
+  const Engine& eng_;
+  AcousticObservations& obs_;
+  double V_;
+  std::uint64_t every_ = 1;
+};
+
 }  // namespace
 
 void check_startup(const AcousticCase& c, const Engine& e) {
@@ -82,151 +201,31 @@ void check_startup(const AcousticCase& c, const Engine& e) {
                                   c.file, s.max_subcycles, std::ceil(pn)));
 }
 
-nlohmann::json run_acoustic(Config& cfg, const OutputDir& out, const RunOptions& opt) {
+AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) {
   const auto wall0 = std::chrono::steady_clock::now();
-  AcousticCase c = parse_acoustic_case(cfg);
   Engine eng(c.engine);
   check_startup(c, eng);
-  const auto& S = eng.settings();
-  const Motion& M = S.motion;
-  const double V = M.domain.volume();
-
-  std::ostringstream log;
-  log << fmt::format("agglo acoustic: case {}\n", c.file);
-  log << fmt::format("gas: T={:g} K P={:g} Pa rho_g={:.6g} kg/m^3 c={:.6g} m/s mu_g={:.6g} Pa s lambda_g={:.6g} m "
-                     "gravity={:g} m/s^2\n",
-                     M.gas.temperature, M.gas.pressure, M.gas.density, M.gas.sound_speed, M.gas.viscosity,
-                     M.gas.mean_free_path, M.gas.gravity);
-  log << fmt::format("sound: enabled={} L={:g} dB f={:g} Hz u_amp={:.6g} m/s wavelength={:.6g} m\n", M.sound.enabled,
-                     M.sound.level_db, M.sound.frequency, M.sound.u_amp, M.sound.wavelength);
-  log << fmt::format("domain: {:.6g} x {:.6g} x {:.6g} m, cells {}x{}x{}, V_c={:.6g} m^3\n", M.domain.L[0],
-                     M.domain.L[1], M.domain.L[2], M.domain.cells[0], M.domain.cells[1], M.domain.cells[2],
-                     M.domain.cell_volume());
-  log << fmt::format("time: end={:g} s collision_dt={:g} s motion_dt={:g} s ({} motion sub-steps) integrator={} "
-                     "kernel={}\n",
-                     S.t_end, S.collision_dt, S.motion_dt, eng.motion_substeps(),
-                     M.integrator == Integrator::exact ? "exact" : M.integrator == Integrator::none ? "none" : "explicit",
-                     kernel_model_name(S.kernel.model));
-  if (M.integrator == Integrator::exact && M.sound.u_amp > 0.0 && M.inertia_correction) {
-    // C_I is held piecewise constant over a motion step. With an odd or fractional-but-locked number
-    // of steps per acoustic period the sampled phases are not symmetric under psi -> psi + pi and a
-    // droplet with C_I > 1 picks up a spurious mean drift (docs/acoustics.md sec. 3).
-    const double per = 1.0 / (M.sound.frequency * S.motion_dt);
-    const double even = 2.0 * std::round(0.5 * per);
-    if (per < 40.0 && std::abs(per - even) > 1e-6 * per) {
-      const std::string w = fmt::format(
-          "warning: motion_dt = {:g} s gives {:.4g} steps per acoustic period; use an even whole number "
-          "(e.g. motion_dt = {:g} s) to avoid a spurious drift of droplets with C_I > 1\n",
-          S.motion_dt, per, 1.0 / (M.sound.frequency * std::max(2.0, even)));
-      log << w;
-      std::fputs(w.c_str(), stderr);
-    }
-  }
-  for (std::size_t k = 0; k < eng.sampled().size(); ++k) {
-    const auto& sp = eng.sampled()[k];
-    log << fmt::format("population {} '{}': {} samples, requested N V = {:.6g}, sum of integer weights = {:.6g} "
-                       "(rel. diff {:.3g})\n",
-                       k, S.populations[k].name, sp.count, sp.real_number, sp.weight_sum,
-                       sp.real_number > 0 ? sp.weight_sum / sp.real_number - 1.0 : 0.0);
-    if (sp.real_number > 0 && std::abs(sp.weight_sum / sp.real_number - 1.0) > 0.01) {
-      const std::string w = fmt::format(
-          "warning: population {} '{}': the integer sample weights represent {:.4g} particles instead of {:.4g} "
-          "({:+.2f} %); set weight_rounding = \"conserving\" or choose samples so that N V / samples is near a "
-          "whole number\n",
-          k, S.populations[k].name, sp.weight_sum, sp.real_number, 100.0 * (sp.weight_sum / sp.real_number - 1.0));
-      log << w;
-      std::fputs(w.c_str(), stderr);
-    }
-  }
-  log << fmt::format("nanbu guard at start: max N*P_bound(dt_c) = {:.4g} ({})\n", eng.max_guard_pn(),
-                     eng.max_guard_pn() > 1.0 ? "sub-cycling needed" : "bound met without sub-cycling");
-
-  const Counts c0 = count(eng.particles(), V);
-  const double nf0 = c0.n_phase[0], nl0 = c0.n_phase[1];
-  const PsdBins bins = PsdBins::log_spaced(c.output.psd_d_min, c.output.psd_d_max, c.output.psd_bins);
-  std::ostringstream eff, psdcsv, snap;
-  eff << "t_s,n_total_cm3,n_solid_cm3,n_liquid_cm3,n_mixed_cm3,fine_efficiency,pure_droplet_fraction,"
-         "solid_volume_fraction,liquid_volume_fraction,collisions,subcycled_particle_steps\n";
-  psdcsv << "t_s,d_lo_m,d_hi_m,d_mid_m,solid_dNdlogd_cm3,liquid_dNdlogd_cm3,mixed_dNdlogd_cm3,total_dNdlogd_cm3\n";
-  snap << "t_s,id,x_m,y_m,z_m,d_m,solid_volume_m3,liquid_volume_m3,weight,phase\n";
-  double last_pure_t = nl0 > 0 ? 0.0 : -1.0;
-  double eta = 0.0, pure = nl0 > 0 ? 1.0 : 0.0;
-  auto record = [&](double t) {
-    const Counts cc = count(eng.particles(), V);
-    eta = nf0 > 0 ? (nf0 - cc.n_phase[0]) / nf0 : 0.0;
-    pure = nl0 > 0 ? cc.n_phase[1] / nl0 : 0.0;
-    if (cc.n_phase[1] > 0) last_pure_t = t;
-    eff << fmt::format("{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.17g},{:.17g},{},{}\n", t,
-                       cc.n_total * kPerCm3, cc.n_phase[0] * kPerCm3, cc.n_phase[1] * kPerCm3, cc.n_phase[2] * kPerCm3,
-                       eta, pure, cc.solid_volume, cc.liquid_volume, eng.stats().collisions, eng.stats().subcycled);
-  };
-  auto record_psd = [&](double t) {
-    const auto h = psd(eng.particles(), V, bins);
-    for (std::size_t b = 0; b + 1 < bins.edges.size(); ++b)
-      psdcsv << fmt::format("{:.8g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", t, bins.edges[b],
-                            bins.edges[b + 1], std::sqrt(bins.edges[b] * bins.edges[b + 1]), h[0][b] * kPerCm3,
-                            h[1][b] * kPerCm3, h[2][b] * kPerCm3, h[3][b] * kPerCm3);
-  };
-  auto record_snap = [&](double t) {
-    const ParticleSet& p = eng.particles();
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.w[i] > 0 && p.x[i] <= c.output.snapshot_x_fraction * M.domain.L[0])
-        snap << fmt::format("{:.8g},{},{:.8g},{:.8g},{:.8g},{:.6g},{:.6g},{:.6g},{:g},{}\n", t, p.id[i], p.x[i], p.y[i],
-                            p.z[i], p.d[i], p.vol_s[i], p.vol_l[i], p.w[i], phase_name(p.phase(i)));
-  };
-
+  AcousticObservations obs;
+  obs.log = startup_log(c, eng, hooks);
+  Observer observer(c, eng, obs);
   const std::uint64_t nsteps = eng.total_steps();
-  const double dt = S.collision_dt;
-  const std::uint64_t eff_every =
-      std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(c.output.efficiency_interval / dt)));
-  Progress prog(opt.label, opt.progress);
-  auto outputs = [&](std::uint64_t s) {
-    const double t = static_cast<double>(s) * dt;
-    if (s % eff_every == 0 || s == nsteps) record(t);
-    for (double tp : c.output.psd_times)
-      if (due(t, tp, dt)) record_psd(t);
-    for (double ts : c.output.snapshot_times)
-      if (due(t, ts, dt)) record_snap(t);
-  };
-  outputs(0);
+  observer.observe(0);
   for (std::uint64_t s = 1; s <= nsteps; ++s) {
     eng.step();
-    outputs(s);
-    if ((s & 63) == 0) prog.update(static_cast<double>(s) / static_cast<double>(nsteps), eng.time());
+    observer.observe(s);
+    if ((s & 63) != 0) continue;
+    if (hooks.progress) hooks.progress(static_cast<double>(s) / static_cast<double>(nsteps), eng.time());
+    if (hooks.cancelled && hooks.cancelled())
+      throw InterruptedError(fmt::format("interrupted at t = {:.6g} s (step {} of {})", eng.time(), s, nsteps));
   }
-  prog.finish();
-  const Counts c1 = count(eng.particles(), V);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  log << guard_report(eng.stats());
-  log << fmt::format("conservation: solid volume fraction {:.17g} -> {:.17g} (rel. {:.3g}); liquid {:.17g} -> {:.17g} "
-                     "(rel. {:.3g}); mass {:.17g} -> {:.17g}\n",
-                     c0.solid_volume, c1.solid_volume,
-                     c0.solid_volume > 0 ? c1.solid_volume / c0.solid_volume - 1 : 0.0, c0.liquid_volume,
-                     c1.liquid_volume, c0.liquid_volume > 0 ? c1.liquid_volume / c0.liquid_volume - 1 : 0.0, c0.mass,
-                     c1.mass);
-  log << fmt::format("result: fine_efficiency={:.6g} pure_droplet_fraction={:.6g} wall_time={:.3f} s\n", eta, pure, wall);
-
-  nlohmann::json summary = {
-      {"fine_efficiency", eta},
-      {"pure_droplet_fraction", pure},
-      {"last_time_with_pure_droplets_s", last_pure_t},
-      {"n_solid_initial_cm3", nf0 * kPerCm3},
-      {"n_solid_final_cm3", c1.n_phase[0] * kPerCm3},
-      {"n_total_initial_cm3", c0.n_total * kPerCm3},
-      {"n_total_final_cm3", c1.n_total * kPerCm3},
-      {"samples", eng.particles().size()},
-      {"steps", nsteps},
-      {"u_amp_m_s", M.sound.u_amp},
-      {"solid_volume_rel_change", c0.solid_volume > 0 ? c1.solid_volume / c0.solid_volume - 1 : 0.0},
-      {"liquid_volume_rel_change", c0.liquid_volume > 0 ? c1.liquid_volume / c0.liquid_volume - 1 : 0.0},
-      {"nanbu", stats_json(eng.stats())},
-      {"wall_time_s", wall}};
-  out.write_text("efficiency.csv", eff.str());
-  out.write_text("psd.csv", psdcsv.str());
-  out.write_text("snapshots.csv", snap.str());
-  out.write_text("run.log", log.str());
-  out.write_json("summary.json", summary);
-  return summary;
+  obs.final = count(eng.particles(), eng.settings().motion.domain.volume());
+  obs.samples = eng.particles().size();
+  obs.steps = nsteps;
+  obs.u_amp = eng.settings().motion.sound.u_amp;
+  obs.stats = eng.stats();
+  obs.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  obs.log += closing_log(obs);
+  return obs;
 }
 
 }  // namespace agglo::acoustics

@@ -1,29 +1,65 @@
 #pragma once
-// One acoustic run from a parsed config to its output files:
-//   efficiency.csv  t, concentrations by phase [1/cm^3], fine efficiency, pure-droplet fraction,
-//                   solid/liquid volume fractions (conservation), guard counters
-//   psd.csv         dN/dlog10 d [1/cm^3] by phase at output.psd_times
+// One acoustic DSMC run, from a validated case to its observations (docs/model.md §C.6). The run
+// never prints or writes files: warnings go to a callback, and io/acoustic_writers.hpp writes
+//   efficiency.csv  t, concentrations by phase, fine efficiency, pure-droplet fraction, volume
+//                   fractions (conservation), guard counters
+//   psd.csv         dN/dlog10 d by phase at output.psd_times
 //   snapshots.csv   samples with x <= snapshot_x_fraction * L_x at output.snapshot_times
-//   summary.json    {"fine_efficiency": <final>, ...}
+//   summary.json    final efficiency and the other scalars below
 //   run.log         derived parameters, sampling, Nanbu guard statistics
-// (config.resolved.toml, run.json and plots are written by the command.)
+#include <cstdint>
+#include <functional>
 #include <string>
-
-#include <nlohmann/json.hpp>
+#include <vector>
 
 #include "agglo/acoustics/case_config.hpp"
-#include "agglo/core/config.hpp"
-#include "agglo/core/output.hpp"
+#include "agglo/acoustics/diagnostics.hpp"
 
 namespace agglo::acoustics {
 
-struct RunOptions {
-  bool progress = true;
-  std::string label = "acoustic";
+struct EfficiencyRow {
+  double t = 0.0;                 // [s]
+  Counts counts;                  // concentrations [1/m^3], volume fractions
+  double fine_efficiency = 0.0;
+  double pure_droplet_fraction = 0.0;
+  std::uint64_t collisions = 0, subcycled = 0;
 };
 
-// Parses cfg (ConfigError on bad input), runs, writes the files. Returns summary.json's content.
-nlohmann::json run_acoustic(Config& cfg, const OutputDir& out, const RunOptions& opt = {});
+struct PsdRecord {
+  double t = 0.0;                              // [s]
+  std::array<std::vector<double>, 4> dndlogd;  // by phase (solid, liquid, mixed) and total [1/m^3]
+};
+
+struct SnapshotRow {
+  double t, x, y, z, d, vol_s, vol_l, w;  // [s], [m], [m], [m], [m], [m^3], [m^3], weight
+  std::uint64_t id;
+  Phase phase;
+};
+
+struct AcousticObservations {
+  std::vector<EfficiencyRow> efficiency;
+  PsdBins bins;
+  std::vector<PsdRecord> psd;
+  std::vector<SnapshotRow> snapshots;
+  Counts initial, final;
+  double last_time_with_pure_droplets = -1.0;  // [s]
+  std::size_t samples = 0;
+  std::uint64_t steps = 0;
+  double u_amp = 0.0;                          // [m/s]
+  NanbuStats stats;
+  std::string log;                             // run.log without its last line (see io)
+  double wall_time_s = 0.0;
+};
+
+struct RunHooks {
+  std::function<void(double fraction, double sim_time_s)> progress;  // may be empty
+  std::function<void(const std::string&)> warning;                   // may be empty
+  std::function<bool()> cancelled;                                    // may be empty; true stops the run
+};
+
+// Runs the case; throws ConfigError for start-up conditions the settings cannot meet (explicit
+// stability, Nanbu bound), NumericalError on a blow-up, InterruptedError when cancelled.
+AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks = {});
 
 // Start-up checks that need the sampled state (explicit stability, Nanbu bound). Throws ConfigError.
 void check_startup(const AcousticCase& c, const Engine& e);

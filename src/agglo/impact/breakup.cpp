@@ -1,9 +1,7 @@
 #include "agglo/impact/breakup.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 
 namespace agglo::impact {
 
@@ -31,37 +29,29 @@ double first_crossing(const std::vector<BreakupPoint>& pts, double level) {
   return -1.0;
 }
 
-BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, const OffsetRunFunction& run,
-                                  const std::function<void(double)>& progress) {
-  BreakupResult res;
+std::vector<ImpactJob> breakup_jobs(const BreakupSpec& spec, double offset_radii) {
   std::vector<double> speeds = spec.speeds;
   std::sort(speeds.begin(), speeds.end());
   const int m = spec.samples;
-  for (int k = 0; k < m; ++k)
-    res.offsets.push_back(m == 1 ? offset_radii : offset_radii + spec.offset_spread * (2.0 * (k + 0.5) / m - 1.0));
-  const std::int64_t njobs = static_cast<std::int64_t>(speeds.size()) * m;
-  res.outcomes.assign(static_cast<std::size_t>(njobs), ImpactOutcome{});
-  std::vector<std::exception_ptr> err(static_cast<std::size_t>(njobs));
-  std::atomic<std::int64_t> done{0};
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::int64_t j = 0; j < njobs; ++j) {
-    try {
-      res.outcomes[j] = run(speeds[j / m], res.offsets[j % m]);
-    } catch (...) {
-      err[j] = std::current_exception();
-    }
-    const std::int64_t d = ++done;
-    if (progress) {
-#pragma omp critical(agglo_breakup_progress)
-      progress(static_cast<double>(d) / static_cast<double>(njobs));
-    }
-  }
-  for (auto& e : err)
-    if (e) std::rethrow_exception(e);
+  std::vector<ImpactJob> jobs;
+  for (double v : speeds)
+    for (int k = 0; k < m; ++k)
+      jobs.push_back({v, m == 1 ? offset_radii : offset_radii + spec.offset_spread * (2.0 * (k + 0.5) / m - 1.0)});
+  return jobs;
+}
+
+BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, const ImpactBatch& run_batch) {
+  BreakupResult res;
+  const std::vector<ImpactJob> jobs = breakup_jobs(spec, offset_radii);
+  const std::size_t m = static_cast<std::size_t>(spec.samples);
+  for (std::size_t k = 0; k < m; ++k) res.offsets.push_back(jobs[k].offset_radii);
+  std::vector<double> speeds;
+  for (std::size_t j = 0; j < jobs.size(); j += m) speeds.push_back(jobs[j].speed);
+  res.outcomes = run_batch(jobs);
   for (std::size_t s = 0; s < speeds.size(); ++s) {
     BreakupPoint pt;
     pt.speed = speeds[s];
-    for (int k = 0; k < m; ++k) {
+    for (std::size_t k = 0; k < m; ++k) {
       const auto& o = res.outcomes[s * m + k];
       ++pt.runs;
       pt.broken += o.broken ? 1 : 0;

@@ -27,11 +27,17 @@ struct BreakupResult {
   std::vector<ImpactOutcome> outcomes;  // every run, speed-major, offset-minor
 };
 
-// Runs the outcomes with `run(speed, offset_radii)`, concurrently from several threads (must be
-// thread-safe); results do not depend on the thread count.
-using OffsetRunFunction = std::function<ImpactOutcome(double speed, double offset_radii)>;
-BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, const OffsetRunFunction& run,
-                                  const std::function<void(double)>& progress = {});
+// One impact of the ensemble: projectile speed [m/s] and lateral offset [r_p].
+struct ImpactJob {
+  double speed = 0.0, offset_radii = 0.0;
+};
+// Runs independent impacts and returns their outcomes in the same order (e.g. run::ensemble_impacts:
+// in parallel, journaled; results do not depend on the thread count).
+using ImpactBatch = std::function<std::vector<ImpactOutcome>(const std::vector<ImpactJob>& jobs)>;
+
+// The jobs of a break-up curve: speeds sorted ascending (speed-major), offsets stratified (minor).
+std::vector<ImpactJob> breakup_jobs(const BreakupSpec& spec, double offset_radii);
+BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, const ImpactBatch& run_batch);
 
 // Wilson score interval for k successes in n trials (z = 1.96).
 void wilson_interval(int k, int n, double& lo, double& hi);

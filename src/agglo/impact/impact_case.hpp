@@ -60,6 +60,7 @@ struct VcritSpec {
   double v_max = 0.6;        // [m/s]
   int scan_points = 12;      // coarse scan (log-spaced is not needed: linear)
   double tolerance = 5e-4;   // bisection tolerance [m/s]
+  int points_per_round = 2;  // speeds tried per bisection round (fixed by configuration, not by cores)
 };
 
 // Break-up probability (agglo breakup): at each speed, `samples` runs whose projectile offset is

@@ -1,8 +1,10 @@
 #pragma once
-// Critical break-up velocity (MODEL.md A.3): the lowest speed from which on every tested speed
-// breaks the agglomerate. A coarse scan over [v_min, v_max] runs in parallel; the transition above
-// the highest non-breaking speed is then narrowed with several speeds per round (one per thread)
-// to the tolerance. Non-monotonic outcomes (a break below a non-break) are reported, not hidden.
+// Critical break-up velocity (docs/model.md §A.3): the lowest speed from which on every tested speed
+// breaks the agglomerate. A coarse scan over [v_min, v_max] (scan_points speeds) is followed by
+// bisection rounds that each try `points_per_round` evenly spaced speeds inside the bracket above the
+// highest non-breaking speed, until the bracket is narrower than the tolerance. The speeds tried
+// depend only on the configuration and the outcomes, never on the number of cores. Non-monotonic
+// outcomes (a break below a non-break) are reported, not hidden.
 #include <functional>
 #include <string>
 #include <vector>
@@ -19,10 +21,11 @@ struct VcritResult {
   int rounds = 0;
 };
 
-using RunFunction = std::function<ImpactOutcome(double)>;
+// Runs a batch of independent impacts at the given speeds and returns their outcomes in the same
+// order (e.g. run::ensemble_impacts: in parallel, journaled).
+using SpeedBatch = std::function<std::vector<ImpactOutcome>(const std::vector<double>& speeds)>;
 
-// `run` is called concurrently from several threads (it must be thread-safe).
-VcritResult find_vcrit(const VcritSpec& spec, int parallel_runs, const RunFunction& run,
+VcritResult find_vcrit(const VcritSpec& spec, const SpeedBatch& run_batch,
                        const std::function<void(double)>& progress = {});
 
 }  // namespace agglo::impact

@@ -1,4 +1,4 @@
-#include "agglo/core/output.hpp"
+#include "agglo/io/output_dir.hpp"
 
 #include <chrono>
 #include <ctime>

@@ -1,8 +1,8 @@
-#include "agglo/impact/impact_writers.hpp"
+#include "agglo/io/impact_writers.hpp"
 
 #include <fmt/format.h>
 
-namespace agglo::impact {
+namespace agglo::io {
 
 void write_timeseries(const OutputDir& out, const Recorder& rec) {
   out.write("timeseries.csv", [&](std::ostream& o) {
@@ -18,10 +18,10 @@ void write_snapshots(const OutputDir& out, const Recorder& rec) {
   std::vector<std::pair<double, std::string>> files;
   for (std::size_t k = 0; k < rec.snapshots.size(); ++k) {
     std::string name = fmt::format("snapshots/particles_{:04d}.vtp", k);
-    out.write(name, [&](std::ostream& o) { io::write_vtp(o, rec.snapshots[k].second); });
+    out.write(name, [&](std::ostream& o) { write_vtp(o, rec.snapshots[k].second); });
     files.emplace_back(rec.snapshots[k].first, name);
   }
-  if (!files.empty()) out.write("particles.pvd", [&](std::ostream& o) { io::write_pvd(o, files); });
+  if (!files.empty()) out.write("particles.pvd", [&](std::ostream& o) { write_pvd(o, files); });
 }
 
 nlohmann::json outcome_json(const ImpactOutcome& o) {
@@ -37,6 +37,28 @@ nlohmann::json outcome_json(const ImpactOutcome& o) {
           {"t_first_contact_s", o.t_contact}, {"t_end_s", o.t_end},   {"dt_s", o.dt},
           {"steps", o.steps},           {"extensions", o.extensions}, {"early_stop", o.early_stop},
           {"electrostatic_solves", o.es_solves}, {"electrostatic_seconds", o.es_seconds}};
+}
+
+ImpactOutcome outcome_from_json(const nlohmann::json& j) {
+  ImpactOutcome o;
+  o.speed = j.at("speed_m_per_s").get<double>();
+  o.broken = j.at("broken").get<bool>();
+  o.undecided = j.at("undecided").get<bool>();
+  o.contact = j.at("projectile_contact").get<bool>();
+  o.components = j.at("components").get<std::vector<std::vector<int>>>();
+  for (const auto& f : j.at("fragments"))
+    o.fragments.push_back({f.at("members").get<std::vector<int>>(), f.at("escaping").get<bool>(),
+                           f.at("separation_rate_m_per_s").get<double>(), f.at("relative_kinetic_energy_J").get<double>(),
+                           f.at("electrostatic_binding_J").get<double>()});
+  o.t_contact = j.at("t_first_contact_s").get<double>();
+  o.t_end = j.at("t_end_s").get<double>();
+  o.dt = j.at("dt_s").get<double>();
+  o.steps = j.at("steps").get<long>();
+  o.extensions = j.at("extensions").get<int>();
+  o.early_stop = j.at("early_stop").get<bool>();
+  o.es_solves = j.at("electrostatic_solves").get<long>();
+  o.es_seconds = j.at("electrostatic_seconds").get<double>();
+  return o;
 }
 
 nlohmann::json vcrit_json(const VcritResult& r) {
@@ -69,4 +91,4 @@ void write_breakup(const OutputDir& out, const BreakupResult& r) {
                                   {"offsets_radii", r.offsets}, {"points", pts}, {"runs", runs}});
 }
 
-}  // namespace agglo::impact
+}  // namespace agglo::io

@@ -1,0 +1,26 @@
+#pragma once
+// sweep.csv: index, one column per swept key, case folder, then the union of the numeric and boolean
+// scalars of the case summaries (nested objects flattened to "a.b.c"), in first-seen order.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "agglo/io/output_dir.hpp"
+
+namespace agglo::io {
+
+// Flattens numbers/booleans of a JSON object ("a.b.c" keys for nested objects).
+void flatten_scalars(const nlohmann::json& j, const std::string& prefix,
+                     std::vector<std::pair<std::string, double>>& out);
+
+struct SweepRow {
+  std::vector<std::string> values;  // one per key
+  std::string folder;
+  nlohmann::json summary;
+};
+
+void write_sweep_table(const OutputDir& out, const std::vector<std::string>& keys, const std::vector<SweepRow>& rows);
+
+}  // namespace agglo::io

@@ -1,0 +1,55 @@
+#include "agglo/run/command.hpp"
+
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "agglo/core/error.hpp"
+#include "agglo/run/commands.hpp"
+
+namespace agglo::run {
+
+Reporter& RunContext::report() const {
+  static SilentReporter silent;
+  return reporter ? *reporter : silent;
+}
+
+long long Command::seed(const Config&) const { return 0; }
+
+const Command& find_command(std::string_view name) {
+  for (const Command* c : all_commands())
+    if (c->name() == name) return *c;
+  std::string list;
+  for (const auto& n : command_names()) list += (list.empty() ? "" : ", ") + n;
+  throw ConfigError(fmt::format("command '{}' does not exist (available: {})", name, list));
+}
+
+std::vector<std::string> command_names() {
+  std::vector<std::string> names;
+  for (const Command* c : all_commands()) names.emplace_back(c->name());
+  return names;
+}
+
+void write_run_files(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
+                     double wall_time_s, const nlohmann::json& details) {
+  out.write_text("config.resolved.toml", cfg.resolved_toml());
+  auto meta = run_metadata(std::string(command), cfg.file(), seed, wall_time_s);
+  if (!details.is_null() && !details.empty()) meta["details"] = details;
+  out.write_json("run.json", meta);
+}
+
+CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
+                      const nlohmann::json& extra) {
+  const auto start = std::chrono::steady_clock::now();
+  cmd.parse(cfg);
+  const OutputDir out(out_dir);
+  CommandResult res = cmd.run(cfg, out, ctx);
+  nlohmann::json details = res.details;
+  if (!extra.is_null())
+    for (auto it = extra.begin(); it != extra.end(); ++it) details[it.key()] = it.value();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_run_files(out, cfg, cmd.name(), res.seed, wall, details);
+  return res;
+}
+
+}  // namespace agglo::run

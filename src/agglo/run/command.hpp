@@ -1,0 +1,63 @@
+#pragma once
+// The run pipeline shared by every front end (CLI, Python, MPI): a command turns a case into results
+// in four steps — parse (TOML -> validated settings; ConfigError on bad input), run (the engine,
+// which never prints or writes files), summarise (observations -> a JSON summary), write (the
+// writers in io/). `execute` adds what every output folder gets: config.resolved.toml (the case
+// with every default filled in) and run.json (version, git hash, command, seed, threads, wall time).
+// Commands are looked up by name, so `sweep` (and later calibrate, MPI) runs any of them.
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "agglo/core/config.hpp"
+#include "agglo/io/output_dir.hpp"
+#include "agglo/run/reporter.hpp"
+
+namespace agglo::run {
+
+struct RunContext {
+  Reporter* reporter = nullptr;          // null = silent
+  const CancelToken* cancel = nullptr;   // null = not cancellable
+  int threads = 0;                       // 0 = all cores
+  bool resume = false;                   // reuse the journal of finished jobs in the output folder
+  Reporter& report() const;
+};
+
+struct CommandResult {
+  nlohmann::json summary;                // scalars of the run (sweep tables, Python)
+  nlohmann::json details;                // extra block of run.json (null = none)
+  long long seed = 0;                    // recorded in run.json
+  std::string plot_script;               // scripts/<name> making the PNGs ("" = none)
+  std::vector<std::string> plot_args;
+};
+
+class Command {
+ public:
+  virtual ~Command() = default;
+  virtual std::string_view name() const = 0;
+  virtual std::string_view help() const = 0;
+  // Parses and validates the whole case, unknown keys included; writes defaults into cfg.
+  virtual void parse(Config& cfg) const = 0;
+  // The random seed a case runs with (recorded in run.json); 0 for deterministic commands.
+  virtual long long seed(const Config& cfg) const;
+  // Runs a parsed case and writes the command's own files into `out`.
+  virtual CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const = 0;
+};
+
+// The command called `name`; ConfigError naming the available ones otherwise.
+const Command& find_command(std::string_view name);
+std::vector<std::string> command_names();
+
+// parse -> output folder -> run -> config.resolved.toml + run.json. `extra` is merged into run.json's
+// details. The folder is created only after the case has been validated.
+CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
+                      const nlohmann::json& extra = {});
+
+// config.resolved.toml and run.json of a finished run (also used by sweep for its own folder).
+void write_run_files(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
+                     double wall_time_s, const nlohmann::json& details);
+
+}  // namespace agglo::run

@@ -1,0 +1,48 @@
+// agglo vcrit: critical break-up velocity by a scan and bisection rounds of impacts.
+#include <fmt/format.h>
+
+#include "agglo/io/impact_writers.hpp"
+#include "agglo/run/commands.hpp"
+#include "agglo/run/impact_ensemble.hpp"
+
+namespace agglo::run {
+
+namespace {
+
+class Vcrit final : public Command {
+ public:
+  std::string_view name() const override { return "vcrit"; }
+  std::string_view help() const override { return "Critical break-up velocity of an agglomerate (bisection on speed)"; }
+
+  void parse(Config& cfg) const override {
+    (void)impact::parse_impact_case(cfg);
+    cfg.check_unknown_keys();
+  }
+
+  CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
+    const auto c = impact::parse_impact_case(cfg);
+    const auto relaxed = impact::relaxed_agglomerate(c);  // one relaxation for every speed
+    Journal journal(out.file("journal.jsonl"), impact_context(name(), cfg), ctx.resume);
+    const EnsembleOptions opt{ctx.threads, &journal, ctx.cancel, nullptr, "vcrit"};
+    const auto res = impact::find_vcrit(c.vcrit, speed_batch(c, relaxed, opt),
+                                        [&](double f) { ctx.report().progress("vcrit", f, 0.0); });
+    out.write_json("vcrit.json", io::vcrit_json(res));
+    CommandResult r;
+    r.summary = {{"v_crit", res.v_crit}, {"bracket_lo", res.lo}, {"bracket_hi", res.hi}, {"rounds", res.rounds},
+                 {"runs", res.runs.size()}, {"warnings", res.warnings.size()}};
+    r.plot_script = "plot_vcrit.py";
+    ctx.report().info(fmt::format("{}: v_crit = {:.4f} m/s (bracket [{:.5f}, {:.5f}], {} runs)", c.name, res.v_crit,
+                                  res.lo, res.hi, res.runs.size()));
+    for (const auto& w : res.warnings) ctx.report().warning(w);
+    return r;
+  }
+};
+
+}  // namespace
+
+const Command& vcrit_command() {
+  static const Vcrit c;
+  return c;
+}
+
+}  // namespace agglo::run

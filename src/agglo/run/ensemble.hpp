@@ -1,0 +1,54 @@
+#pragma once
+// The ensemble runner behind vcrit, breakup and sweep (and later calibrate and MPI): a list of
+// independent jobs, fixed by the configuration and never by the number of cores, run on a pool of
+// threads. Results are keyed by job index, so they do not depend on scheduling; every job runs even
+// when another fails, and each failure is kept with its job; finished jobs go to the journal as they
+// finish, and jobs the journal already holds are not run again (--resume). A cancel token stops the
+// pool from starting new jobs.
+#include <exception>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "agglo/run/journal.hpp"
+#include "agglo/run/reporter.hpp"
+
+namespace agglo::run {
+
+struct JobContext {
+  std::size_t index = 0;
+  int threads = 1;                    // OpenMP threads this job may use (already set for its thread)
+  const CancelToken* cancel = nullptr;
+};
+
+struct Job {
+  std::string key;  // stable description of the job, e.g. "v=0.18"; its hash keys the journal
+  std::function<nlohmann::json(const JobContext&)> run;
+};
+
+struct JobOutcome {
+  nlohmann::json result;
+  std::exception_ptr error;  // null when the job succeeded
+  bool reused = false;       // taken from the journal
+};
+
+struct EnsembleOptions {
+  int threads = 0;                  // total threads (0 = all cores)
+  Journal* journal = nullptr;       // optional
+  const CancelToken* cancel = nullptr;
+  Reporter* reporter = nullptr;     // optional: progress of the ensemble
+  std::string label = "jobs";
+};
+
+std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOptions& opt);
+
+// Rethrows the error of the first failed job in index order (InterruptedError first if any job was
+// cancelled, so that an interruption is reported as such).
+void rethrow_first_error(const std::vector<JobOutcome>& outcomes);
+
+// Total threads to use: `requested` if > 0, else all cores.
+int resolve_threads(int requested);
+
+}  // namespace agglo::run

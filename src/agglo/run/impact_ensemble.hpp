@@ -1,0 +1,20 @@
+#pragma once
+// The impacts of vcrit and breakup as jobs of the ensemble runner: job key "v=<speed> offset=<offset>"
+// (17 significant digits), result = result.json of the impact (io::outcome_json), so a journal entry
+// restores the outcome exactly and `--resume` repeats only the missing impacts.
+#include "agglo/impact/breakup.hpp"
+#include "agglo/impact/vcrit.hpp"
+#include "agglo/run/ensemble.hpp"
+
+namespace agglo::run {
+
+// Every impact starts from `relaxed` (one relaxation of the agglomerate serves every speed/offset).
+// `c` and `relaxed` must outlive the returned functions.
+impact::ImpactBatch impact_batch(const impact::ImpactCase& c, const dem::Particles& relaxed, EnsembleOptions opt);
+impact::SpeedBatch speed_batch(const impact::ImpactCase& c, const dem::Particles& relaxed, EnsembleOptions opt);
+
+// The journal context of an impact ensemble: the command and the resolved case without the
+// sections that only choose the jobs ([vcrit], [breakup]).
+std::string impact_context(std::string_view command, const Config& cfg);
+
+}  // namespace agglo::run

@@ -1,0 +1,67 @@
+#include "agglo/run/journal.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+namespace agglo::run {
+
+std::string hash_hex(std::string_view text) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return fmt::format("{:016x}", h);
+}
+
+std::string without_sections(const std::string& resolved_toml, const std::vector<std::string>& sections) {
+  std::istringstream in(resolved_toml);
+  std::string line, out;
+  bool skipping = false;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.front() == '[') {
+      skipping = false;
+      for (const auto& s : sections)
+        if (line == "[" + s + "]" || line.rfind("[" + s + ".", 0) == 0) skipping = true;
+    }
+    if (!skipping) out += line + '\n';
+  }
+  return out;
+}
+
+Journal::Journal(std::filesystem::path file, std::string context, bool resume)
+    : file_(std::move(file)), context_(std::move(context)) {
+  if (!resume) {
+    std::filesystem::remove(file_);
+    return;
+  }
+  std::ifstream in(file_);
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto j = nlohmann::json::parse(line, nullptr, /*allow_exceptions=*/false);
+    if (j.is_discarded() || !j.is_object() || !j.contains("result")) continue;  // torn line
+    if (j.value("context", std::string()) != context_) continue;
+    entries_[j.value("job", std::string())] = j["result"];
+  }
+}
+
+std::optional<nlohmann::json> Journal::find(const std::string& key) const {
+  std::lock_guard<std::mutex> lk(mutex_);
+  auto it = entries_.find(hash_hex(key));
+  if (it == entries_.end()) return std::nullopt;
+  return it->second;
+}
+
+void Journal::record(const std::string& key, std::size_t index, const nlohmann::json& result) {
+  const nlohmann::json j = {{"context", context_}, {"job", hash_hex(key)}, {"key", key}, {"index", index},
+                            {"result", result}};
+  std::lock_guard<std::mutex> lk(mutex_);
+  entries_[hash_hex(key)] = result;
+  std::ofstream out(file_, std::ios::app);
+  out << j.dump() << '\n';
+  out.flush();
+}
+
+}  // namespace agglo::run

@@ -1,0 +1,98 @@
+#include "agglo/run/sweep.hpp"
+
+#include <cctype>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "agglo/core/error.hpp"
+#include "agglo/run/ensemble.hpp"
+
+namespace agglo::run {
+
+std::vector<std::string> split_values(const std::string& list) {
+  std::vector<std::string> v;
+  std::string cur;
+  std::istringstream is(list);
+  while (std::getline(is, cur, ',')) {
+    const auto b = cur.find_first_not_of(" \t"), e = cur.find_last_not_of(" \t");
+    if (b == std::string::npos) throw ConfigError(fmt::format("--values '{}': empty entry", list));
+    v.push_back(cur.substr(b, e - b + 1));
+  }
+  if (v.empty()) throw ConfigError("--values: at least one value is required");
+  return v;
+}
+
+namespace {
+std::string folder_name(std::size_t index, const std::vector<std::string>& values) {
+  std::string s = fmt::format("case_{:02d}", index);
+  for (const auto& value : values) {
+    s += '_';
+    for (char c : value) s += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+') ? c : '_';
+  }
+  return s;
+}
+}  // namespace
+
+std::vector<SweepCase> sweep_grid(const std::vector<SweepAxis>& axes) {
+  if (axes.empty()) throw ConfigError("--param: a config key is required (e.g. population.1.diameter)");
+  std::size_t n = 1;
+  for (const auto& a : axes) {
+    if (a.key.find_first_not_of(" \t") == std::string::npos)
+      throw ConfigError("--param: a config key is required (e.g. population.1.diameter)");
+    if (a.values.empty()) throw ConfigError(fmt::format("--values for '{}': at least one value is required", a.key));
+    n *= a.values.size();
+  }
+  std::vector<SweepCase> cases(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t rest = i;
+    cases[i].index = i;
+    cases[i].values.resize(axes.size());
+    for (std::size_t k = axes.size(); k-- > 0;) {
+      cases[i].values[k] = axes[k].values[rest % axes[k].values.size()];
+      rest /= axes[k].values.size();
+    }
+    for (std::size_t k = 0; k < axes.size(); ++k) cases[i].assignments.push_back(axes[k].key + "=" + cases[i].values[k]);
+    cases[i].folder = folder_name(i, cases[i].values);
+  }
+  return cases;
+}
+
+namespace {
+Config case_config(const Command& cmd, const Config& base, const SweepCase& c) {
+  Config cfg = base.clone();
+  for (const auto& a : c.assignments) cfg.apply_override(a);
+  Config probe = cfg.clone();
+  cmd.parse(probe);  // every case validated before anything runs
+  return cfg;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : " ") + x;
+  return s;
+}
+}  // namespace
+
+SweepResult run_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes, const OutputDir& out,
+                      const RunContext& ctx) {
+  SweepResult res;
+  res.cases = sweep_grid(axes);
+  std::vector<Config> cfgs;
+  for (const auto& c : res.cases) cfgs.push_back(case_config(cmd, base, c));
+  std::vector<Job> jobs;
+  for (std::size_t i = 0; i < res.cases.size(); ++i)
+    jobs.push_back({joined(res.cases[i].assignments), [&, i](const JobContext& jc) {
+                      RunContext sub{nullptr, jc.cancel, jc.threads, ctx.resume};
+                      nlohmann::json extra = {{"sweep_assignment", joined(res.cases[i].assignments)}};
+                      return execute(cmd, cfgs[i], out.path() / res.cases[i].folder, sub, extra).summary;
+                    }});
+  Journal journal(out.file("journal.jsonl"), hash_hex(std::string(cmd.name()) + "\n" + base.resolved_toml()),
+                  ctx.resume);
+  const auto outcomes = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), "sweep"});
+  rethrow_first_error(outcomes);
+  for (const auto& o : outcomes) res.summaries.push_back(o.result);
+  return res;
+}
+
+}  // namespace agglo::run

@@ -1,0 +1,44 @@
+#pragma once
+// Parameter study: independent runs of any command over a grid of config values. Each case is the
+// base case with `key=value` applied for every axis (Config::apply_override), validated before anything
+// runs, run in its own folder case_<index>_<values> by run::execute, and its summary becomes one row of
+// sweep.csv. Cases are jobs of the ensemble runner (threads shared, results in grid order whatever the
+// scheduling, journaled so that `--resume` repeats only the missing cases).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "agglo/run/command.hpp"
+
+namespace agglo::run {
+
+struct SweepAxis {
+  std::string key;                  // dotted config key, e.g. population.1.diameter
+  std::vector<std::string> values;  // TOML values as given
+};
+
+struct SweepCase {
+  std::size_t index = 0;
+  std::vector<std::string> values;       // one per axis
+  std::vector<std::string> assignments;  // "key=value" per axis
+  std::string folder;                    // case_<index>_<values>
+};
+
+// "v1,v2,..." -> values (whitespace trimmed; empty entries rejected with ConfigError).
+std::vector<std::string> split_values(const std::string& list);
+
+// The grid (last axis fastest); ConfigError on an empty key or no values.
+std::vector<SweepCase> sweep_grid(const std::vector<SweepAxis>& axes);
+
+struct SweepResult {
+  std::vector<SweepCase> cases;
+  std::vector<nlohmann::json> summaries;  // by case index
+};
+
+// Runs `cmd` for every case of the grid under `out`. Throws the first failure (in case order)
+// after every case has run.
+SweepResult run_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes, const OutputDir& out,
+                      const RunContext& ctx);
+
+}  // namespace agglo::run
