@@ -106,10 +106,10 @@ def check_markdown(root, rel, lines, report):
 
 def check(root, out=sys.stdout):
     """Prints every finding as file:line: message; returns their number."""
-    findings = []
+    findings = set()
 
     def report(rel, n, msg):
-        findings.append(f"{rel}:{n}: {msg}")
+        findings.add((rel, n, msg))
 
     for rel in tracked_files(root):
         text = read_text(os.path.join(root, rel))
@@ -127,9 +127,9 @@ def check(root, out=sys.stdout):
                     report(rel, n, f"names a documentation page that does not exist: {m.group(1)}")
         if rel.endswith(".md"):
             check_markdown(root, rel, lines, report)
-    for f in sorted(set(findings)):
-        print(f, file=out)
-    return len(set(findings))
+    for rel, n, msg in sorted(findings):
+        print(f"{rel}:{n}: {msg}", file=out)
+    return len(findings)
 
 
 def write(root, rel, text):
