@@ -1,10 +1,10 @@
-// One BEM solve of the seed's 5-sphere configuration (MODEL A.3 / seed 000): a tetrahedron of
+// One BEM solve of the seed's 5-sphere configuration (docs/model.md §A.3 / seed 000): a tetrahedron of
 // four touching r = 10 um spheres with alternating charges +-10 uC/m^2 * 4 pi r^2 and a projectile
 // sphere touching the top one, kappa_p = 15, electrostatic radius r/(1 + g_min/2), g_min = 0.01
-// (MODEL B.3). 2000 patches per sphere, direct and FMM matvec; cold start and warm start after
+// (docs/model.md §B.3). 2000 patches per sphere, direct and FMM matvec; cold start and warm start after
 // moving the projectile by 1 % of the gap. Counters: iterations, matvecs, FMM order, force on the
 // projectile, and its relative difference from the direct solve at the same position.
-// Also: accuracy against the MODEL B.4 table vs patch count (BM_BemTwoSphereAccuracy). Run:
+// Also: accuracy against the docs/model.md §B.4 table vs patch count (BM_BemTwoSphereAccuracy). Run:
 //   OMP_NUM_THREADS=2 ./bench_bem --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
@@ -66,7 +66,7 @@ void BM_BemFiveSpheres(benchmark::State& st) {
   st.counters["rel_dF_vs_direct"] = norm(s.force[4] - ref) / norm(ref);
 }
 
-// Accuracy against MODEL B.4 (two equal spheres, force on sphere 2 / F0) vs patches per sphere.
+// Accuracy against docs/model.md §B.4 (two equal spheres, force on sphere 2 / F0) vs patches per sphere.
 struct TableEntry {
   double kp, h, c1, c2, ref;
 };

@@ -1,4 +1,4 @@
-// One electrostatic solve of the seed's 5-sphere configuration near contact (MODEL A.3/B.3):
+// One electrostatic solve of the seed's 5-sphere configuration near contact (docs/model.md §A.3/§B.3):
 // 4 spheres r = 10 um in a regular tetrahedron at the JKR equilibrium overlap, charges
 // +-10 uC/m^2 * 4 pi r^2 alternating, kappa_p = 15, plus a neutral kappa 15 projectile touching
 // one edge; radii shrunk with g_min = 0.01 (electrostatic gaps ~0.01 r). Each solver's force
@@ -23,7 +23,7 @@ namespace {
 
 Problem seed_configuration() {
   const double r = 10e-6, pi = constants::pi;
-  // JKR equilibrium overlap (MODEL A.3 defaults): delta0 = a0^2 / (3 R*)
+  // JKR equilibrium overlap (docs/model.md §A.3 defaults): delta0 = a0^2 / (3 R*)
   const double E = 1e9, nu = 0.33, gamma = 0.01, Rs = r / 2;
   const double Es = E / (2 * (1 - nu * nu));
   const double a0 = std::cbrt(9 * pi * gamma * Rs * Rs / Es);

@@ -54,7 +54,7 @@ echo "== set-up: e = $E_REST, dt = $DT s; overrides: ${SETS[*]}"
 rm -rf "$OUT"; mkdir -p "$OUT"
 
 # 4. What LAMMPS' jkr coefficients mean: equilibrium, pull-off force and break point, snap-in.
-echo "== LAMMPS JKR check (two spheres, no damping; units of MODEL.md A.2)"
+echo "== LAMMPS JKR check (two spheres, no damping; units of docs/model.md §A.2)"
 $PY "$SRC/bench/lammps/check_jkr_lammps.py" "$OUT/lammps_jkr_check" | tee "$OUT/lammps_jkr_check.txt"
 
 # 5. v_crit in both codes.

@@ -3,7 +3,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PKGS="build-essential cmake pkg-config libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
-      nlohmann-json3-dev librandom123-dev libgtest-dev libbenchmark-dev python3-matplotlib python3-numpy"
+      nlohmann-json3-dev librandom123-dev libgtest-dev libbenchmark-dev python3-matplotlib python3-numpy
+      clang-tidy"
 missing=""
 for p in $PKGS; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
 if [ -n "$missing" ]; then

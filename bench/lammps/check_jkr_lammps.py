@@ -3,11 +3,11 @@
 
 Two spheres (r = 10 um, E = 1e9, nu = 0.33, gamma = 0.01, no damping): one at rest, the other moved
 at constant speed with `fix move` (1) apart from an overlap of 2 delta_C, (2) towards it from a gap
-of 0.67 delta_C. From the pair force on the resting sphere it prints, in units of MODEL.md A.2
+of 0.67 delta_C. From the pair force on the resting sphere it prints, in units of docs/model.md §A.2
 (F_C = 3 pi gamma R, delta_C = a0^2 / (2 6^(1/3) R), E* = E / (2 (1 - nu^2))):
-  - the overlap where F = 0 (MODEL: delta0 = 1.21141 delta_C),
+  - the overlap where F = 0 (docs/model.md §A.4: delta0 = 1.21141 delta_C),
   - the force minimum and where the contact breaks (LAMMPS rule: -F_C at -0.48075 delta_C),
-  - the overlap and force at first touch on approach (MODEL: delta = 0, F = -8/9 F_C).
+  - the overlap and force at first touch on approach (docs/model.md §A.4: delta = 0, F = -8/9 F_C).
 Usage: check_jkr_lammps.py [WORKDIR]
 """
 import math
@@ -83,14 +83,14 @@ def main():
     d_eq = d1 - f1 * (d2 - d1) / (f2 - f1)
     kmin = min(range(len(pull)), key=lambda k: pull[k][1])
     brk = next(k for k in range(kmin, len(pull)) if pull[k][1] == 0.0)
-    print(f"pull-off: F = 0 at delta = {d_eq / dC:.5f} delta_C (MODEL 1.21141)")
+    print(f"pull-off: F = 0 at delta = {d_eq / dC:.5f} delta_C (docs/model.md: 1.21141)")
     print(f"          min F = {pull[kmin][1] / Fc:.5f} F_C at delta = {pull[kmin][0] / dC:.5f} delta_C "
-          f"(MODEL -1 at -0.48075)")
+          f"(docs/model.md: -1 at -0.48075)")
     print(f"          force vanishes between delta = {pull[brk - 1][0] / dC:.5f} and {pull[brk][0] / dC:.5f} delta_C")
     push = run(wd, "push", -0.67 * dC, -1e-4, int(1.0 * dC / (1e-4 * dt)))
     first = next(k for k in range(len(push)) if push[k][1] != 0.0)
     print(f"approach: first force at delta = {push[first][0] / dC:.5f} delta_C (previous step "
-          f"{push[first - 1][0] / dC:.5f}), F = {push[first][1] / Fc:.5f} F_C (MODEL: delta >= 0, -8/9 = -0.88889 "
+          f"{push[first - 1][0] / dC:.5f}), F = {push[first][1] / Fc:.5f} F_C (docs/model.md: delta >= 0, -8/9 = -0.88889 "
           f"at delta = 0)")
 
 

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Lint: no function in src/ longer than 80 lines (clang-tidy readability-function-size, LineThreshold
+# 80, counted including blank lines and comments). Checks every src/**/*.cpp, and the project headers
+# they include, with the compile flags of BUILD_DIR/compile_commands.json (CMake writes it at
+# configure time). Prints each offending function with its length; exit 1 if there is any (or if a
+# file cannot be analysed), 0 otherwise. Runs two clang-tidy processes at a time.
+# Usage: scripts/check_function_size.sh BUILD_DIR [FILE.cpp ...]   (default: every src/**/*.cpp)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+[ $# -ge 1 ] || { echo "usage: $0 BUILD_DIR [FILE.cpp ...]" >&2; exit 2; }
+build=$(cd "$1" && pwd)
+shift
+if ! command -v clang-tidy >/dev/null 2>&1; then
+  echo "check_function_size: clang-tidy not found (Debian package clang-tidy; scripts/setup.sh installs it)" >&2
+  exit 1
+fi
+[ -f "$build/compile_commands.json" ] || { echo "check_function_size: no $build/compile_commands.json" >&2; exit 1; }
+
+cd "$root"
+if [ $# -gt 0 ]; then
+  files=("$@")
+else
+  mapfile -t files < <(find src -name '*.cpp' | sort)
+fi
+[ ${#files[@]} -gt 0 ] || { echo "check_function_size: no source files" >&2; exit 1; }
+
+logs=$(mktemp -d)
+trap 'rm -rf "$logs"' EXIT
+config='{CheckOptions: [{key: readability-function-size.LineThreshold, value: 80}]}'
+export build logs config root
+# One log and one exit status per file, so that the two parallel processes never interleave output.
+printf '%s\0' "${files[@]}" | xargs -0 -n 1 -P 2 bash -c '
+  f=$1; log="$logs/$(printf "%s" "$f" | tr "/" "%")"
+  clang-tidy -p "$build" --quiet --checks="-*,readability-function-size" --config="$config" \
+    --header-filter="^$root/src/" "$f" >"$log.out" 2>"$log.err"
+  echo $? >"$log.rc"' _
+
+status=0
+for rc in "$logs"/*.rc; do
+  if [ "$(cat "$rc")" != 0 ] && ! grep -q 'readability-function-size' "${rc%.rc}.out"; then
+    echo "check_function_size: clang-tidy failed on $(basename "${rc%.rc}" | tr '%' '/'):" >&2
+    grep -h 'error:' "${rc%.rc}.out" "${rc%.rc}.err" | head -5 >&2 || true
+    status=1
+  fi
+done
+# Each finding once (a header is reported by every file that includes it):
+#   file:line:col: function 'name' has N lines (limit 80)
+found=$(cat "$logs"/*.out | awk '
+  /warning: function .* exceeds recommended size\/complexity thresholds \[readability-function-size\]/ {
+    loc = $1; sub(/: *$/, "", loc); fn = $0; sub(/.*function /, "", fn); sub(/ exceeds.*/, "", fn); next }
+  loc != "" && /note: [0-9]+ lines including whitespace and comments/ {
+    n = $0; sub(/.*note: /, "", n); sub(/ lines including.*threshold /, " lines (limit ", n)
+    print loc ": function " fn " has " n; loc = "" }
+' | sed "s|^$root/||" | sort -u)
+if [ -n "$found" ]; then
+  echo "$found"
+  echo "check_function_size: $(printf '%s\n' "$found" | wc -l) function(s) longer than 80 lines" >&2
+  status=1
+fi
+[ $status -eq 0 ] && echo "check_function_size: ${#files[@]} files, no function longer than 80 lines"
+exit $status
