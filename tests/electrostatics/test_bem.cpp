@@ -6,6 +6,7 @@
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/electrostatics/bem/bem_solver.hpp"
+#include "agglo/electrostatics/validate_spheres.hpp"
 
 using namespace agglo;
 using namespace agglo::es;
@@ -171,10 +172,19 @@ TEST(Bem, ErrorsAreReported) {
   EXPECT_THROW(ok->solve(two_spheres(10, -0.1, 1, -1)), NumericalError);  // overlap
   Problem bad = two_spheres(10, 0.1, 1, -1);
   bad.spheres[0].permittivity = 0.0;
-  EXPECT_THROW(ok->solve(bad), ConfigError);
+  EXPECT_THROW(ok->solve(bad), InvalidSpheres);
   bad = two_spheres(10, 0.1, 1, -1);
   bad.spheres[1].radius = 0.0;
-  EXPECT_THROW(ok->solve(bad), ConfigError);
+  EXPECT_THROW(ok->solve(bad), InvalidSpheres);
   SolverOptions m = bem_opts(200, "fast");
   EXPECT_THROW(make_bem_solver(m), ConfigError);
+}
+
+// The fewest patches accepted is bem::kMinPatchesPerSphere (the parser's lower bound as well).
+TEST(Bem, MinimumPatchCount) {
+  EXPECT_THROW(make_bem_solver(bem_opts(bem::kMinPatchesPerSphere - 1)), ConfigError);
+  auto s = make_bem_solver(bem_opts(bem::kMinPatchesPerSphere));
+  const auto sol = s->solve(two_spheres(2.5, 1.0, 1, -1));
+  EXPECT_EQ(sol.stats.degree, bem::kMinPatchesPerSphere);
+  EXPECT_LT(sol.force[1].x, 0.0);  // opposite charges attract even on the coarsest surface
 }

@@ -4,11 +4,9 @@
 #include <chrono>
 #include <cmath>
 
-#include <fmt/format.h>
-
 #include "agglo/core/constants.hpp"
-#include "agglo/core/error.hpp"
 #include "agglo/electrostatics/sphere_mesh.hpp"
+#include "agglo/electrostatics/validate_spheres.hpp"
 
 namespace agglo::es {
 
@@ -25,8 +23,8 @@ class CoulombSolver final : public Solver {
   Solution solve(const Problem& p) override {
     auto t0 = std::chrono::steady_clock::now();
     const int N = static_cast<int>(p.spheres.size());
+    validate_spheres(p);
     const double k0 = p.medium_permittivity;
-    if (!(k0 > 0)) throw NumericalError(fmt::format("coulomb: medium permittivity must be > 0 (got {})", k0));
     Solution sol;
     sol.force.assign(N, Vec3{});
     sol.torque.assign(N, Vec3{});
@@ -34,7 +32,6 @@ class CoulombSolver final : public Solver {
     double U = 0.0;
     for (int i = 0; i < N; ++i) {
       const auto& a = p.spheres[i];
-      if (!(a.radius > 0)) throw NumericalError(fmt::format("coulomb: sphere {} has radius {} (must be > 0)", i, a.radius));
       // self energy of the uniform shell: q^2 / (8 pi eps0 kappa0 r); applied potential -E.x
       U += 0.5 * kc * a.charge * a.charge / a.radius - 0.5 * a.charge * dot(p.external_field, a.center);
       sol.force[i] += p.external_field * a.charge;
@@ -42,9 +39,6 @@ class CoulombSolver final : public Solver {
         const auto& b = p.spheres[k];
         Vec3 d = a.center - b.center;
         double r = norm(d);
-        if (r <= a.radius + b.radius)
-          throw NumericalError(fmt::format("coulomb: spheres {} and {} overlap (centre distance {:.6g} m <= {:.6g} m)",
-                                           i, k, r, a.radius + b.radius));
         Vec3 f = d * (kc * a.charge * b.charge / (r * r * r));
         sol.force[i] += f;
         sol.force[k] -= f;

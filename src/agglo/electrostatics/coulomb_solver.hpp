@@ -5,6 +5,7 @@
 //   U   = sum_i q_i^2 / (8 pi eps0 kappa_0 a_i) + sum_{i<k} q_i q_k / (4 pi eps0 kappa_0 |x_i - x_k|)
 //         - 1/2 sum_i q_i E_ext . x_i      (= 1/2 \int phi sigma_f dS, self energy included).
 // Surface samples: uniform sigma_f with sigma_b = sigma_f (1/kappa_0 - 1) (net charge q/kappa_0).
+// Invalid input (validate_spheres.hpp) throws InvalidSpheres.
 #include <memory>
 
 #include "agglo/electrostatics/solver.hpp"

@@ -20,6 +20,76 @@ double dot(std::span<const double> w, std::span<const double> a, std::span<const
   return s;
 }
 
+// The workspace seen as a Krylov basis V(0..m) of length-n vectors and an (m+1) x m Hessenberg matrix.
+struct Krylov {
+  Krylov(GmresWorkspace& ws, std::size_t n_, int m_) : w(ws), n(n_), m(m_) {
+    w.V.resize((static_cast<std::size_t>(m) + 1) * n);
+    w.H.resize(static_cast<std::size_t>(m + 1) * m);
+    w.cs.resize(m);
+    w.sn.resize(m);
+    w.g.resize(m + 1);
+  }
+  std::span<double> V(int k) const { return std::span<double>(w.V.data() + static_cast<std::size_t>(k) * n, n); }
+  double& h(int i, int k) const { return w.H[static_cast<std::size_t>(i) * m + k]; }
+  GmresWorkspace& w;
+  std::size_t n;
+  int m;
+};
+
+// Arnoldi step k: V(k+1) = A V(k) orthogonalised against V(0..k) (modified Gram-Schmidt) and
+// normalised; column k of H is reduced by the earlier Givens rotations and a new one that zeroes
+// h(k+1, k), applied to g as well (|g[k+1]| is then the residual norm of the k+1-step least-squares
+// solution). Returns the norm h(k+1, k) before the rotation (0: the Krylov space is invariant).
+double arnoldi_step(const LinearOperator& A, std::span<const double> weights, const Krylov& K, int k) {
+  auto& cs = K.w.cs;
+  auto& sn = K.w.sn;
+  auto& g = K.w.g;
+  const std::span<double> v = K.V(k + 1);
+  A(K.V(k), v);
+  for (int i = 0; i <= k; ++i) {
+    const std::span<const double> vi = K.V(i);
+    const double d = dot(weights, v, vi);
+    K.h(i, k) = d;
+    for (std::size_t j = 0; j < K.n; ++j) v[j] -= d * vi[j];
+  }
+  const double hn = std::sqrt(dot(weights, v, v));
+  K.h(k + 1, k) = hn;
+  if (hn > 0.0)
+    for (std::size_t j = 0; j < K.n; ++j) v[j] /= hn;
+  for (int i = 0; i < k; ++i) {
+    const double t = cs[i] * K.h(i, k) + sn[i] * K.h(i + 1, k);
+    K.h(i + 1, k) = -sn[i] * K.h(i, k) + cs[i] * K.h(i + 1, k);
+    K.h(i, k) = t;
+  }
+  const double den = std::hypot(K.h(k, k), K.h(k + 1, k));
+  cs[k] = den > 0.0 ? K.h(k, k) / den : 1.0;
+  sn[k] = den > 0.0 ? K.h(k + 1, k) / den : 0.0;
+  K.h(k, k) = den;
+  K.h(k + 1, k) = 0.0;
+  g[k + 1] = -sn[k] * g[k];
+  g[k] = cs[k] * g[k];
+  return hn;
+}
+
+// Back substitution for the k x k upper triangular system H y = g, then x += V y. A zero pivot
+// (singular operator) leaves that component out; returns whether one was met.
+bool update_solution(const Krylov& K, int k, std::span<double> x) {
+  auto& y = K.w.y;
+  y.assign(k, 0.0);
+  bool zero_pivot = false;
+  for (int i = k - 1; i >= 0; --i) {
+    double s = K.w.g[i];
+    for (int j = i + 1; j < k; ++j) s -= K.h(i, j) * y[j];
+    zero_pivot = zero_pivot || K.h(i, i) == 0.0;
+    y[i] = K.h(i, i) != 0.0 ? s / K.h(i, i) : 0.0;
+  }
+  for (int i = 0; i < k; ++i) {
+    const std::span<const double> vi = K.V(i);
+    for (std::size_t j = 0; j < K.n; ++j) x[j] += y[i] * vi[j];
+  }
+  return zero_pivot;
+}
+
 }  // namespace
 
 GmresResult gmres(const LinearOperator& A, std::span<const double> b, std::span<double> x,
@@ -43,22 +113,11 @@ GmresResult gmres(const LinearOperator& A, std::span<const double> b, std::span<
 
   const int m = std::max(1, std::min(opt.restart, max_iterations));
   GmresWorkspace local;
-  GmresWorkspace& w = ws ? *ws : local;
-  w.V.resize((static_cast<std::size_t>(m) + 1) * n);
-  w.H.resize(static_cast<std::size_t>(m + 1) * m);
-  w.cs.resize(m);
-  w.sn.resize(m);
-  w.g.resize(m + 1);
-  auto V = [&](int k) { return std::span<double>(w.V.data() + static_cast<std::size_t>(k) * n, n); };
-  auto h = [&](int i, int k) -> double& { return w.H[static_cast<std::size_t>(i) * m + k]; };
-  auto& cs = w.cs;
-  auto& sn = w.sn;
-  auto& g = w.g;
-  auto& y = w.y;
-
+  const Krylov K(ws ? *ws : local, n, m);
+  auto& g = K.w.g;
   while (true) {
     // Explicit residual r = b - A x; its normalisation is the first basis vector.
-    const std::span<double> r = V(0);
+    const std::span<double> r = K.V(0);
     A(x, r);
     ++res.matvecs;
     for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
@@ -74,58 +133,19 @@ GmresResult gmres(const LinearOperator& A, std::span<const double> b, std::span<
     std::fill(g.begin(), g.end(), 0.0);
     g[0] = beta;
 
-    // Arnoldi (modified Gram-Schmidt) with Givens rotations; g holds the rotated right-hand side,
-    // |g[k+1]| is the residual norm of the k+1-step least-squares solution.
     int k = 0;
     bool estimate_converged = false;
     for (; k < m && res.iterations < max_iterations; ++k) {
-      const std::span<double> v = V(k + 1);
-      A(V(k), v);
+      const double hn = arnoldi_step(A, weights, K, k);
       ++res.matvecs;
       ++res.iterations;
-      for (int i = 0; i <= k; ++i) {
-        const std::span<const double> vi = V(i);
-        const double d = dot(weights, v, vi);
-        h(i, k) = d;
-        for (std::size_t j = 0; j < n; ++j) v[j] -= d * vi[j];
-      }
-      const double hn = std::sqrt(dot(weights, v, v));
-      h(k + 1, k) = hn;
-      if (hn > 0.0)
-        for (std::size_t j = 0; j < n; ++j) v[j] /= hn;
-      for (int i = 0; i < k; ++i) {
-        const double t = cs[i] * h(i, k) + sn[i] * h(i + 1, k);
-        h(i + 1, k) = -sn[i] * h(i, k) + cs[i] * h(i + 1, k);
-        h(i, k) = t;
-      }
-      const double den = std::hypot(h(k, k), h(k + 1, k));
-      cs[k] = den > 0.0 ? h(k, k) / den : 1.0;
-      sn[k] = den > 0.0 ? h(k + 1, k) / den : 0.0;
-      h(k, k) = den;
-      h(k + 1, k) = 0.0;
-      g[k + 1] = -sn[k] * g[k];
-      g[k] = cs[k] * g[k];
       if (estimate_small(std::abs(g[k + 1])) || hn == 0.0) {
         estimate_converged = true;
         ++k;
         break;
       }
     }
-
-    // Back substitution for the k x k upper triangular system, then x += V y.
-    // A zero pivot (singular operator) leaves that component out; the estimate is then not trusted.
-    y.assign(k, 0.0);
-    bool zero_pivot = false;
-    for (int i = k - 1; i >= 0; --i) {
-      double s = g[i];
-      for (int j = i + 1; j < k; ++j) s -= h(i, j) * y[j];
-      zero_pivot = zero_pivot || h(i, i) == 0.0;
-      y[i] = h(i, i) != 0.0 ? s / h(i, i) : 0.0;
-    }
-    for (int i = 0; i < k; ++i) {
-      const std::span<const double> vi = V(i);
-      for (std::size_t j = 0; j < n; ++j) x[j] += y[i] * vi[j];
-    }
+    const bool zero_pivot = update_solution(K, k, x);
 
     const bool cycle_final = estimate_converged || res.iterations >= max_iterations;
     if (!opt.recheck_true_residual && !zero_pivot && cycle_final) {

@@ -8,6 +8,7 @@
 //
 // Solvers are selected by name ("coulomb", "spectral", "bem") through make_solver().
 #include <array>
+#include <compare>
 #include <memory>
 #include <string>
 #include <vector>
@@ -67,6 +68,8 @@ class Solver {
   virtual std::vector<std::array<int, 3>> surface_triangles() const { return {}; }
 };
 
+// Every field is a solver setting. The defaulted comparison covers all fields, present and future
+// (caches of solver results, e.g. impact/pair_table.hpp, key on the whole struct through it).
 struct SolverOptions {
   std::string solver = "spectral";  // "coulomb" | "spectral" | "bem"
   // spectral
@@ -80,6 +83,8 @@ struct SolverOptions {
   std::string matvec = "fmm";       // "fmm" | "direct"
   int fmm_order = 0;                // 0 = chosen from tolerance (1-2 digits tighter than GMRES)
   int fmm_leaf_size = 64;
+
+  friend auto operator<=>(const SolverOptions&, const SolverOptions&) = default;
 };
 
 std::unique_ptr<Solver> make_solver(const SolverOptions& opt);

@@ -103,8 +103,9 @@ void PairTable::eval(double h, double qi, double qj, double& force, double& ener
 std::shared_ptr<const PairTable> pair_table(const es::SolverOptions& opt, const PairKey& key, double h_min,
                                             double h_max) {
   static std::mutex mtx;
-  static std::map<std::tuple<PairKey, std::string, int, double, double, double>, std::shared_ptr<const PairTable>> cache;
-  auto ck = std::make_tuple(key, opt.solver, opt.max_degree, opt.target_accuracy, h_min, h_max);
+  // Keyed on the complete solver settings (SolverOptions' defaulted comparison: every field).
+  static std::map<std::tuple<PairKey, es::SolverOptions, double, double>, std::shared_ptr<const PairTable>> cache;
+  auto ck = std::make_tuple(key, opt, h_min, h_max);
   std::lock_guard<std::mutex> lock(mtx);  // held while building: concurrent runs wait, no double work
   auto it = cache.find(ck);
   if (it != cache.end()) return it->second;

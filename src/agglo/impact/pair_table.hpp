@@ -1,6 +1,6 @@
 #pragma once
 // Isolated-pair electrostatics tabulated against the surface gap, for the "pair-corrected hold" of
-// the DEM coupling (docs/electrostatics_coupling.md).
+// the DEM coupling (docs/electrostatics.md, "Coupling to the DEM").
 //
 // For two spheres (radii r_i, r_j, permittivities k_i, k_j in a medium k_0) the force on j along the
 // line of centres and the energy are quadratic forms in the free charges:
@@ -38,7 +38,8 @@ class PairTable {
   std::array<std::vector<double>, 6> m_;  // spline slopes d y / d s
 };
 
-// Process-wide cache: tables are built once per (radii, permittivities, medium) and solver options.
+// Process-wide cache: tables are built once per (radii, permittivities, medium), gap range and
+// complete solver settings (every field of es::SolverOptions, compared through its operator<=>).
 std::shared_ptr<const PairTable> pair_table(const es::SolverOptions& opt, const PairKey& key, double h_min,
                                             double h_max);
 

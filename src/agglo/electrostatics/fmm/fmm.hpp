@@ -5,7 +5,8 @@
 //   phi_i = sum_j q_j / |t_i - s_j|,     E_i = -grad phi = sum_j q_j (t_i - s_j) / |t_i - s_j|^3
 // skipping zero-distance pairs (self interaction when targets == sources).
 // Operators: P2M, M2M, M2L (truncated at n + j <= p), L2L, L2P (potential and gradient from the
-// degree-0/1 coefficients of the local expansion shifted to the target), P2P near field.
+// degree-0/1 coefficients of the local expansion shifted to the target), P2P near field; one
+// function each in operators.hpp (with their error bounds), evaluate() runs the passes.
 // Accuracy is set by the expansion order p and the opening angle theta (MAC
 // r_T + r_S < theta |c_T - c_S|); measured errors vs p are in docs/bem_fmm.md.
 // The tree and interaction lists are built once in the constructor and reused by every

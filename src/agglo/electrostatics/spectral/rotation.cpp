@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-
 #include "agglo/electrostatics/spectral/harmonics.hpp"
 #include "agglo/electrostatics/spectral/dense_ops.hpp"
 
@@ -54,7 +53,16 @@ void FrameRotation::build(const Vec3& e, int L, int M) {
     cosa_[m] = std::cos(m * a);
     sina_[m] = std::sin(m * a);
   }
-  // Wigner d^j_{a b}(beta), a >= |b|, j = 0..L. Offsets: sum_{k<j} (k+1)^2.
+  grow_tables(L);
+  std::vector<std::size_t> doff(L + 2, 0);
+  for (int j = 0; j <= L; ++j) doff[j + 1] = doff[j] + std::size_t(j + 1) * (j + 1);
+  d_.resize(doff[L + 1]);
+  wigner_d(b, doff);
+  real_blocks(doff);
+}
+
+// log k! and the square roots sqrt(j^2 - m^2) (with inverses) used by the d recurrence; grow only.
+void FrameRotation::grow_tables(int L) {
   if (static_cast<int>(lf_.size()) < 2 * L + 2) {
     lf_.resize(2 * L + 2);
     for (int k = 0; k < 2 * L + 2; ++k) lf_[k] = std::lgamma(k + 1.0);
@@ -73,9 +81,11 @@ void FrameRotation::build(const Vec3& e, int L, int M) {
       }
     }
   }
-  std::vector<std::size_t> doff(L + 2, 0);
-  for (int j = 0; j <= L; ++j) doff[j + 1] = doff[j] + std::size_t(j + 1) * (j + 1);
-  d_.resize(doff[L + 1]);
+}
+
+// Wigner d^j_{p q}(b), p >= |q|, j = 0..L_, into d_ at doff[j] + p^2 + p + q (doff[j] = sum_{k<j} (k+1)^2).
+void FrameRotation::wigner_d(double b, const std::vector<std::size_t>& doff) {
+  const int L = L_;
   const double cb = std::cos(b), ch = std::cos(0.5 * b), sh = std::sin(0.5 * b);
   const double lc = std::log(ch), ls = std::log(sh);
   const std::size_t S1 = std::size_t(sqL_) + 1;
@@ -121,6 +131,11 @@ void FrameRotation::build(const Vec3& e, int L, int M) {
       }
     }
   }
+}
+
+// The real cos/sin blocks of every degree (blk_, off_) from d_.
+void FrameRotation::real_blocks(const std::vector<std::size_t>& doff) {
+  const int L = L_;
   // Real blocks. G_{m' m} = coefficient of Z_{m'} in Z_m(R^{-1} x), R = R_y(b), orthonormal real Z;
   // in our basis (Y = Z * s_m * const, s_0 = 1, s_m = 1/sqrt2) the frame map is
   // c'_{m'} = sum_m G_{m m'} (s_m / s_{m'}) c_m. Needed: d^l_{m, +-m'} for m' <= min(l, M), read

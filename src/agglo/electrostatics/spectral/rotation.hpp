@@ -31,6 +31,9 @@ class FrameRotation {
   void from_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1, double* out2) const;
 
  private:
+  void grow_tables(int L);
+  void wigner_d(double b, const std::vector<std::size_t>& doff);
+  void real_blocks(const std::vector<std::size_t>& doff);
   int L_ = -1, M_ = -1;
   std::vector<double> cosa_, sina_;   // cos(m a), sin(m a), m = 0..L
   std::vector<double> blk_;           // per l: cos block (l+1)^2 then sin block l^2, row-major

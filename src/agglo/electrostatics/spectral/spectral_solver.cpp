@@ -15,6 +15,7 @@
 #include "agglo/electrostatics/spectral/rotation.hpp"
 #include "agglo/electrostatics/spectral/translation.hpp"
 #include "agglo/electrostatics/sphere_mesh.hpp"
+#include "agglo/electrostatics/validate_spheres.hpp"
 
 namespace agglo::es {
 
@@ -45,6 +46,11 @@ class SpectralSolver final : public Solver {
   };
   void matvec_M(const double* beta, double* alpha);  // alpha = M beta (sphere-sphere part)
   int choose_degree(const Problem& p, double& est_err);
+  void build_pairs(const Problem& p);
+  void applied_field(const Problem& p, std::vector<double>& alpha_ext, std::vector<double>& rhs);
+  void apply_system(std::span<const double> x, std::span<double> y);
+  GmresResult solve_multipoles(const Problem& p, const std::vector<double>& rhs, double tol);
+  Solution forces_and_energy(const Problem& p) const;
 
   SolverOptions opt_;
   sh::AxialTranslation T_;
@@ -113,35 +119,9 @@ void SpectralSolver::matvec_M(const double* beta, double* alpha) {
   }
 }
 
-Solution SpectralSolver::solve(const Problem& p) {
-  auto t0 = std::chrono::steady_clock::now();
-  const int N = static_cast<int>(p.spheres.size());
-  const double k0 = p.medium_permittivity;
-  if (!(k0 > 0)) throw NumericalError(fmt::format("spectral: medium permittivity must be > 0 (got {})", k0));
-  for (int i = 0; i < N; ++i) {
-    const auto& s = p.spheres[i];
-    if (!(s.radius > 0)) throw NumericalError(fmt::format("spectral: sphere {} has radius {} (must be > 0)", i, s.radius));
-    if (!(s.permittivity > 0))
-      throw NumericalError(fmt::format("spectral: sphere {} has permittivity {} (must be > 0)", i, s.permittivity));
-    if (!isfinite(s.center) || !std::isfinite(s.charge))
-      throw NumericalError(fmt::format("spectral: sphere {} has a non-finite position or charge", i));
-    for (int k = 0; k < i; ++k) {
-      const auto& o = p.spheres[k];
-      double t = norm(s.center - o.center);
-      if (t <= s.radius + o.radius)
-        throw NumericalError(fmt::format(
-            "spectral: spheres {} and {} overlap (centre distance {:.6g} m <= sum of radii {:.6g} m)", k, i, t,
-            s.radius + o.radius));
-    }
-  }
-  double est_err = 0.0;
-  const int L = choose_degree(p, est_err);
-  L_ = L;
-  N_ = N;
-  nc_ = sh::ncoef(L);
-  if (L > T_.degree()) T_.prepare(std::max(L, std::min(opt_.max_degree_limit, L + 8)));  // grows only
-
-  // Pairs with their own truncation degree.
+// Pairs with their own truncation degree and frame order (at 1e-3 x target accuracy).
+void SpectralSolver::build_pairs(const Problem& p) {
+  const int N = N_;
   pairs_.resize(std::size_t(N) * (N - 1) / 2);
   const double tol_pair = 1e-3 * opt_.target_accuracy;
   std::size_t q = 0;
@@ -157,22 +137,25 @@ Solution SpectralSolver::solve(const Problem& p) {
       pr.ui = a.radius / t;
       pr.uk = b.radius / t;
       auto r = sh::limit_ratios(a.radius, b.radius, t);
-      pr.L = std::min(L, std::max(2, sh::degree_for(r, tol_pair)));
+      pr.L = std::min(L_, std::max(2, sh::degree_for(r, tol_pair)));
       pr.M = T_.order_cutoff(pr.L, pr.ui, pr.uk, tol_pair);
       pr.R.build(d, pr.L, pr.M);
     }
-  bi_.assign(nc_, 0.0);
-  bk_ = ai_ = ak_ = tmp_ = bi_;
+}
 
-  // gamma_l per sphere
+// gamma_l per sphere; the applied field's local coefficients alpha_ext (phi = -E.x, scaled by
+// a^l) and the right-hand side rhs = -gamma alpha_ext (l >= 1), q / (4 pi eps0 kappa0 a) (l = 0).
+void SpectralSolver::applied_field(const Problem& p, std::vector<double>& alpha_ext, std::vector<double>& rhs) {
+  const int N = N_, L = L_;
+  const double k0 = p.medium_permittivity;
   gamma_.assign(std::size_t(N) * (L + 1), 0.0);
   for (int i = 0; i < N; ++i) {
     double ki = p.spheres[i].permittivity;
     for (int l = 1; l <= L; ++l) gamma_[i * (L + 1) + l] = (ki - k0) * l / ((ki + k0) * l + k0);
   }
-  // applied field: phi = -E.x, local coefficients about x_i (scaled by a^l)
   const std::size_t n = std::size_t(N) * nc_;
-  std::vector<double> alpha_ext(n, 0.0), rhs(n, 0.0);
+  alpha_ext.assign(n, 0.0);
+  rhs.assign(n, 0.0);
   const double r2 = std::sqrt(2.0);
   for (int i = 0; i < N; ++i) {
     const auto& s = p.spheres[i];
@@ -189,10 +172,32 @@ Solution SpectralSolver::solve(const Problem& p) {
       for (int m = -l; m <= l; ++m) b[sh::idx(l, m)] = -gamma_[i * (L + 1) + l] * ae[sh::idx(l, m)];
     b[0] = s.charge / (4 * pi * eps0 * k0 * s.radius);
   }
-  // warm start
+}
+
+// y = x + gamma M x (sphere by sphere, degree by degree).
+void SpectralSolver::apply_system(std::span<const double> xs, std::span<double> ys) {
+  const double* x = xs.data();
+  double* y = ys.data();
+  const int L = L_;
+  matvec_M(x, alpha_.data());
+  for (int i = 0; i < N_; ++i) {
+    const double* g = &gamma_[i * (L + 1)];
+    const double* xi = x + std::size_t(i) * nc_;
+    const double* ai = &alpha_[std::size_t(i) * nc_];
+    double* yi = y + std::size_t(i) * nc_;
+    for (int l = 0; l <= L; ++l)
+      for (int m = -l; m <= l; ++m) yi[sh::idx(l, m)] = xi[sh::idx(l, m)] + g[l] * ai[sh::idx(l, m)];
+  }
+}
+
+// beta_ from (I + gamma M) beta = rhs: exact (beta = rhs) when no sphere is polarisable, else GMRES
+// to `tol` warm-started from the previous solve (same number of spheres).
+GmresResult SpectralSolver::solve_multipoles(const Problem& p, const std::vector<double>& rhs, double tol) {
+  const int N = N_;
+  const std::size_t n = std::size_t(N) * nc_;
   beta_.assign(n, 0.0);
   if (prev_N_ == N && prev_L_ >= 0) {
-    int Lc = std::min(prev_L_, L);
+    int Lc = std::min(prev_L_, L_);
     int ncp = sh::ncoef(prev_L_);
     for (int i = 0; i < N; ++i)
       for (int c = 0; c < sh::ncoef(Lc); ++c) beta_[std::size_t(i) * nc_ + c] = prev_beta_[std::size_t(i) * ncp + c];
@@ -200,42 +205,33 @@ Solution SpectralSolver::solve(const Problem& p) {
     beta_ = rhs;
   }
   alpha_.assign(n, 0.0);
-  auto apply = [&](std::span<const double> xs, std::span<double> ys) {
-    const double* x = xs.data();
-    double* y = ys.data();
-    matvec_M(x, alpha_.data());
-    for (int i = 0; i < N; ++i) {
-      const double* g = &gamma_[i * (L + 1)];
-      const double* xi = x + std::size_t(i) * nc_;
-      const double* ai = &alpha_[std::size_t(i) * nc_];
-      double* yi = y + std::size_t(i) * nc_;
-      for (int l = 0; l <= L; ++l)
-        for (int m = -l; m <= l; ++m) yi[sh::idx(l, m)] = xi[sh::idx(l, m)] + g[l] * ai[sh::idx(l, m)];
-    }
-  };
-  const double tol = std::min(opt_.tolerance, 1e-2 * opt_.target_accuracy);
   GmresResult gr;
   bool polarisable = false;
-  for (const auto& s : p.spheres) polarisable |= (s.permittivity != k0);
+  for (const auto& s : p.spheres) polarisable |= (s.permittivity != p.medium_permittivity);
   if (!polarisable) {
     beta_ = rhs;  // no induced multipoles: exact
     gr.converged = true;
-  } else {
-    // Euclidean inner product. The explicit residual after the last cycle is what this solver has
-    // always computed (1 + iterations + 1 operator applications for a single-cycle solve); without
-    // it one application per solve is saved but the reported residual is the Givens estimate.
-    const GmresOptions go{tol, opt_.max_iterations, std::min(opt_.max_iterations, 60), true};
-    gr = gmres(apply, rhs, beta_, {}, go, &ws_);
-    if (!gr.converged)
-      throw NumericalError(fmt::format(
-          "spectral: GMRES did not converge in {} iterations (relative residual {:.3g} > {:.3g}); raise "
-          "electrostatics.max_iterations or check the configuration",
-          gr.iterations, gr.residual, tol));
+    return gr;
   }
-  // external potential coefficients
-  matvec_M(beta_.data(), alpha_.data());
-  for (std::size_t c = 0; c < n; ++c) alpha_[c] += alpha_ext[c];
+  // Euclidean inner product. The explicit residual after the last cycle is what this solver has
+  // always computed (1 + iterations + 1 operator applications for a single-cycle solve); without
+  // it one application per solve is saved but the reported residual is the Givens estimate.
+  const GmresOptions go{tol, opt_.max_iterations, std::min(opt_.max_iterations, 60), true};
+  auto apply = [&](std::span<const double> xs, std::span<double> ys) { apply_system(xs, ys); };
+  gr = gmres(apply, rhs, beta_, {}, go, &ws_);
+  if (!gr.converged)
+    throw NumericalError(fmt::format(
+        "spectral: GMRES did not converge in {} iterations (relative residual {:.3g} > {:.3g}); raise "
+        "electrostatics.max_iterations or check the configuration",
+        gr.iterations, gr.residual, tol));
+  return gr;
+}
 
+// Forces, torques (closed forms of spectral_solver.hpp) and energy from beta_ and alpha_ (the
+// complete external potential coefficients).
+Solution SpectralSolver::forces_and_energy(const Problem& p) const {
+  const int N = N_, L = L_;
+  const double k0 = p.medium_permittivity;
   Solution sol;
   sol.force.assign(N, Vec3{});
   sol.torque.assign(N, Vec3{});
@@ -261,6 +257,31 @@ Solution SpectralSolver::solve(const Problem& p) {
     U += 0.5 * s.charge * (be[0] + al[0]);
   }
   sol.energy = U;
+  return sol;
+}
+
+Solution SpectralSolver::solve(const Problem& p) {
+  auto t0 = std::chrono::steady_clock::now();
+  validate_spheres(p);
+  const int N = static_cast<int>(p.spheres.size());
+  double est_err = 0.0;
+  const int L = choose_degree(p, est_err);
+  L_ = L;
+  N_ = N;
+  nc_ = sh::ncoef(L);
+  if (L > T_.degree()) T_.prepare(std::max(L, std::min(opt_.max_degree_limit, L + 8)));  // grows only
+  build_pairs(p);
+  bi_.assign(nc_, 0.0);
+  bk_ = ai_ = ak_ = tmp_ = bi_;
+  std::vector<double> alpha_ext, rhs;
+  applied_field(p, alpha_ext, rhs);
+  const double tol = std::min(opt_.tolerance, 1e-2 * opt_.target_accuracy);
+  const GmresResult gr = solve_multipoles(p, rhs, tol);
+  // external potential coefficients
+  matvec_M(beta_.data(), alpha_.data());
+  for (std::size_t c = 0; c < alpha_.size(); ++c) alpha_[c] += alpha_ext[c];
+  Solution sol = forces_and_energy(p);
+
   prev_beta_ = beta_;
   prev_L_ = L;
   prev_N_ = N;

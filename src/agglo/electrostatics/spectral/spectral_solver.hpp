@@ -18,7 +18,7 @@
 // self energy of each shell included; applied potential -E.x, zero at the origin).
 // L: SolverOptions::max_degree if > 0, else the smallest L with 2 (rho_a rho_b)^L <= target_accuracy
 // over all pairs (spectral/degree.hpp), capped at max_degree_limit.
-// Errors: overlapping spheres, radius or permittivity <= 0, or GMRES not converging throw
+// Errors: invalid input (validate_spheres.hpp) throws InvalidSpheres, GMRES not converging
 // agglo::NumericalError.
 #include <memory>
 
