@@ -3,6 +3,7 @@
 
 #include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
+#include "agglo/run/commands/impact_command.hpp"
 #include "agglo/run/impact_ensemble.hpp"
 
 namespace agglo::run {
@@ -12,7 +13,7 @@ namespace {
 nlohmann::json level(double v) { return v < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(v); }
 std::string level_text(double v) { return v < 0.0 ? std::string("not reached") : fmt::format("{:.4f} m/s", v); }
 
-class Breakup final : public Command {
+class Breakup final : public ImpactCommand {
  public:
   std::string_view name() const override { return "breakup"; }
   std::string_view help() const override {
@@ -20,13 +21,8 @@ class Breakup final : public Command {
            "offset_spread)";
   }
 
-  void parse(Config& cfg) const override {
-    (void)impact::parse_impact_case(cfg);
-    cfg.check_unknown_keys();
-  }
-
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
-    const auto c = impact::parse_impact_case(cfg);
+    const auto c = impact_case(cfg);
     const auto relaxed = impact::relaxed_agglomerate(c);  // independent of the projectile offset
     Journal journal(out.file("journal.jsonl"), impact_context(name(), cfg), ctx.resume);
     const EnsembleOptions opt{ctx.threads, &journal, ctx.cancel, &ctx.report(), "breakup"};

@@ -4,23 +4,19 @@
 #include "agglo/impact/experiment.hpp"
 #include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
+#include "agglo/run/commands/impact_command.hpp"
 
 namespace agglo::run {
 
 namespace {
 
-class Collide final : public Command {
+class Collide final : public ImpactCommand {
  public:
   std::string_view name() const override { return "collide"; }
   std::string_view help() const override { return "One particle-agglomerate collision (DEM, optional electrostatics)"; }
 
-  void parse(Config& cfg) const override {
-    (void)impact::parse_impact_case(cfg);
-    cfg.check_unknown_keys();
-  }
-
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
-    const auto c = impact::parse_impact_case(cfg);
+    const auto c = impact_case(cfg);
     impact::Recorder rec;
     auto progress = [&](double f, double t) {
       throw_if_cancelled(ctx.cancel);

@@ -3,24 +3,20 @@
 
 #include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
+#include "agglo/run/commands/impact_command.hpp"
 #include "agglo/run/impact_ensemble.hpp"
 
 namespace agglo::run {
 
 namespace {
 
-class Vcrit final : public Command {
+class Vcrit final : public ImpactCommand {
  public:
   std::string_view name() const override { return "vcrit"; }
   std::string_view help() const override { return "Critical break-up velocity of an agglomerate (bisection on speed)"; }
 
-  void parse(Config& cfg) const override {
-    (void)impact::parse_impact_case(cfg);
-    cfg.check_unknown_keys();
-  }
-
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
-    const auto c = impact::parse_impact_case(cfg);
+    const auto c = impact_case(cfg);
     const auto relaxed = impact::relaxed_agglomerate(c);  // one relaxation for every speed
     Journal journal(out.file("journal.jsonl"), impact_context(name(), cfg), ctx.resume);
     const EnsembleOptions opt{ctx.threads, &journal, ctx.cancel, nullptr, "vcrit"};

@@ -1,0 +1,12 @@
+#include "agglo/run/commands/impact_command.hpp"
+
+namespace agglo::run {
+
+void ImpactCommand::parse(Config& cfg) const {
+  (void)impact::parse_impact_case(cfg);
+  cfg.check_unknown_keys();
+}
+
+impact::ImpactCase ImpactCommand::impact_case(Config& cfg) { return impact::parse_impact_case(cfg); }
+
+}  // namespace agglo::run
