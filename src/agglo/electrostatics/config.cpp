@@ -50,7 +50,7 @@ EsCase parse_electrostatics_case(Config& cfg) {
   const auto& keys = settings::electrostatics_settings();
   auto root = cfg.root();
   EsCase c;
-  c.config = parse_electrostatics(keys.solver.t.open(root));
+  c.settings = parse_electrostatics(keys.solver.t.open(root));
   auto elements = keys.particles.t.elements(root);
   if (elements.empty()) keys.particles.t.fail(root, "at least one [[particles]] entry is required");
   std::vector<Vec3> x;
@@ -63,7 +63,7 @@ EsCase parse_electrostatics_case(Config& cfg) {
     kappa.push_back(e.permittivity);
   }
   cfg.check_unknown_keys();
-  settings::check_as(keys.particles.t, root, [&] { c.problem = make_problem(c.config, x, r, q, kappa); });
+  settings::check_as(keys.particles.t, root, [&] { c.problem = make_problem(c.settings, x, r, q, kappa); });
   return c;
 }
 

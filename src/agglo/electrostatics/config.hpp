@@ -46,7 +46,7 @@ ParticleEntry parse_particle(const ConfigSection& element);
 // The electrostatics command's case: [electrostatics] and at least one [[particles]] entry, radii
 // shrunk to r_E; unknown keys rejected; overlapping spheres reported as a ConfigError.
 struct EsCase {
-  EsConfig config;
+  EsConfig settings;
   Problem problem;
 };
 EsCase parse_electrostatics_case(Config& cfg);
