@@ -68,7 +68,7 @@ EsCase parse_electrostatics_case(Config& cfg) {
 }
 
 namespace {
-// The physical admissibility of the spheres (MODEL B.3); throws NumericalError naming the particles.
+// The physical admissibility of the spheres (docs/model.md §B.3); throws NumericalError naming the particles.
 void check_problem(const Problem& p, const std::string& what) {
   const int n = static_cast<int>(p.spheres.size());
   if (!(p.medium_permittivity > 0))

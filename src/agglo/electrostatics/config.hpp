@@ -1,6 +1,6 @@
 #pragma once
 // The [electrostatics] section and the [[particles]] entries of a case file, and the
-// electrostatic-radius helper (MODEL B.3). The keys, defaults and ranges are declared once in
+// electrostatic-radius helper (docs/model.md §B.3). The keys, defaults and ranges are declared once in
 // agglo/core/settings_electrostatics.hpp (listed in docs/config.md).
 //
 // Usage (DEM coupling):
@@ -28,7 +28,7 @@ struct EsConfig {
   int update_interval = static_cast<int>(es_keys().update_interval.def());  // steps; 0 = off
   Vec3 external_field;  // [V/m]
   bool force_scale_chi = es_keys().force_scale_chi.def();
-  // Between solves: "constant" (MODEL B.3) | "pair_corrected" (DEM coupling).
+  // Between solves: "constant" (docs/model.md §B.3) | "pair_corrected" (DEM coupling).
   std::string hold = std::string(es_keys().hold.def());
 };
 
@@ -55,7 +55,7 @@ EsCase parse_electrostatics_case(Config& cfg);
 // written back into the table. Throws agglo::ConfigError with a one-line message.
 EsConfig parse_electrostatics(const ConfigSection& section);
 
-// Electrostatic radius r_E = r / (1 + g_min / 2) (MODEL B.3).
+// Electrostatic radius r_E = r / (1 + g_min / 2) (docs/model.md §B.3).
 inline double electrostatic_radius(double r, double g_min) { return r / (1.0 + 0.5 * g_min); }
 
 // Build the solver input: radii shrunk by g_min, charges and permittivities as given. Checks
