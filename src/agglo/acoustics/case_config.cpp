@@ -7,107 +7,115 @@
 
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
+#include "agglo/core/settings_acoustic.hpp"
 
 namespace agglo::acoustics {
 
 namespace {
 
+const settings::AcousticSettings& keys() { return settings::acoustic_settings(); }
+
 bool near_integer(double x, double tol = 1e-6) { return std::abs(x - std::round(x)) <= tol * std::max(1.0, std::abs(x)); }
 
-PopulationSpec parse_population(const ConfigSection& s) {
-  PopulationSpec p;
-  p.name = s.string("name", std::nullopt);
-  p.phase = s.choice("phase", std::nullopt, {"solid", "liquid"}) == "solid" ? Phase::solid : Phase::liquid;
-  const std::string dist =
-      s.choice("distribution", std::nullopt, {"lognormal", "monodisperse", "exponential", "table"});
-  p.number_concentration = s.number("number_concentration", std::nullopt, Range::nonnegative("1/m^3"));
-  p.density = s.number("density", p.phase == Phase::solid ? 2500.0 : 1000.0, Range::positive("kg/m^3"));
-  p.samples = s.integer("samples", std::nullopt, 1, 100000000);
-  p.conserving_rounding = s.choice("weight_rounding", "nearest", {"nearest", "conserving"}) == "conserving";
+void parse_distribution(const ConfigSection& s, const std::string& dist, PopulationSpec& p) {
+  const auto& k = keys().population;
   if (dist == "lognormal") {
     p.distribution = Distribution::lognormal;
-    p.geometric_mean_diameter = s.number("geometric_mean_diameter", std::nullopt, Range::positive("m"));
-    p.geometric_std = s.number("geometric_std", std::nullopt, Range::closed(1.0, 1e3));
-    p.bins = static_cast<int>(s.integer("bins", 40, 1, 100000));
-    if (p.samples < p.bins) s.fail_value("samples", fmt::format("needs at least one sample per bin (bins = {})", p.bins));
+    p.geometric_mean_diameter = k.geometric_mean_diameter.read(s);
+    p.geometric_std = k.geometric_std.read(s);
+    p.bins = static_cast<int>(k.bins.read(s));
+    if (p.samples < p.bins)
+      k.samples.reject(s, fmt::format("needs at least one sample per bin ({} = {})", k.bins.leaf(), p.bins));
   } else if (dist == "monodisperse") {
     p.distribution = Distribution::monodisperse;
-    p.diameter = s.number("diameter", std::nullopt, Range::nonnegative("m"));
+    p.diameter = k.diameter.read(s);
   } else if (dist == "exponential") {
     p.distribution = Distribution::exponential;
-    p.mean_volume = s.number("mean_volume", std::nullopt, Range::positive("m^3"));
+    p.mean_volume = k.mean_volume.read(s);
   } else {
     p.distribution = Distribution::table;
-    p.table_diameters = s.numbers("table_diameters", std::nullopt, Range::positive("m"));
-    p.table_fractions = s.numbers("table_fractions", std::nullopt, Range::nonnegative());
-    if (p.table_diameters.empty()) s.fail_value("table_diameters", "needs at least one diameter");
+    p.table_diameters = k.table_diameters.read(s);
+    p.table_fractions = k.table_fractions.read(s);
+    if (p.table_diameters.empty()) k.table_diameters.reject(s, "needs at least one diameter");
     if (p.table_fractions.size() != p.table_diameters.size())
-      s.fail_value("table_fractions", "needs one fraction per entry of table_diameters");
+      k.table_fractions.reject(s, fmt::format("needs one fraction per entry of {}", k.table_diameters.leaf()));
     double f = 0.0;
     for (double x : p.table_fractions) f += x;
-    if (!(f > 0.0)) s.fail_value("table_fractions", "needs a positive sum");
+    if (!(f > 0.0)) k.table_fractions.reject(s, "needs a positive sum");
   }
+}
+
+PopulationSpec parse_population(const ConfigSection& s) {
+  const auto& k = keys().population;
+  PopulationSpec p;
+  p.name = k.name.read(s);
+  p.phase = k.phase.read(s) == "solid" ? Phase::solid : Phase::liquid;
+  const std::string dist = k.distribution.read(s);
+  p.number_concentration = k.number_concentration.read(s);
+  p.density = k.density.read_or(s, p.phase == Phase::solid ? kDefaultSolidDensity : kDefaultLiquidDensity);
+  p.samples = k.samples.read(s);
+  p.conserving_rounding = k.weight_rounding.read(s) == "conserving";
+  parse_distribution(s, dist, p);
   return p;
 }
 
-}  // namespace
-
-AcousticCase parse_acoustic_case(Config& cfg) {
-  AcousticCase c;
-  c.file = cfg.file();
-  ConfigSection root = cfg.root();
-  EngineSettings& e = c.engine;
-  e.seed = static_cast<std::uint64_t>(root.integer("seed", 1, 0, INT64_MAX));
-
-  // [gas]
-  ConfigSection g = cfg.root().section("gas");
-  const double T = g.number("temperature", 298.15, Range::positive("K"));
-  const double P = g.number("pressure", 101325.0, Range::positive("Pa"));
-  const bool gravity = g.boolean("gravity", true);
+// [gas] and [sound]; returns whether the sound field is on.
+bool parse_gas_sound(const ConfigSection& root, EngineSettings& e) {
+  const auto& kg = keys().gas;
+  ConfigSection g = kg.t.open(root);
+  const double T = kg.temperature.read(g);
+  const double P = kg.pressure.read(g);
+  const bool gravity = kg.gravity.read(g);
   std::optional<double> mu, lam;
-  if (g.has("viscosity")) mu = g.number("viscosity", std::nullopt, Range::positive("Pa s"));
-  if (g.has("mean_free_path")) lam = g.number("mean_free_path", std::nullopt, Range::positive("m"));
+  if (kg.viscosity.present(g)) mu = kg.viscosity.read(g);
+  if (kg.mean_free_path.present(g)) lam = kg.mean_free_path.read(g);
   e.motion.gas = Gas::air(T, P, gravity, mu, lam);
 
-  // [sound]
-  ConfigSection so = cfg.root().section("sound");
-  const bool sound_on = so.boolean("enabled", true);
-  const double L = so.number("level_db", 140.0, Range::any("dB"));
-  const double f = so.number("frequency_hz", 2000.0, Range::positive("Hz"));
+  const auto& ks = keys().sound;
+  ConfigSection so = ks.t.open(root);
+  const bool sound_on = ks.enabled.read(so);
+  const double L = ks.level_db.read(so);
+  const double f = ks.frequency_hz.read(so);
   e.motion.sound = Sound::make(e.motion.gas, sound_on, L, f);
   if (sound_on) {
     const double ua = Sound::amplitude(e.motion.gas, L);
     const double cmax = 0.1 * e.motion.gas.sound_speed;
     if (!(ua > 0.0) || ua > cmax)
-      so.fail_value("level_db", fmt::format("gives u_amp = {:.4g} m/s; the linear travelling-wave model needs "
-                                            "0 < u_amp <= 0.1 c = {:.4g} m/s (L <= {:.1f} dB)",
-                                            ua, cmax, 20.0 * std::log10(cmax / Sound::amplitude(e.motion.gas, 0.0))));
+      ks.level_db.reject(so, fmt::format("gives u_amp = {:.4g} m/s; the linear travelling-wave model needs "
+                                         "0 < u_amp <= 0.1 c = {:.4g} m/s (L <= {:.1f} dB)",
+                                         ua, cmax, 20.0 * std::log10(cmax / Sound::amplitude(e.motion.gas, 0.0))));
   }
+  return sound_on;
+}
 
-  // [time]
-  ConfigSection ti = cfg.root().section("time");
-  e.t_end = ti.number("end", std::nullopt, Range::positive("s"));
-  e.collision_dt = ti.number("collision_dt", 1e-5, Range::positive("s"));
-  e.motion_dt = ti.number("motion_dt", e.collision_dt, Range::positive("s"));
+void parse_time(const ConfigSection& root, EngineSettings& e) {
+  const auto& k = keys().time;
+  ConfigSection ti = k.t.open(root);
+  e.t_end = k.end.read(ti);
+  e.collision_dt = k.collision_dt.read(ti);
+  e.motion_dt = k.motion_dt.read_or(ti, e.collision_dt);
   if (e.motion_dt > e.collision_dt * (1.0 + 1e-12))
-    ti.fail_value("motion_dt", fmt::format("must not exceed time.collision_dt = {:g} s", e.collision_dt));
+    k.motion_dt.reject(ti, fmt::format("must not exceed {} = {:g} s", k.collision_dt.dotted(), e.collision_dt));
   if (!near_integer(e.collision_dt / e.motion_dt, 1e-9))
-    ti.fail_value("motion_dt", fmt::format("must divide time.collision_dt = {:g} s into a whole number of steps",
-                                           e.collision_dt));
+    k.motion_dt.reject(ti, fmt::format("must divide {} = {:g} s into a whole number of steps", k.collision_dt.dotted(),
+                                       e.collision_dt));
   if (!near_integer(e.t_end / e.collision_dt, 1e-6))
-    ti.fail_value("end", fmt::format("must be a whole number of collision steps ({:g} s)", e.collision_dt));
-  const std::string integ = ti.choice("integrator", "exact", {"exact", "explicit", "none"});
-  e.motion.integrator = integ == "exact" ? Integrator::exact
+    k.end.reject(ti, fmt::format("must be a whole number of collision steps ({:g} s)", e.collision_dt));
+  const std::string integ = k.integrator.read(ti);
+  e.motion.integrator = integ == "exact"      ? Integrator::exact
                         : integ == "explicit" ? Integrator::explicit_euler
                                               : Integrator::none;
-  const std::string iv = ti.choice("initial_velocity", "steady", {"steady", "gas", "rest"});
+  const std::string iv = k.initial_velocity.read(ti);
   e.initial_velocity = iv == "steady" ? InitialVelocity::steady : iv == "gas" ? InitialVelocity::gas : InitialVelocity::rest;
-  e.strict_guard = ti.choice("nanbu_guard", "subcycle", {"subcycle", "strict"}) == "strict";
-  e.max_subcycles = static_cast<std::uint64_t>(ti.integer("max_subcycles", 100000, 1, 1000000000));
+  e.strict_guard = k.nanbu_guard.read(ti) == "strict";
+  e.max_subcycles = static_cast<std::uint64_t>(k.max_subcycles.read(ti));
+}
 
-  // [[population]]
-  auto pops = cfg.root().tables("population");
-  if (pops.empty()) root.fail("population", "at least one [[population]] table is required");
+// [[population]]; returns the largest particle diameter [m].
+double parse_populations(const ConfigSection& root, EngineSettings& e) {
+  const auto& table = keys().population.t;
+  auto pops = table.elements(root);
+  if (pops.empty()) table.fail(root, fmt::format("at least one [[{}]] table is required", table.name()));
   double dmax = 0.0;
   for (auto& ps : pops) {
     PopulationSpec p = parse_population(ps);
@@ -121,90 +129,113 @@ AcousticCase parse_acoustic_case(Config& cfg) {
       for (double d : p.table_diameters) dmax = std::max(dmax, d);
     e.populations.push_back(p);
   }
+  return dmax;
+}
 
-  // [domain]
-  ConfigSection dm = cfg.root().section("domain");
-  const double lam_w = e.motion.sound.wavelength;
-  const double Lx = sound_on ? dm.number("length_x", lam_w, Range::positive("m"))
-                             : dm.number("length_x", std::nullopt, Range::positive("m"));
-  e.motion.domain.L[0] = Lx;
-  e.motion.domain.L[1] = dm.number("length_y", 0.01, Range::positive("m"));
-  e.motion.domain.L[2] = dm.number("length_z", 0.01, Range::positive("m"));
-  e.motion.domain.cells[0] = static_cast<int>(dm.integer("cells_x", 100, 1, 100000000));
-  e.motion.domain.cells[1] = static_cast<int>(dm.integer("cells_y", 1, 1, 100000000));
-  e.motion.domain.cells[2] = static_cast<int>(dm.integer("cells_z", 1, 1, 100000000));
-  const int min_cells = static_cast<int>(dm.integer("min_cells_per_wavelength", 100, 1, 100000000));
-  if (sound_on) {
-    if (!near_integer(Lx / lam_w, 1e-6))
-      dm.fail_value("length_x", fmt::format("must be a whole number of wavelengths (c/f = {:.6g} m) for the periodic "
-                                            "travelling wave", lam_w));
-    const double per_wl = e.motion.domain.cells[0] / std::round(Lx / lam_w);
-    if (per_wl < min_cells)
-      dm.fail_value("cells_x", fmt::format("gives {:g} cells per wavelength; cells must resolve the wave "
-                                           "(domain.min_cells_per_wavelength = {})", per_wl, min_cells));
-  }
-  const char* ck[3] = {"cells_x", "cells_y", "cells_z"};
-  for (int k = 0; k < 3; ++k) {
-    const double edge = e.motion.domain.L[k] / e.motion.domain.cells[k];
+void check_cells(const settings::AcousticSettings::Domain& k, const ConfigSection& dm, const EngineSettings& e,
+                 double dmax) {
+  const settings::Integer* ck[3] = {&k.cells_x, &k.cells_y, &k.cells_z};
+  for (int i = 0; i < 3; ++i) {
+    const double edge = e.motion.domain.L[i] / e.motion.domain.cells[i];
     if (edge <= dmax)
-      dm.fail_value(ck[k], fmt::format("gives cell edge {:.4g} m, not larger than the largest particle ({:.4g} m): "
-                                       "the cells do not fit", edge, dmax));
+      ck[i]->reject(dm, fmt::format("gives cell edge {:.4g} m, not larger than the largest particle ({:.4g} m): "
+                                    "the cells do not fit", edge, dmax));
   }
   long total_samples = 0;
   for (const auto& p : e.populations) total_samples += p.samples;
   if (static_cast<long>(e.motion.domain.num_cells()) > std::max<long>(1, total_samples))
-    dm.fail_value("cells_x", fmt::format("gives {} cells for {} sampled particles: the cells do not fit (need at "
-                                         "least one sample per cell on average)",
-                                         e.motion.domain.num_cells(), total_samples));
+    k.cells_x.reject(dm, fmt::format("gives {} cells for {} sampled particles: the cells do not fit (need at "
+                                     "least one sample per cell on average)",
+                                     e.motion.domain.num_cells(), total_samples));
+}
 
-  // [kernels]
-  ConfigSection k = cfg.root().section("kernels");
+void parse_domain(const ConfigSection& root, bool sound_on, double dmax, EngineSettings& e) {
+  const auto& k = keys().domain;
+  ConfigSection dm = k.t.open(root);
+  const double lam_w = e.motion.sound.wavelength;
+  const double Lx = k.length_x.read_or(dm, sound_on ? std::optional<double>(lam_w) : std::nullopt);
+  e.motion.domain.L[0] = Lx;
+  e.motion.domain.L[1] = k.length_y.read(dm);
+  e.motion.domain.L[2] = k.length_z.read(dm);
+  e.motion.domain.cells[0] = static_cast<int>(k.cells_x.read(dm));
+  e.motion.domain.cells[1] = static_cast<int>(k.cells_y.read(dm));
+  e.motion.domain.cells[2] = static_cast<int>(k.cells_z.read(dm));
+  const int min_cells = static_cast<int>(k.min_cells_per_wavelength.read(dm));
+  if (sound_on) {
+    if (!near_integer(Lx / lam_w, 1e-6))
+      k.length_x.reject(dm, fmt::format("must be a whole number of wavelengths (c/f = {:.6g} m) for the periodic "
+                                        "travelling wave", lam_w));
+    const double per_wl = e.motion.domain.cells[0] / std::round(Lx / lam_w);
+    if (per_wl < min_cells)
+      k.cells_x.reject(dm, fmt::format("gives {:g} cells per wavelength; cells must resolve the wave "
+                                       "({} = {})", per_wl, k.min_cells_per_wavelength.dotted(), min_cells));
+  }
+  check_cells(k, dm, e, dmax);
+}
+
+void parse_kernels(const ConfigSection& root, EngineSettings& e) {
+  const auto& k = keys().kernels;
+  ConfigSection s = k.t.open(root);
   KernelSettings& ks = e.kernel;
-  ks.model = kernel_model_from_name(k.choice("model", "acoustic", {"acoustic", "constant", "additive", "brownian_fuchs"}));
-  ks.orthokinetic = k.boolean("orthokinetic", true);
-  ks.acoustic_wake = k.boolean("acoustic_wake", true);
-  ks.radiation_pressure = k.boolean("radiation_pressure", true);
-  ks.brownian = k.boolean("brownian", true);
-  ks.brownian_form = k.choice("brownian_form", "continuum_slip", {"continuum_slip", "fuchs"}) == "fuchs"
-                         ? BrownianForm::fuchs
-                         : BrownianForm::continuum_slip;
-  e.motion.inertia_correction = k.boolean("inertia_correction", true);
-  ks.collision_efficiency = k.number("collision_efficiency", 1.0, Range::closed(0.0, 1.0));
-  ks.exclude_same_population = k.boolean("exclude_same_population", false);
-  if (ks.model == KernelModel::constant)
-    ks.constant_coefficient = k.number("constant_coefficient", std::nullopt, Range::positive("m^3/s"));
-  if (ks.model == KernelModel::additive)
-    ks.additive_coefficient = k.number("additive_coefficient", std::nullopt, Range::positive("1/s"));
+  ks.model = kernel_model_from_name(k.model.read(s));
+  ks.orthokinetic = k.orthokinetic.read(s);
+  ks.acoustic_wake = k.acoustic_wake.read(s);
+  ks.radiation_pressure = k.radiation_pressure.read(s);
+  ks.brownian = k.brownian.read(s);
+  ks.brownian_form = k.brownian_form.read(s) == "fuchs" ? BrownianForm::fuchs : BrownianForm::continuum_slip;
+  e.motion.inertia_correction = k.inertia_correction.read(s);
+  ks.collision_efficiency = k.collision_efficiency.read(s);
+  ks.exclude_same_population = k.exclude_same_population.read(s);
+  if (ks.model == KernelModel::constant) ks.constant_coefficient = k.constant_coefficient.read(s);
+  if (ks.model == KernelModel::additive) ks.additive_coefficient = k.additive_coefficient.read(s);
+}
 
-  // [outcomes]
-  ConfigSection o = cfg.root().section("outcomes");
-  OutcomeParams& oc = e.outcomes;
-  oc.always_coalesce = o.boolean("always_coalesce", false);
-  oc.hamaker = o.number("hamaker", 1e-19, Range::positive("J"));
-  oc.z0 = o.number("contact_distance", 4e-10, Range::positive("m"));
-  oc.contact_pressure = o.number("contact_pressure", 3e8, Range::positive("Pa"));
-  oc.restitution = o.number("restitution", 0.6, Range::open_closed(0.0, 1.0));
-  oc.friction = o.number("friction", 0.2, Range::nonnegative());
-  oc.liquid_viscosity = o.number("liquid_viscosity", 8.9e-4, Range::positive("Pa s"));
-  oc.film_ratio = o.number("film_roughness_ratio", 10.0, Range::open(1.0, 1e300));
-  oc.solid_density = o.number("solid_density", 2500.0, Range::positive("kg/m^3"));
-  oc.energy_compensation = o.boolean("energy_compensation", true);
+void parse_outcomes(const ConfigSection& root, OutcomeParams& oc) {
+  const auto& k = keys().outcomes;
+  ConfigSection o = k.t.open(root);
+  oc.always_coalesce = k.always_coalesce.read(o);
+  oc.hamaker = k.hamaker.read(o);
+  oc.z0 = k.contact_distance.read(o);
+  oc.contact_pressure = k.contact_pressure.read(o);
+  oc.restitution = k.restitution.read(o);
+  oc.friction = k.friction.read(o);
+  oc.liquid_viscosity = k.liquid_viscosity.read(o);
+  oc.film_ratio = k.film_roughness_ratio.read(o);
+  oc.solid_density = k.solid_density.read(o);
+  oc.energy_compensation = k.energy_compensation.read(o);
+}
 
-  // [output]
-  ConfigSection out = cfg.root().section("output");
-  const double te = e.t_end;
-  c.output.psd_times = out.numbers("psd_times", std::vector<double>{0.0, 0.25 * te, 0.5 * te, 0.75 * te, te},
-                                   Range::closed(0.0, te, "s"));
-  c.output.psd_bins = static_cast<int>(out.integer("psd_bins", 60, 1, 100000));
-  c.output.psd_d_min = out.number("psd_d_min", 1e-8, Range::positive("m"));
-  c.output.psd_d_max = out.number("psd_d_max", 1e-4, Range::positive("m"));
-  if (c.output.psd_d_max <= c.output.psd_d_min) out.fail_value("psd_d_max", "must exceed output.psd_d_min");
-  c.output.efficiency_interval = out.number("efficiency_interval", te / 200.0, Range::positive("s"));
-  c.output.snapshot_times =
-      out.numbers("snapshot_times", std::vector<double>{0.0, 0.125 * te, 0.25 * te, 0.5 * te}, Range::closed(0.0, te, "s"));
-  c.output.snapshot_x_fraction = out.number("snapshot_x_fraction", 0.25, Range::open_closed(0.0, 1.0));
-  c.output.plots = out.boolean("plots", true);
+void parse_output(const ConfigSection& root, double te, OutputSettings& os) {
+  const auto& k = keys().output;
+  ConfigSection out = k.t.open(root);
+  const Range within_run = Range::closed(0.0, te);
+  os.psd_times = k.psd_times.read_or(out, std::vector<double>{0.0, 0.25 * te, 0.5 * te, 0.75 * te, te}, within_run);
+  os.psd_bins = static_cast<int>(k.psd_bins.read(out));
+  os.psd_d_min = k.psd_d_min.read(out);
+  os.psd_d_max = k.psd_d_max.read(out);
+  if (os.psd_d_max <= os.psd_d_min) k.psd_d_max.reject(out, fmt::format("must exceed {}", k.psd_d_min.dotted()));
+  os.efficiency_interval = k.efficiency_interval.read_or(out, te / 200.0);
+  os.snapshot_times =
+      k.snapshot_times.read_or(out, std::vector<double>{0.0, 0.125 * te, 0.25 * te, 0.5 * te}, within_run);
+  os.snapshot_x_fraction = k.snapshot_x_fraction.read(out);
+  os.plots = k.plots.read(out);
+}
 
+}  // namespace
+
+AcousticCase parse_acoustic_case(Config& cfg) {
+  AcousticCase c;
+  c.file = cfg.file();
+  ConfigSection root = cfg.root();
+  EngineSettings& e = c.engine;
+  e.seed = static_cast<std::uint64_t>(keys().top.seed.read(root));
+  const bool sound_on = parse_gas_sound(root, e);
+  parse_time(root, e);
+  const double dmax = parse_populations(root, e);
+  parse_domain(root, sound_on, dmax, e);
+  parse_kernels(root, e);
+  parse_outcomes(root, e.outcomes);
+  parse_output(root, e.t_end, c.output);
   cfg.check_unknown_keys();
   return c;
 }

@@ -8,23 +8,27 @@
 //  - otherwise hard-sphere rebound with friction (eqs. 22-23); wet pairs use
 //      e_wet = e - 9 mu_l (d_i+d_j)(1+e) ln(delta/h_a) / (8 rho_s d_i d_j |G.n|)   (eq. 24).
 // G = v_i - v_j, n = unit vector from i to j at contact (approaching: G.n > 0).
+#include "agglo/core/settings_acoustic.hpp"
 #include "agglo/core/vec3.hpp"
 
 namespace agglo::acoustics {
 
+inline const settings::AcousticSettings::Outcomes& outcome_keys() { return settings::acoustic_settings().outcomes; }
+
 enum class PairType { droplet, dry, wet };
 
+// Defaults are the declared [outcomes] settings (agglo/core/settings_acoustic.hpp).
 struct OutcomeParams {
-  bool always_coalesce = false;   // test kernels: every collision coalesces
-  double hamaker = 1e-19;         // A [J]
-  double z0 = 4e-10;              // minimum contact distance [m]
-  double contact_pressure = 3e8;  // p_c [Pa]
-  double restitution = 0.6;       // e
-  double friction = 0.2;          // f_p
-  double liquid_viscosity = 8.9e-4;  // mu_l [Pa s]
-  double film_ratio = 10.0;       // delta / h_a
-  double solid_density = 2500.0;  // rho_s in eqs. 14, 24 [kg/m^3]
-  bool energy_compensation = true;// seed eq. 30
+  bool always_coalesce = outcome_keys().always_coalesce.def();     // test kernels: every collision coalesces
+  double hamaker = outcome_keys().hamaker.def();                   // A [J]
+  double z0 = outcome_keys().contact_distance.def();               // minimum contact distance [m]
+  double contact_pressure = outcome_keys().contact_pressure.def(); // p_c [Pa]
+  double restitution = outcome_keys().restitution.def();           // e
+  double friction = outcome_keys().friction.def();                 // f_p
+  double liquid_viscosity = outcome_keys().liquid_viscosity.def(); // mu_l [Pa s]
+  double film_ratio = outcome_keys().film_roughness_ratio.def();   // delta / h_a
+  double solid_density = outcome_keys().solid_density.def();       // rho_s in eqs. 14, 24 [kg/m^3]
+  bool energy_compensation = outcome_keys().energy_compensation.def();  // seed eq. 30
 };
 
 double critical_velocity_dry(const OutcomeParams& o, double di, double dj, double rhoi, double rhoj);

@@ -16,8 +16,13 @@
 
 #include "agglo/acoustics/drag.hpp"
 #include "agglo/acoustics/samples.hpp"
+#include "agglo/core/settings_acoustic.hpp"
 
 namespace agglo::acoustics {
+
+// Density of a population that does not set one [kg/m^3] (population.density).
+inline constexpr double kDefaultSolidDensity = 2500.0;
+inline constexpr double kDefaultLiquidDensity = 1000.0;
 
 enum class Distribution { lognormal, monodisperse, exponential, table };
 
@@ -27,13 +32,13 @@ struct PopulationSpec {
   Distribution distribution = Distribution::monodisperse;
   double geometric_mean_diameter = 0.0;        // d_g [m]
   double geometric_std = 2.0;                  // sigma_g
-  int bins = 40;                               // lognormal bins K
+  int bins = static_cast<int>(settings::acoustic_settings().population.bins.def());  // lognormal bins K
   double diameter = 0.0;                       // monodisperse [m]
   double mean_volume = 0.0;                    // exponential v0 [m^3]
   std::vector<double> table_diameters;         // [m]
   std::vector<double> table_fractions;         // number fractions
   double number_concentration = 0.0;           // [1/m^3]
-  double density = 1000.0;                     // [kg/m^3]
+  double density = kDefaultLiquidDensity;     // [kg/m^3]
   long samples = 0;
   bool conserving_rounding = false;            // weight_rounding = "conserving"
 };

@@ -285,7 +285,7 @@ std::string ConfigSection::string(std::string_view key, std::optional<std::strin
 }
 
 std::string ConfigSection::choice(std::string_view key, std::optional<std::string> def,
-                                  std::initializer_list<std::string_view> allowed) const {
+                                  const std::vector<std::string_view>& allowed) const {
   std::string opts;
   for (auto a : allowed) opts += (opts.empty() ? "\"" : ", \"") + std::string(a) + "\"";
   mark(key);

@@ -8,7 +8,6 @@
 // Every failure throws ConfigError with one line: "<file>: key '<dotted.key>' = <value>: <rule>".
 #include <cstdint>
 #include <filesystem>
-#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <string>
@@ -59,7 +58,7 @@ class ConfigSection {
   bool boolean(std::string_view key, std::optional<bool> def) const;
   std::string string(std::string_view key, std::optional<std::string> def) const;
   std::string choice(std::string_view key, std::optional<std::string> def,
-                     std::initializer_list<std::string_view> allowed) const;
+                     const std::vector<std::string_view>& allowed) const;
   Vec3 vec3(std::string_view key, std::optional<Vec3> def, const Range& component_range) const;
   std::vector<double> numbers(std::string_view key, std::optional<std::vector<double>> def,
                               const Range& range) const;

@@ -6,48 +6,81 @@
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/core/settings.hpp"
 
 namespace agglo::es {
 
 EsConfig parse_electrostatics(const ConfigSection& s) {
+  const auto& k = es_keys();
   EsConfig ec;
   auto& o = ec.options;
-  o.solver = s.choice("solver", "spectral", {"coulomb", "spectral", "bem"});
-  ec.medium_permittivity = s.number("medium_permittivity", 1.0, Range::positive());
-  ec.min_gap = s.number("min_gap", 0.01, Range::closed_open(0.0, 1.0));
-  ec.update_fraction = s.number("update_fraction", 0.01, Range::open_closed(0.0, 1.0));
-  ec.update_interval = static_cast<int>(s.integer("update_interval", 0, 0, 1000000000));
-  ec.external_field = s.vec3("external_field", Vec3{0, 0, 0}, Range::any("V/m"));
-  ec.force_scale_chi = s.boolean("force_scale_chi", false);
-  ec.hold = s.choice("hold", std::string("constant"), {"constant", "pair_corrected"});
-  o.max_degree = static_cast<int>(s.integer("max_degree", 0, 0, 200));
-  o.target_accuracy = s.number("target_accuracy", 1e-4, Range::closed_open(1e-12, 1.0));
-  o.max_degree_limit = static_cast<int>(s.integer("max_degree_limit", 80, 2, 200));
-  o.patches_per_sphere = static_cast<int>(s.integer("patches_per_sphere", 2000, 12, 10000000));
-  o.tolerance = s.number("tolerance", 1e-6, Range::open(0.0, 1.0));
-  o.max_iterations = static_cast<int>(s.integer("max_iterations", 200, 1, 100000));
-  o.matvec = s.choice("matvec", "fmm", {"fmm", "direct"});
-  o.fmm_order = static_cast<int>(s.integer("fmm_order", 0, 0, 40));
-  o.fmm_leaf_size = static_cast<int>(s.integer("fmm_leaf_size", 64, 1, 100000));
+  o.solver = k.solver.read(s);
+  ec.medium_permittivity = k.medium_permittivity.read(s);
+  ec.min_gap = k.min_gap.read(s);
+  ec.update_fraction = k.update_fraction.read(s);
+  ec.update_interval = static_cast<int>(k.update_interval.read(s));
+  ec.external_field = k.external_field.read(s);
+  ec.force_scale_chi = k.force_scale_chi.read(s);
+  ec.hold = k.hold.read(s);
+  o.max_degree = static_cast<int>(k.max_degree.read(s));
+  o.target_accuracy = k.target_accuracy.read(s);
+  o.max_degree_limit = static_cast<int>(k.max_degree_limit.read(s));
+  o.patches_per_sphere = static_cast<int>(k.patches_per_sphere.read(s));
+  o.tolerance = k.tolerance.read(s);
+  o.max_iterations = static_cast<int>(k.max_iterations.read(s));
+  o.matvec = k.matvec.read(s);
+  o.fmm_order = static_cast<int>(k.fmm_order.read(s));
+  o.fmm_leaf_size = static_cast<int>(k.fmm_leaf_size.read(s));
   if (o.max_degree > 0 && o.max_degree > o.max_degree_limit)
-    s.fail_value("max_degree", fmt::format("must not exceed max_degree_limit = {}", o.max_degree_limit));
+    k.max_degree.reject(s, fmt::format("must not exceed {} = {}", k.max_degree_limit.leaf(), o.max_degree_limit));
   return ec;
 }
 
+ParticleEntry parse_particle(const ConfigSection& element) {
+  const auto& k = settings::electrostatics_settings().particles;
+  ParticleEntry e;
+  e.position = k.position.read(element);
+  e.radius = k.radius.read(element);
+  e.charge = k.charge.read(element);
+  e.permittivity = k.permittivity.read(element);
+  return e;
+}
+
+EsCase parse_electrostatics_case(Config& cfg) {
+  const auto& keys = settings::electrostatics_settings();
+  auto root = cfg.root();
+  EsCase c;
+  c.settings = parse_electrostatics(keys.solver.t.open(root));
+  auto elements = keys.particles.t.elements(root);
+  if (elements.empty()) keys.particles.t.fail(root, "at least one [[particles]] entry is required");
+  std::vector<Vec3> x;
+  std::vector<double> r, q, kappa;
+  for (const auto& el : elements) {
+    const ParticleEntry e = parse_particle(el);
+    x.push_back(e.position);
+    r.push_back(e.radius);
+    q.push_back(e.charge);
+    kappa.push_back(e.permittivity);
+  }
+  cfg.check_unknown_keys();
+  settings::check_as(keys.particles.t, root, [&] { c.problem = make_problem(c.settings, x, r, q, kappa); });
+  return c;
+}
+
 namespace {
-template <class Err>
-void check_impl(const Problem& p, const std::string& what) {
+// The physical admissibility of the spheres (docs/model.md §B.3); throws NumericalError naming the particles.
+void check_problem(const Problem& p, const std::string& what) {
   const int n = static_cast<int>(p.spheres.size());
   if (!(p.medium_permittivity > 0))
-    throw Err(fmt::format("{}: medium permittivity must be > 0 (got {})", what, p.medium_permittivity));
+    throw NumericalError(fmt::format("{}: medium permittivity must be > 0 (got {})", what, p.medium_permittivity));
   for (int i = 0; i < n; ++i) {
     const auto& s = p.spheres[i];
     if (!(s.radius > 0) || !std::isfinite(s.radius))
-      throw Err(fmt::format("{}: particle {} has radius {} (must be > 0)", what, i, s.radius));
+      throw NumericalError(fmt::format("{}: particle {} has radius {} (must be > 0)", what, i, s.radius));
     if (!(s.permittivity > 0) || !std::isfinite(s.permittivity))
-      throw Err(fmt::format("{}: particle {} has permittivity {} (must be > 0)", what, i, s.permittivity));
+      throw NumericalError(fmt::format("{}: particle {} has permittivity {} (must be > 0)", what, i, s.permittivity));
     if (!isfinite(s.center) || !std::isfinite(s.charge))
-      throw Err(fmt::format("{}: particle {} has a non-finite position or charge", what, i));
+      throw NumericalError(fmt::format("{}: particle {} has a non-finite position or charge", what, i));
   }
   for (int i = 0; i < n; ++i)
     for (int k = i + 1; k < n; ++k) {
@@ -55,7 +88,7 @@ void check_impl(const Problem& p, const std::string& what) {
       const auto& b = p.spheres[k];
       double d = norm(a.center - b.center);
       if (d <= a.radius + b.radius)
-        throw Err(fmt::format(
+        throw NumericalError(fmt::format(
             "{}: particles {} and {} overlap beyond the electrostatic regularisation (centre distance {:.6g} m <= "
             "r_E,{} + r_E,{} = {:.6g} m); separate them or raise min_gap",
             what, i, k, d, i, k, a.radius + b.radius));
@@ -63,7 +96,13 @@ void check_impl(const Problem& p, const std::string& what) {
 }
 }  // namespace
 
-void check_particles(const Problem& p, const std::string& what) { check_impl<ConfigError>(p, what); }
+void check_particles(const Problem& p, const std::string& what) {
+  try {
+    check_problem(p, what);
+  } catch (const NumericalError& e) {
+    throw ConfigError(e.what());
+  }
+}
 
 Problem make_problem(const EsConfig& ec, const std::vector<Vec3>& centers, const std::vector<double>& radii,
                      const std::vector<double>& charges, const std::vector<double>& permittivities) {
@@ -76,7 +115,7 @@ Problem make_problem(const EsConfig& ec, const std::vector<Vec3>& centers, const
   p.spheres.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     p.spheres[i] = {centers[i], electrostatic_radius(radii[i], ec.min_gap), charges[i], permittivities[i]};
-  check_impl<NumericalError>(p, "electrostatics");
+  check_problem(p, "electrostatics");
   return p;
 }
 

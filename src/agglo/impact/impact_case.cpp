@@ -2,117 +2,145 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "agglo/core/error.hpp"
 
 namespace agglo::impact {
 
-ImpactCase parse_impact_case(Config& cfg) {
-  ImpactCase c;
-  auto root = cfg.root();
-  c.name = root.string("name", std::string("collision"));
+namespace {
 
-  auto mat = root.section("material");
-  c.agglomerate.density = mat.number("density", 2500.0, Range::positive("kg/m^3"));
+// [material] and [contact]; returns the real Young's modulus (0 = same as the model's).
+double parse_material_contact(const ConfigSection& root, ImpactCase& c) {
+  const auto& km = impact_keys().material;
+  const auto& kc = impact_keys().contact;
+  auto mat = km.t.open(root);
+  c.agglomerate.density = km.density.read(mat);
   auto& cp = c.dem.contact;
-  cp.youngs_modulus = mat.number("youngs_modulus", 1.0e9, Range::positive("Pa"));
-  cp.poisson_ratio = mat.number("poisson_ratio", 0.33, Range::open(-1.0, 0.5));
-  cp.surface_energy = mat.number("surface_energy", 0.01, Range::positive("J/m^2"));
-  cp.restitution = mat.number("restitution", 0.7, Range::open_closed(0.0, 1.0));
-  cp.friction = mat.number("friction", 0.3, Range::nonnegative());
-  const double real_modulus =
-      mat.number("real_youngs_modulus", 0.0, Range::nonnegative("Pa (0 = same as youngs_modulus)"));
+  cp.youngs_modulus = km.youngs_modulus.read(mat);
+  cp.poisson_ratio = km.poisson_ratio.read(mat);
+  cp.surface_energy = km.surface_energy.read(mat);
+  cp.restitution = km.restitution.read(mat);
+  cp.friction = km.friction.read(mat);
+  const double real_modulus = km.real_youngs_modulus.read(mat);
 
-  auto con = root.section("contact");
-  cp.tangential = con.choice("tangential", std::string("seed"), {"seed", "marshall"}) == "seed"
-                      ? dem::TangentialModel::seed
-                      : dem::TangentialModel::marshall;
-  cp.rolling = con.boolean("rolling", false);
-  cp.twisting = con.boolean("twisting", false);
-  cp.rolling_angle = con.number("rolling_angle", 0.01, Range::positive("rad"));
-  cp.break_rule = con.choice("break_rule", std::string("marshall"), {"marshall", "lammps"}) == "marshall"
-                      ? dem::BreakRule::marshall
-                      : dem::BreakRule::lammps;
-  cp.damping = con.boolean("damping", true);
+  auto con = kc.t.open(root);
+  cp.tangential = kc.tangential.read(con) == "seed" ? dem::TangentialModel::seed : dem::TangentialModel::marshall;
+  cp.rolling = kc.rolling.read(con);
+  cp.twisting = kc.twisting.read(con);
+  cp.rolling_angle = kc.rolling_angle.read(con);
+  cp.break_rule = kc.break_rule.read(con) == "marshall" ? dem::BreakRule::marshall : dem::BreakRule::lammps;
+  cp.damping = kc.damping.read(con);
   if ((cp.rolling || cp.twisting) && cp.tangential != dem::TangentialModel::marshall)
-    con.fail_value(cp.rolling ? "rolling" : "twisting", "rolling/twisting resistance needs tangential = \"marshall\"");
+    (cp.rolling ? kc.rolling : kc.twisting)
+        .reject(con, fmt::format("rolling/twisting resistance needs {} = \"marshall\"", kc.tangential.leaf()));
+  return real_modulus;
+}
 
-  auto ts = root.section("time");
-  c.dem.dt = ts.number("dt", 0.0, Range::nonnegative("s (0 = T0/steps_per_period)"));
-  c.dem.steps_per_period = ts.number("steps_per_period", 50.0, Range::closed(10.0, 1e6));
-  c.time.after_contact = ts.number("after_contact", 2e-3, Range::positive("s"));
-  c.time.max_approach = ts.number("max_approach", 0.0, Range::nonnegative("s (0 = automatic)"));
-  c.time.extension = ts.number("extension", 1e-3, Range::positive("s"));
-  c.time.max_extensions = static_cast<int>(ts.integer("max_extensions", 4, 0, 100));
-  c.time.relax_time = ts.number("relax_time", 1e-3, Range::nonnegative("s"));
-  c.time.relax_energy = ts.number("relax_energy", 1e-6, Range::positive("F_C delta_C"));
-  c.time.early_stop = ts.boolean("early_stop", true);
-  c.time.early_stop_gap = ts.number("early_stop_gap", 2.0, Range::positive("r_p"));
+void parse_time(const ConfigSection& root, ImpactCase& c) {
+  const auto& k = impact_keys().time;
+  auto ts = k.t.open(root);
+  c.dem.dt = k.dt.read(ts);
+  c.dem.steps_per_period = k.steps_per_period.read(ts);
+  c.time.after_contact = k.after_contact.read(ts);
+  c.time.max_approach = k.max_approach.read(ts);
+  c.time.extension = k.extension.read(ts);
+  c.time.max_extensions = static_cast<int>(k.max_extensions.read(ts));
+  c.time.relax_time = k.relax_time.read(ts);
+  c.time.relax_energy = k.relax_energy.read(ts);
+  c.time.early_stop = k.early_stop.read(ts);
+  c.time.early_stop_gap = k.early_stop_gap.read(ts);
+}
 
-  auto ag = root.section("agglomerate");
+// [agglomerate], [[particles]] (shape = "list") and [projectile].
+void parse_bodies(const ConfigSection& root, ImpactCase& c) {
+  const auto& ka = impact_keys().agglomerate;
+  const auto& particles = settings::electrostatics_settings().particles.t;
+  auto ag = ka.t.open(root);
   auto& a = c.agglomerate;
-  a.shape = ag.choice("shape", std::string("tetrahedron"), {"tetrahedron", "square", "list"});
-  a.radius = ag.number("radius", 10e-6, Range::positive("m"));
-  a.charged = ag.boolean("charged", false);
-  a.charge_density = ag.number("charge_density", 10e-6, Range::nonnegative("C/m^2"));
-  a.permittivity = ag.number("permittivity", 1.0, Range::positive());
-  auto plist = root.tables("particles");
+  a.shape = ka.shape.read(ag);
+  a.radius = ka.radius.read(ag);
+  a.charged = ka.charged.read(ag);
+  a.charge_density = ka.charge_density.read(ag);
+  a.permittivity = ka.permittivity.read(ag);
+  auto plist = particles.elements(root);
   if (a.shape == "list") {
-    if (plist.size() < 2) ag.fail_value("shape", "shape = \"list\" needs at least two [[particles]] entries");
-    for (auto& ps : plist) {
-      ListParticle lp;
-      lp.position = ps.vec3("position", std::nullopt, Range::any("m"));
-      lp.radius = ps.number("radius", std::nullopt, Range::positive("m"));
-      lp.charge = ps.number("charge", 0.0, Range::any("C"));
-      lp.permittivity = ps.number("permittivity", 1.0, Range::positive());
-      a.particles.push_back(lp);
-    }
+    if (plist.size() < 2)
+      ka.shape.reject(ag, fmt::format("shape = \"list\" needs at least two [[{}]] entries", particles.name()));
+    for (auto& ps : plist) a.particles.push_back(es::parse_particle(ps));
   } else if (!plist.empty()) {
-    ag.fail_value("shape", "[[particles]] entries are only used with shape = \"list\"");
+    ka.shape.reject(ag, fmt::format("[[{}]] entries are only used with shape = \"list\"", particles.name()));
   }
 
-  auto pj = root.section("projectile");
+  const auto& kp = impact_keys().projectile;
+  auto pj = kp.t.open(root);
   auto& p = c.projectile;
-  p.speed = pj.number("speed", 0.18, Range::nonnegative("m/s"));
-  p.offset_radii = pj.number("offset_radii", 0.05, Range::any("r_p"));
-  p.gap_radii = pj.number("gap_radii", 1.0, Range::positive("r_p"));
-  p.radius = pj.number("radius", a.radius, Range::positive("m"));
-  p.charge = pj.number("charge", 0.0, Range::any("C"));
-  p.permittivity = pj.number("permittivity", 1.0, Range::positive());
+  p.speed = kp.speed.read(pj);
+  p.offset_radii = kp.offset_radii.read(pj);
+  p.gap_radii = kp.gap_radii.read(pj);
+  p.radius = kp.radius.read_or(pj, a.radius);
+  p.charge = kp.charge.read(pj);
+  p.permittivity = kp.permittivity.read(pj);
+}
 
-  auto out = root.section("output");
-  c.output.timeseries_interval = out.number("timeseries_interval", 5e-6, Range::positive("s"));
-  c.output.snapshot_interval = out.number("snapshot_interval", 1e-4, Range::nonnegative("s (0 = none)"));
+// [output], [vcrit] and [breakup].
+void parse_searches(const ConfigSection& root, ImpactCase& c) {
+  const auto& ko = impact_keys().output;
+  auto out = ko.t.open(root);
+  c.output.timeseries_interval = ko.timeseries_interval.read(out);
+  c.output.snapshot_interval = ko.snapshot_interval.read(out);
 
-  auto vc = root.section("vcrit");
-  c.vcrit.v_min = vc.number("v_min", 0.02, Range::positive("m/s"));
-  c.vcrit.v_max = vc.number("v_max", 0.6, Range::positive("m/s"));
-  if (c.vcrit.v_max <= c.vcrit.v_min) vc.fail_value("v_max", "must be larger than vcrit.v_min");
-  c.vcrit.scan_points = static_cast<int>(vc.integer("scan_points", 12, 3, 1000));
-  c.vcrit.tolerance = vc.number("tolerance", 5e-4, Range::positive("m/s"));
+  const auto& kv = impact_keys().vcrit;
+  auto vc = kv.t.open(root);
+  c.vcrit.v_min = kv.v_min.read(vc);
+  c.vcrit.v_max = kv.v_max.read(vc);
+  if (c.vcrit.v_max <= c.vcrit.v_min) kv.v_max.reject(vc, fmt::format("must be larger than {}", kv.v_min.dotted()));
+  c.vcrit.scan_points = static_cast<int>(kv.scan_points.read(vc));
+  c.vcrit.tolerance = kv.tolerance.read(vc);
+  c.vcrit.points_per_round = static_cast<int>(kv.points_per_round.read(vc));
 
-  auto bu = root.section("breakup");
+  const auto& kb = impact_keys().breakup;
+  auto bu = kb.t.open(root);
   std::vector<double> grid(c.vcrit.scan_points);
   for (int k = 0; k < c.vcrit.scan_points; ++k)
     grid[k] = c.vcrit.v_min + (c.vcrit.v_max - c.vcrit.v_min) * k / (c.vcrit.scan_points - 1);
-  c.breakup.speeds = bu.numbers("speeds", grid, Range::positive("m/s"));
-  if (c.breakup.speeds.empty()) bu.fail_value("speeds", "needs at least one speed");
-  c.breakup.samples = static_cast<int>(bu.integer("samples", 16, 1, 100000));
-  c.breakup.offset_spread = bu.number("offset_spread", 0.05, Range::nonnegative("r_p"));
+  c.breakup.speeds = kb.speeds.read_or(bu, grid);
+  if (c.breakup.speeds.empty()) kb.speeds.reject(bu, "needs at least one speed");
+  c.breakup.samples = static_cast<int>(kb.samples.read(bu));
+  c.breakup.offset_spread = kb.offset_spread.read(bu);
+}
 
+void parse_coupling(const ConfigSection& root, double real_modulus, ImpactCase& c) {
+  const auto& a = c.agglomerate;
   bool any_charge = a.charged && a.charge_density > 0.0;
   for (const auto& lp : a.particles) any_charge = any_charge || lp.charge != 0.0;
-  any_charge = any_charge || p.charge != 0.0;
+  any_charge = any_charge || c.projectile.charge != 0.0;
   c.electrostatics = any_charge;
-  if (c.electrostatics || root.has("electrostatics")) {
-    c.coupling.es = es::parse_electrostatics(root.section("electrostatics"));
-    if (c.coupling.es.force_scale_chi) {
-      if (real_modulus <= 0.0)
-        mat.fail_value("real_youngs_modulus", "electrostatics.force_scale_chi = true needs the real modulus (> 0 Pa)");
-      c.coupling.force_scale = std::pow(cp.youngs_modulus / real_modulus, 0.4);
-    }
-    c.medium_permittivity = c.coupling.es.medium_permittivity;
-    c.electrostatics = c.electrostatics || norm(c.coupling.es.external_field) > 0.0;
+  const auto& ks = es::es_keys();
+  if (!c.electrostatics && !ks.t.present(root)) return;
+  c.coupling.es = es::parse_electrostatics(ks.t.open(root));
+  if (c.coupling.es.force_scale_chi) {
+    const auto& km = impact_keys().material;
+    if (real_modulus <= 0.0)
+      km.real_youngs_modulus.reject(km.t.open(root),
+                                    fmt::format("{} = true needs the real modulus (> 0 Pa)", ks.force_scale_chi.dotted()));
+    c.coupling.force_scale = std::pow(c.dem.contact.youngs_modulus / real_modulus, 0.4);
   }
+  c.medium_permittivity = c.coupling.es.medium_permittivity;
+  c.electrostatics = c.electrostatics || norm(c.coupling.es.external_field) > 0.0;
+}
+
+}  // namespace
+
+ImpactCase parse_impact_case(Config& cfg) {
+  ImpactCase c;
+  auto root = cfg.root();
+  c.name = impact_keys().top.name.read(root);
+  const double real_modulus = parse_material_contact(root, c);
+  parse_time(root, c);
+  parse_bodies(root, c);
+  parse_searches(root, c);
+  parse_coupling(root, real_modulus, c);
   return c;
 }
 

@@ -1,78 +1,80 @@
 #pragma once
-// The agglomerate-collision experiment of Ruan & Li (2022), MODEL.md A.3: a particle hits a small
+// The agglomerate-collision experiment of Ruan & Li (2022), docs/model.md §A.3: a particle hits a small
 // agglomerate at speed v_in; break-up is classified at the end. This header holds the validated
-// case description (parsed from TOML by parse_impact_case; every key documented in docs/dem.md).
+// case description (parsed from TOML by parse_impact_case; every key listed in docs/config.md).
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "agglo/core/config.hpp"
+#include "agglo/core/settings_impact.hpp"
 #include "agglo/core/vec3.hpp"
 #include "agglo/impact/electrostatic_coupling.hpp"
 #include "agglo/dem/dem_system.hpp"
+#include "agglo/electrostatics/config.hpp"
 
 namespace agglo::impact {
 
-struct ListParticle {
-  Vec3 position;            // [m]
-  double radius = 0.0;      // [m]
-  double charge = 0.0;      // [C]
-  double permittivity = 1;  // kappa_p
-};
+// Defaults below come from the declared settings (agglo/core/settings_impact.hpp), the one place
+// where keys, defaults and ranges are written.
+inline const settings::ImpactSettings& impact_keys() { return settings::impact_settings(); }
+
+using ListParticle = es::ParticleEntry;  // one [[particles]] entry (shape = "list")
 
 struct AgglomerateSpec {
-  std::string shape = "tetrahedron";  // tetrahedron | square | list
-  double radius = 10e-6;              // r_p [m] (built-in shapes)
-  double density = 2500.0;            // rho_p [kg/m^3]
-  bool charged = false;               // alternate +/- sigma_f (built-in shapes)
-  double charge_density = 10e-6;      // |sigma_f| [C/m^2]
-  double permittivity = 1.0;          // kappa_p of every agglomerate particle (built-in shapes)
-  std::vector<ListParticle> particles;  // shape = list
+  std::string shape = std::string(impact_keys().agglomerate.shape.def());  // tetrahedron | square | list
+  double radius = impact_keys().agglomerate.radius.def();                 // r_p [m] (built-in shapes)
+  double density = impact_keys().material.density.def();                 // rho_p [kg/m^3]
+  bool charged = impact_keys().agglomerate.charged.def();                 // alternate +/- sigma_f (built-in shapes)
+  double charge_density = impact_keys().agglomerate.charge_density.def(); // |sigma_f| [C/m^2]
+  double permittivity = impact_keys().agglomerate.permittivity.def();     // kappa_p (built-in shapes)
+  std::vector<ListParticle> particles;                                    // shape = list
 };
 
 struct ProjectileSpec {
-  double speed = 0.18;         // v_in [m/s]
-  double offset_radii = 0.05;  // lateral offset along y, in units of r_p
-  double gap_radii = 1.0;      // initial surface gap, in units of r_p
-  double radius = 10e-6;       // [m]
-  double charge = 0.0;         // [C]
-  double permittivity = 1.0;   // kappa_p
+  double speed = impact_keys().projectile.speed.def();                // v_in [m/s]
+  double offset_radii = impact_keys().projectile.offset_radii.def();  // lateral offset along y [r_p]
+  double gap_radii = impact_keys().projectile.gap_radii.def();        // initial surface gap [r_p]
+  double radius = impact_keys().agglomerate.radius.def();             // [m]; default: the agglomerate radius
+  double charge = impact_keys().projectile.charge.def();              // [C]
+  double permittivity = impact_keys().projectile.permittivity.def();  // kappa_p
 };
 
 struct TimeSpec {
-  double after_contact = 2e-3;    // run time after the first projectile contact [s]
-  double max_approach = 0.0;      // give up if no contact by then [s]; 0 = 5x the ballistic time
-  double extension = 1e-3;        // extra time when the outcome is undecided [s]
-  int max_extensions = 4;
-  double relax_time = 1e-3;       // max relaxation of the agglomerate before launch (electrostatics) [s]
-  double relax_energy = 1e-6;     // relaxed when kinetic energy < this x F_C delta_C
-  bool early_stop = true;         // stop once clearly broken (fragments escaping and far apart)
-  double early_stop_gap = 2.0;    // ... with surface gaps to the rest of at least this x r_p
+  double after_contact = impact_keys().time.after_contact.def();  // run time after the first contact [s]
+  double max_approach = impact_keys().time.max_approach.def();    // [s]; 0 = 5x the ballistic time
+  double extension = impact_keys().time.extension.def();          // extra time when undecided [s]
+  int max_extensions = static_cast<int>(impact_keys().time.max_extensions.def());
+  double relax_time = impact_keys().time.relax_time.def();      // max relaxation before launch [s]
+  double relax_energy = impact_keys().time.relax_energy.def();  // relaxed when E_kin < this x F_C delta_C
+  bool early_stop = impact_keys().time.early_stop.def();        // stop once clearly broken
+  double early_stop_gap = impact_keys().time.early_stop_gap.def();  // ... fragments this far apart [r_p]
 };
 
 struct OutputSpec {
-  double timeseries_interval = 5e-6;  // [s]
-  double snapshot_interval = 1e-4;    // [s]; 0 = no VTK snapshots
+  double timeseries_interval = impact_keys().output.timeseries_interval.def();  // [s]
+  double snapshot_interval = impact_keys().output.snapshot_interval.def();      // [s]; 0 = no VTK snapshots
 };
 
 struct VcritSpec {
-  double v_min = 0.02;       // [m/s]
-  double v_max = 0.6;        // [m/s]
-  int scan_points = 12;      // coarse scan (log-spaced is not needed: linear)
-  double tolerance = 5e-4;   // bisection tolerance [m/s]
-  int points_per_round = 2;  // speeds tried per bisection round (fixed by configuration, not by cores)
+  double v_min = impact_keys().vcrit.v_min.def();                               // [m/s]
+  double v_max = impact_keys().vcrit.v_max.def();                               // [m/s]
+  int scan_points = static_cast<int>(impact_keys().vcrit.scan_points.def());    // coarse linear scan
+  double tolerance = impact_keys().vcrit.tolerance.def();                       // bisection tolerance [m/s]
+  // Speeds tried per bisection round: fixed by configuration so v_crit never depends on the core count.
+  int points_per_round = static_cast<int>(impact_keys().vcrit.points_per_round.def());
 };
 
 // Break-up probability (agglo breakup): at each speed, `samples` runs whose projectile offset is
 // spread evenly over offset_radii +- offset_spread (stratified, no random numbers).
 struct BreakupSpec {
-  std::vector<double> speeds;     // [m/s]; default: the vcrit scan grid (v_min .. v_max, scan_points)
-  int samples = 16;               // runs per speed
-  double offset_spread = 0.05;    // half-width of the offset range [r_p]
+  std::vector<double> speeds;  // [m/s]; default: the vcrit scan grid (v_min .. v_max, scan_points)
+  int samples = static_cast<int>(impact_keys().breakup.samples.def());  // runs per speed
+  double offset_spread = impact_keys().breakup.offset_spread.def();     // half-width of the offset range [r_p]
 };
 
 struct ImpactCase {
-  std::string name = "collision";
+  std::string name = std::string(impact_keys().top.name.def());
   dem::DemParams dem;
   AgglomerateSpec agglomerate;
   ProjectileSpec projectile;
@@ -80,9 +82,9 @@ struct ImpactCase {
   OutputSpec output;
   VcritSpec vcrit;
   BreakupSpec breakup;
-  bool electrostatics = false;          // derived: any charge or field present
-  double medium_permittivity = 1.0;     // kappa_0
-  CouplingSettings coupling;            // [electrostatics]
+  bool electrostatics = false;  // derived: any charge or field present
+  double medium_permittivity = es::es_keys().medium_permittivity.def();  // kappa_0
+  CouplingSettings coupling;    // [electrostatics]
 };
 
 // Reads every section; throws ConfigError naming file, key, value and the allowed range.

@@ -1,0 +1,152 @@
+#pragma once
+// Settings tables of the acoustic agglomeration command (acoustic, sweep): the one declaration of
+// each key, its unit, default, range and meaning (docs/acoustics.md describes the model).
+#include <cstdint>
+
+#include "agglo/core/settings.hpp"
+
+namespace agglo::settings {
+
+inline constexpr std::string_view kAcousticCommands = "acoustic, sweep";
+
+struct AcousticSettings {
+  struct Top {
+    Table t{"", kAcousticCommands, "top-level keys of an acoustic case"};
+    Integer seed{t, {"seed", "", "random seed of the sampling and the collisions"}, 1, 0, INT64_MAX};
+  } top;
+
+  struct Gas {
+    Table t{"gas", kAcousticCommands, "carrier gas (air)"};
+    Real temperature{t, {"gas.temperature", "K", "gas temperature"}, 298.15, Range::positive()};
+    Real pressure{t, {"gas.pressure", "Pa", "gas pressure"}, 101325.0, Range::positive()};
+    Bool gravity{t, {"gas.gravity", "", "gravitational settling"}, true};
+    Real viscosity{t, {"gas.viscosity", "Pa s", "dynamic viscosity", "Sutherland's law at the temperature"},
+                   std::nullopt, Range::positive()};
+    Real mean_free_path{t, {"gas.mean_free_path", "m", "mean free path", "from viscosity, density and mean speed"},
+                        std::nullopt, Range::positive()};
+  } gas;
+
+  struct Sound {
+    Table t{"sound", kAcousticCommands, "travelling sound wave"};
+    Bool enabled{t, {"sound.enabled", "", "sound field on"}, true};
+    Real level_db{t, {"sound.level_db", "dB", "sound pressure level L"}, 140.0, Range::any()};
+    Real frequency_hz{t, {"sound.frequency_hz", "Hz", "frequency f"}, 2000.0, Range::positive()};
+  } sound;
+
+  struct Time {
+    Table t{"time", kAcousticCommands, "time stepping"};
+    Real end{t, {"time.end", "s", "simulated time (a whole number of collision steps)"}, std::nullopt,
+             Range::positive()};
+    Real collision_dt{t, {"time.collision_dt", "s", "collision (DSMC) step"}, 1e-5, Range::positive()};
+    Real motion_dt{t, {"time.motion_dt", "s", "particle motion step (divides the collision step)", "the collision step"},
+                   std::nullopt, Range::positive()};
+    Choice integrator{t, {"time.integrator", "", "particle motion integrator"}, "exact", {"exact", "explicit", "none"}};
+    Choice initial_velocity{t, {"time.initial_velocity", "", "initial particle velocity"}, "steady",
+                            {"steady", "gas", "rest"}};
+    Choice nanbu_guard{t, {"time.nanbu_guard", "", "when P_ij > 1/N: sub-cycle the cell, or stop"}, "subcycle",
+                       {"subcycle", "strict"}};
+    Integer max_subcycles{t, {"time.max_subcycles", "", "most sub-cycles of one cell and step"}, 100000, 1,
+                          1000000000};
+  } time;
+
+  struct Population {
+    Table t{"population", kAcousticCommands, "sampled particle populations (at least one)", true};
+    Text name{t, {"population.name", "", "population name"}, std::nullopt};
+    Choice phase{t, {"population.phase", "", "solid particles or liquid droplets"}, std::nullopt, {"solid", "liquid"}};
+    Choice distribution{t, {"population.distribution", "", "size distribution"}, std::nullopt,
+                        {"lognormal", "monodisperse", "exponential", "table"}};
+    Real number_concentration{t, {"population.number_concentration", "1/m^3", "number concentration N_tot"},
+                              std::nullopt, Range::nonnegative()};
+    Real density{t, {"population.density", "kg/m^3", "particle density", "2500 (solid), 1000 (liquid)"},
+                 std::nullopt, Range::positive()};
+    Integer samples{t, {"population.samples", "", "computational samples"}, std::nullopt, 1, 100000000};
+    Choice weight_rounding{t, {"population.weight_rounding", "", "integer weights: round each, or conserve the sum"},
+                           "nearest", {"nearest", "conserving"}};
+    Real geometric_mean_diameter{t, {"population.geometric_mean_diameter", "m", "lognormal: d_g"}, std::nullopt,
+                                 Range::positive()};
+    Real geometric_std{t, {"population.geometric_std", "", "lognormal: sigma_g"}, std::nullopt,
+                       Range::closed(1.0, 1e3)};
+    Integer bins{t, {"population.bins", "", "lognormal: size bins"}, 40, 1, 100000};
+    Real diameter{t, {"population.diameter", "m", "monodisperse: diameter"}, std::nullopt, Range::nonnegative()};
+    Real mean_volume{t, {"population.mean_volume", "m^3", "exponential: mean volume v0"}, std::nullopt,
+                     Range::positive()};
+    Reals table_diameters{t, {"population.table_diameters", "m", "table: diameters"}, std::nullopt,
+                          Range::positive()};
+    Reals table_fractions{t, {"population.table_fractions", "", "table: number fractions"}, std::nullopt,
+                          Range::nonnegative()};
+  } population;
+
+  struct Domain {
+    Table t{"domain", kAcousticCommands, "periodic box and cells"};
+    Real length_x{t, {"domain.length_x", "m", "length along the wave", "one wavelength c/f (required without sound)"},
+                  std::nullopt, Range::positive()};
+    Real length_y{t, {"domain.length_y", "m", "transverse length"}, 0.01, Range::positive()};
+    Real length_z{t, {"domain.length_z", "m", "transverse length"}, 0.01, Range::positive()};
+    Integer cells_x{t, {"domain.cells_x", "", "cells along x"}, 100, 1, 100000000};
+    Integer cells_y{t, {"domain.cells_y", "", "cells along y"}, 1, 1, 100000000};
+    Integer cells_z{t, {"domain.cells_z", "", "cells along z"}, 1, 1, 100000000};
+    Integer min_cells_per_wavelength{t, {"domain.min_cells_per_wavelength", "", "cells must resolve the wave"}, 100,
+                                     1, 100000000};
+  } domain;
+
+  struct Kernels {
+    Table t{"kernels", kAcousticCommands, "collision kernels"};
+    Choice model{t, {"kernels.model", "", "kernel model"}, "acoustic",
+                 {"acoustic", "constant", "additive", "brownian_fuchs"}};
+    Bool orthokinetic{t, {"kernels.orthokinetic", "", "orthokinetic (relative acoustic motion) collisions"}, true};
+    Bool acoustic_wake{t, {"kernels.acoustic_wake", "", "acoustic wake effect"}, true};
+    Bool radiation_pressure{t, {"kernels.radiation_pressure", "", "mutual radiation pressure"}, true};
+    Bool brownian{t, {"kernels.brownian", "", "Brownian collisions"}, true};
+    Choice brownian_form{t, {"kernels.brownian_form", "", "Brownian kernel form"}, "continuum_slip",
+                         {"continuum_slip", "fuchs"}};
+    Bool inertia_correction{t, {"kernels.inertia_correction", "", "particle inertia correction of the motion"}, true};
+    Real collision_efficiency{t, {"kernels.collision_efficiency", "", "collision efficiency factor"}, 1.0,
+                              Range::closed(0.0, 1.0)};
+    Bool exclude_same_population{t, {"kernels.exclude_same_population", "", "no collisions within a population"},
+                                 false};
+    Real constant_coefficient{t, {"kernels.constant_coefficient", "m^3/s", "model constant: kernel value"},
+                              std::nullopt, Range::positive()};
+    Real additive_coefficient{t, {"kernels.additive_coefficient", "1/s", "model additive: kernel per volume"},
+                              std::nullopt, Range::positive()};
+  } kernels;
+
+  struct Outcomes {
+    Table t{"outcomes", kAcousticCommands, "collision outcomes (coalescence or rebound)"};
+    Bool always_coalesce{t, {"outcomes.always_coalesce", "", "every collision coalesces (kernel tests)"}, false};
+    Real hamaker{t, {"outcomes.hamaker", "J", "Hamaker constant A"}, 1e-19, Range::positive()};
+    Real contact_distance{t, {"outcomes.contact_distance", "m", "minimum contact distance z0"}, 4e-10,
+                          Range::positive()};
+    Real contact_pressure{t, {"outcomes.contact_pressure", "Pa", "contact pressure p_c"}, 3e8, Range::positive()};
+    Real restitution{t, {"outcomes.restitution", "", "restitution coefficient e"}, 0.6, Range::open_closed(0.0, 1.0)};
+    Real friction{t, {"outcomes.friction", "", "friction coefficient f_p"}, 0.2, Range::nonnegative()};
+    Real liquid_viscosity{t, {"outcomes.liquid_viscosity", "Pa s", "liquid viscosity mu_l"}, 8.9e-4,
+                          Range::positive()};
+    Real film_roughness_ratio{t, {"outcomes.film_roughness_ratio", "", "liquid film to roughness ratio delta/h_a"},
+                              10.0, Range::open(1.0, 1e300)};
+    Real solid_density{t, {"outcomes.solid_density", "kg/m^3", "rho_s of the wet outcome model"}, 2500.0,
+                       Range::positive()};
+    Bool energy_compensation{t, {"outcomes.energy_compensation", "", "kinetic energy compensation of merges"}, true};
+  } outcomes;
+
+  struct Output {
+    Table t{"output", kAcousticCommands, "outputs"};
+    Reals psd_times{t, {"output.psd_times", "s", "times of psd.csv, within the run", "0, t/4, t/2, 3t/4, t (t = run end)"},
+                    std::nullopt, Range::nonnegative()};
+    Integer psd_bins{t, {"output.psd_bins", "", "size bins of psd.csv"}, 60, 1, 100000};
+    Real psd_d_min{t, {"output.psd_d_min", "m", "smallest diameter of psd.csv"}, 1e-8, Range::positive()};
+    Real psd_d_max{t, {"output.psd_d_max", "m", "largest diameter of psd.csv"}, 1e-4, Range::positive()};
+    Real efficiency_interval{t, {"output.efficiency_interval", "s", "interval of efficiency.csv rows", "run end / 200"},
+                             std::nullopt, Range::positive()};
+    Reals snapshot_times{t, {"output.snapshot_times", "s", "times of snapshots.csv, within the run", "0, t/8, t/4, t/2 (t = run end)"},
+                         std::nullopt, Range::nonnegative()};
+    Real snapshot_x_fraction{t, {"output.snapshot_x_fraction", "", "snapshots keep 0 <= x <= fraction * length_x"},
+                             0.25, Range::open_closed(0.0, 1.0)};
+    Bool plots{t, {"output.plots", "", "make PNG plots"}, true};
+  } output;
+
+  std::vector<const Table*> tables() const;
+};
+
+const AcousticSettings& acoustic_settings();
+
+}  // namespace agglo::settings

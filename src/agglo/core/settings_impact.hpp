@@ -1,0 +1,129 @@
+#pragma once
+// Settings tables of the DEM impact commands (collide, vcrit, breakup): the one declaration of each
+// key, its unit, default, range and meaning (docs/dem.md describes the experiment, docs/config.md
+// lists these tables). [electrostatics] and [[particles]] are in settings_electrostatics.hpp.
+#include <cstdint>
+
+#include "agglo/core/settings.hpp"
+
+namespace agglo::settings {
+
+inline constexpr std::string_view kImpactCommands = "collide, vcrit, breakup";
+
+struct ImpactSettings {
+  struct Top {
+    Table t{"", kImpactCommands, "top-level keys of an impact case"};
+    Text name{t, {"name", "", "case name"}, "collision"};
+  } top;
+
+  struct Material {
+    Table t{"material", kImpactCommands, "material of every particle (contact model)"};
+    Real density{t, {"material.density", "kg/m^3", "particle density rho_p"}, 2500.0, Range::positive()};
+    Real youngs_modulus{t, {"material.youngs_modulus", "Pa", "Young's modulus E of the contact model"}, 1.0e9,
+                        Range::positive()};
+    Real poisson_ratio{t, {"material.poisson_ratio", "", "Poisson ratio nu"}, 0.33, Range::open(-1.0, 0.5)};
+    Real surface_energy{t, {"material.surface_energy", "J/m^2", "surface energy gamma of the JKR adhesion"}, 0.01,
+                        Range::positive()};
+    Real restitution{t, {"material.restitution", "", "normal coefficient of restitution e"}, 0.7,
+                     Range::open_closed(0.0, 1.0)};
+    Real friction{t, {"material.friction", "", "sliding friction coefficient mu_F"}, 0.3, Range::nonnegative()};
+    Real real_youngs_modulus{t,
+                             {"material.real_youngs_modulus", "Pa",
+                              "real Young's modulus; electrostatic forces are scaled by (E/E_real)^(2/5)", {},
+                              "0 = same as youngs_modulus"},
+                             0.0, Range::nonnegative()};
+  } material;
+
+  struct Contact {
+    Table t{"contact", kImpactCommands, "contact force model"};
+    Choice tangential{t, {"contact.tangential", "", "tangential (sliding) force model"}, "seed", {"seed", "marshall"}};
+    Bool rolling{t, {"contact.rolling", "", "rolling resistance (needs the marshall tangential model)"}, false};
+    Bool twisting{t, {"contact.twisting", "", "twisting resistance (needs the marshall tangential model)"}, false};
+    Real rolling_angle{t, {"contact.rolling_angle", "rad", "critical rolling angle theta_crit"}, 0.01,
+                       Range::positive()};
+    Choice break_rule{t, {"contact.break_rule", "", "when a stretched adhesive contact breaks"}, "marshall",
+                      {"marshall", "lammps"}};
+    Bool damping{t, {"contact.damping", "", "viscous damping of the normal contact force"}, true};
+  } contact;
+
+  struct Time {
+    Table t{"time", kImpactCommands, "time stepping and run length"};
+    Real dt{t, {"time.dt", "s", "time step", {}, "0 = T0/steps_per_period"}, 0.0, Range::nonnegative()};
+    Real steps_per_period{t, {"time.steps_per_period", "", "steps per contact period T0 when dt = 0"}, 50.0,
+                          Range::closed(10.0, 1e6)};
+    Real after_contact{t, {"time.after_contact", "s", "run time after the first projectile contact"}, 2e-3,
+                       Range::positive()};
+    Real max_approach{t, {"time.max_approach", "s", "give up if no contact by then", {}, "0 = automatic"}, 0.0,
+                      Range::nonnegative()};
+    Real extension{t, {"time.extension", "s", "extra run time while the outcome is undecided"}, 1e-3,
+                   Range::positive()};
+    Integer max_extensions{t, {"time.max_extensions", "", "most extensions of an undecided run"}, 4, 0, 100};
+    Real relax_time{t, {"time.relax_time", "s", "longest relaxation of a charged agglomerate before launch"}, 1e-3,
+                    Range::nonnegative()};
+    Real relax_energy{t, {"time.relax_energy", "F_C delta_C", "relaxed once the kinetic energy is below this"},
+                      1e-6, Range::positive()};
+    Bool early_stop{t, {"time.early_stop", "", "stop once clearly broken (fragments escaping and far apart)"}, true};
+    Real early_stop_gap{t, {"time.early_stop_gap", "r_p", "surface gap of escaping fragments for an early stop"},
+                        2.0, Range::positive()};
+  } time;
+
+  struct Agglomerate {
+    Table t{"agglomerate", kImpactCommands, "the target agglomerate"};
+    Choice shape{t, {"agglomerate.shape", "", "built-in shape, or list = the [[particles]] entries"},
+                 "tetrahedron", {"tetrahedron", "square", "list"}};
+    Real radius{t, {"agglomerate.radius", "m", "particle radius r_p of the built-in shapes"}, 10e-6,
+                Range::positive()};
+    Bool charged{t, {"agglomerate.charged", "", "alternate +/- charge_density on the built-in shapes"}, false};
+    Real charge_density{t, {"agglomerate.charge_density", "C/m^2", "surface charge density |sigma_f|"}, 10e-6,
+                        Range::nonnegative()};
+    Real permittivity{t, {"agglomerate.permittivity", "", "relative permittivity kappa_p of the built-in shapes"},
+                      1.0, Range::positive()};
+  } agglomerate;
+
+  struct Projectile {
+    Table t{"projectile", kImpactCommands, "the incoming particle"};
+    Real speed{t, {"projectile.speed", "m/s", "impact speed v_in"}, 0.18, Range::nonnegative()};
+    Real offset_radii{t, {"projectile.offset_radii", "r_p", "lateral offset along y"}, 0.05, Range::any()};
+    Real gap_radii{t, {"projectile.gap_radii", "r_p", "initial surface gap"}, 1.0, Range::positive()};
+    Real radius{t, {"projectile.radius", "m", "projectile radius", "the agglomerate radius"}, std::nullopt,
+                Range::positive()};
+    Real charge{t, {"projectile.charge", "C", "projectile charge"}, 0.0, Range::any()};
+    Real permittivity{t, {"projectile.permittivity", "", "relative permittivity kappa_p"}, 1.0, Range::positive()};
+  } projectile;
+
+  struct Output {
+    Table t{"output", kImpactCommands, "output intervals"};
+    Real timeseries_interval{t, {"output.timeseries_interval", "s", "interval of timeseries.csv rows"}, 5e-6,
+                             Range::positive()};
+    Real snapshot_interval{t, {"output.snapshot_interval", "s", "interval of VTK snapshots", {}, "0 = none"}, 1e-4,
+                           Range::nonnegative()};
+  } output;
+
+  struct Vcrit {
+    Table t{"vcrit", "vcrit, breakup", "critical break-up speed search"};
+    Real v_min{t, {"vcrit.v_min", "m/s", "lowest speed of the scan"}, 0.02, Range::positive()};
+    Real v_max{t, {"vcrit.v_max", "m/s", "highest speed of the scan"}, 0.6, Range::positive()};
+    Integer scan_points{t, {"vcrit.scan_points", "", "speeds of the coarse linear scan"}, 12, 3, 1000};
+    Real tolerance{t, {"vcrit.tolerance", "m/s", "bisection tolerance"}, 5e-4, Range::positive()};
+    Integer points_per_round{t,
+                             {"vcrit.points_per_round", "",
+                              "speeds tried per bisection round; fixed by configuration so v_crit never depends "
+                              "on the core count"},
+                             2, 1, 64};
+  } vcrit;
+
+  struct Breakup {
+    Table t{"breakup", "breakup", "break-up probability against speed"};
+    Reals speeds{t, {"breakup.speeds", "m/s", "impact speeds", "the vcrit scan grid (scan_points from v_min to v_max)"},
+                 std::nullopt, Range::positive()};
+    Integer samples{t, {"breakup.samples", "", "runs per speed (offsets spread evenly)"}, 16, 1, 100000};
+    Real offset_spread{t, {"breakup.offset_spread", "r_p", "half-width of the offset range"}, 0.05,
+                       Range::nonnegative()};
+  } breakup;
+
+  std::vector<const Table*> tables() const;
+};
+
+const ImpactSettings& impact_settings();
+
+}  // namespace agglo::settings
