@@ -58,7 +58,7 @@ TEST(Kernels, CellBoundIsAMajorant) {
     for (auto form : {BrownianForm::continuum_slip, BrownianForm::fuchs}) {
       ks.brownian_form = form;
       Kernel K(ks, gas, snd);
-      ParticleSet p;
+      SampleSet p;
       for (int i = 0; i < 60; ++i) {
         const double d = 1e-8 * std::pow(5000.0, u(rng));
         const double v = pi * d * d * d / 6;

@@ -48,7 +48,7 @@ inline void drift_correction(double A, double k, double w, double iw, double te,
 }
 // Closed-form step of y (no forcing) and z (settling to the terminal velocity vt) over h, shared by
 // the block and the one-sample exact steps. E = exp(-h/te), omE = 1 - E.
-inline void transverse_step(ParticleSet& p, std::size_t i, double te, double h, double E, double omE, double vt) {
+inline void transverse_step(SampleSet& p, std::size_t i, double te, double h, double E, double omE, double vt) {
   p.y[i] += p.vy[i] * te * omE;
   p.vy[i] *= E;
   const double dz = p.vz[i] - vt;
@@ -57,7 +57,7 @@ inline void transverse_step(ParticleSet& p, std::size_t i, double te, double h, 
 }
 }  // namespace
 
-double Motion::effective_tau(const ParticleSet& p, std::size_t i, double t) const {
+double Motion::effective_tau(const SampleSet& p, std::size_t i, double t) const {
   if (!inertia_correction) return p.tau[i];
   const double ug = sound.u_amp * std::sin(sound.omega * t - sound.wavenumber * p.x[i]);
   const double sx = ug - p.vx[i];
@@ -65,7 +65,7 @@ double Motion::effective_tau(const ParticleSet& p, std::size_t i, double t) cons
   return p.tau[i] / Gas::inertia_correction(gas.reynolds(slip, p.d[i]));
 }
 
-void Motion::set_steady_velocity(ParticleSet& p, std::size_t i, double t) const {
+void Motion::set_steady_velocity(SampleSet& p, std::size_t i, double t) const {
   // Iterate tau_e <-> velocity twice so that C_I matches the steady slip.
   double te = p.tau[i];
   const double a = gas.gravity * (p.rho[i] - gas.density) / p.rho[i];
@@ -79,7 +79,7 @@ void Motion::set_steady_velocity(ParticleSet& p, std::size_t i, double t) const 
   }
 }
 
-void Motion::wrap(ParticleSet& p, std::size_t i) const {
+void Motion::wrap(SampleSet& p, std::size_t i) const {
   double* c[3] = {&p.x[i], &p.y[i], &p.z[i]};
   for (int k = 0; k < 3; ++k) {
     double& v = *c[k];
@@ -96,14 +96,14 @@ Motion::StepTrig Motion::trig(double t, double h) const {
           1.0 / sound.omega};
 }
 
-void Motion::advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, double h) const {
+void Motion::advance_exact(SampleSet& p, std::size_t i, const StepTrig& tr, double h) const {
   advance_exact_block(p, i, i + 1, tr, h);
 }
 
 // The step of one sample is a long chain of dependent operations (phase -> slip -> C_I -> tau_e ->
 // exp -> update). To let the processor overlap many samples, the step runs in stages over blocks
 // of samples; every sample sees exactly the arithmetic of the one-sample form.
-void Motion::advance_exact_block(ParticleSet& p, std::size_t begin, std::size_t end, const StepTrig& tr,
+void Motion::advance_exact_block(SampleSet& p, std::size_t begin, std::size_t end, const StepTrig& tr,
                                  double h) const {
   constexpr std::size_t B = 64;
   double S0[B], C0[B], TE[B], CI[B], EE[B], OME[B];
@@ -211,7 +211,7 @@ void Motion::advance_exact_block(ParticleSet& p, std::size_t begin, std::size_t 
   }
 }
 
-void Motion::advance_exact(ParticleSet& p, std::size_t i, double t, double h) const {
+void Motion::advance_exact(SampleSet& p, std::size_t i, double t, double h) const {
   const double te = effective_tau(p, i, t);
   const double E = std::exp(-h / te);
   const double omE = -std::expm1(-h / te);
@@ -237,7 +237,7 @@ void Motion::advance_exact(ParticleSet& p, std::size_t i, double t, double h) co
   wrap(p, i);
 }
 
-void Motion::advance_explicit(ParticleSet& p, std::size_t i, double t, double h) const {
+void Motion::advance_explicit(SampleSet& p, std::size_t i, double t, double h) const {
   const double te = effective_tau(p, i, t);
   const double ug = sound.u_amp * std::sin(sound.omega * t - sound.wavenumber * p.x[i]);
   const double a = gas.gravity * (p.rho[i] - gas.density) / p.rho[i];
@@ -250,7 +250,7 @@ void Motion::advance_explicit(ParticleSet& p, std::size_t i, double t, double h)
   wrap(p, i);
 }
 
-void Motion::advance(ParticleSet& p, std::size_t begin, std::size_t end, double t, double h, int substeps) const {
+void Motion::advance(SampleSet& p, std::size_t begin, std::size_t end, double t, double h, int substeps) const {
   if (integrator == Integrator::none) return;
   if (integrator == Integrator::exact) {
     const double hs = h / substeps;

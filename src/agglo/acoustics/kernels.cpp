@@ -74,7 +74,7 @@ bool Kernel::needs_distance() const {
   return s_.model == KernelModel::acoustic && (s_.acoustic_wake || s_.radiation_pressure);
 }
 
-double Kernel::beta(const ParticleSet& p, std::size_t i, std::size_t j, double r) const {
+double Kernel::beta(const SampleSet& p, std::size_t i, std::size_t j, double r) const {
   switch (s_.model) {
     case KernelModel::constant: return beta_constant(s_.constant_coefficient);
     case KernelModel::additive: return beta_additive(s_.additive_coefficient, p.volume(i), p.volume(j));
@@ -99,7 +99,7 @@ double Kernel::beta(const ParticleSet& p, std::size_t i, std::size_t j, double r
   return b;
 }
 
-void CellBounds::include(const ParticleSet& p, std::size_t i, const Gas& gas) {
+void CellBounds::include(const SampleSet& p, std::size_t i, const Gas& gas) {
   d_max = std::max(d_max, p.d[i]);
   vol_max = std::max(vol_max, p.volume(i));
   dl_max = std::max(dl_max, p.dl[i]);
@@ -137,7 +137,7 @@ double Kernel::bound_cell(const CellBounds& cb) const {
   return b;
 }
 
-double Kernel::bound(const ParticleSet& p, std::size_t i, const CellBounds& cb) const {
+double Kernel::bound(const SampleSet& p, std::size_t i, const CellBounds& cb) const {
   const double di = p.d[i];
   const double sd = di + cb.d_max;
   switch (s_.model) {

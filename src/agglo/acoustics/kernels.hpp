@@ -61,7 +61,7 @@ struct CellBounds {
   double cbar_max = 0.0;     // largest thermal speed (Fuchs)
   double vref[3] = {0, 0, 0};// reference velocity of the cell
   bool need_cbar = false;    // track cbar_max (Fuchs only)
-  void include(const ParticleSet& p, std::size_t i, const Gas& gas);
+  void include(const SampleSet& p, std::size_t i, const Gas& gas);
   void finalize() { speed_dev_max = std::sqrt(speed_dev2_max); }
 };
 
@@ -70,9 +70,9 @@ class Kernel {
   Kernel(KernelSettings s, const Gas& gas, const Sound& sound) : s_(s), gas_(gas), sound_(sound) {}
   const KernelSettings& settings() const { return s_; }
   // Sum of the enabled kernels for samples i, j at centre distance r.
-  double beta(const ParticleSet& p, std::size_t i, std::size_t j, double r) const;
+  double beta(const SampleSet& p, std::size_t i, std::size_t j, double r) const;
   // Upper bound of beta(i, j) over every j the cell bounds describe.
-  double bound(const ParticleSet& p, std::size_t i, const CellBounds& cb) const;
+  double bound(const SampleSet& p, std::size_t i, const CellBounds& cb) const;
   // Upper bound of beta over every pair of the cell.
   double bound_cell(const CellBounds& cb) const;
   bool needs_distance() const;

@@ -32,7 +32,7 @@ void NanbuStats::add(const NanbuStats& o) {
   energy_returned += o.energy_returned;
 }
 
-CellBounds cell_bounds(const ParticleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
+CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
                        const Gas& gas) {
   CellBounds cb;
   cb.need_cbar = k.settings().model == KernelModel::brownian_fuchs ||
@@ -80,7 +80,7 @@ CellBounds cell_bounds(const ParticleSet& p, const std::uint32_t* idx, std::size
   return cb;
 }
 
-double guard_pn(const ParticleSet& p, std::size_t i, std::size_t N, const CellBounds& cb, const Kernel& k, double dt,
+double guard_pn(const SampleSet& p, std::size_t i, std::size_t N, const CellBounds& cb, const Kernel& k, double dt,
                 double cell_volume) {
   return static_cast<double>(N) * k.bound(p, i, cb) * cb.w_max * dt / (2.0 * cell_volume);
 }
@@ -113,7 +113,7 @@ double min_image(double d, double L) { return d - L * std::nearbyint(d / L); }
 
 }  // namespace
 
-void collide_cell(ParticleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
+void collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
                   const CollisionContext& ctx, NanbuStats& st) {
   const Kernel& K = *ctx.kernel;
   const OutcomeParams& oc = *ctx.outcomes;

@@ -55,7 +55,7 @@ bool due(double t, double target, double dt) { return std::abs(t - target) < 0.5
 
 void check_startup(const AcousticCase& c, const Engine& e) {
   const auto& s = c.engine;
-  const ParticleSet& p = e.particles();
+  const SampleSet& p = e.particles();
   if (s.motion.integrator == Integrator::explicit_euler) {
     double tmin = std::numeric_limits<double>::infinity();
     std::size_t imin = 0;
@@ -168,7 +168,7 @@ nlohmann::json run_acoustic(Config& cfg, const OutputDir& out, const RunOptions&
                             h[1][b] * kPerCm3, h[2][b] * kPerCm3, h[3][b] * kPerCm3);
   };
   auto record_snap = [&](double t) {
-    const ParticleSet& p = eng.particles();
+    const SampleSet& p = eng.particles();
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.w[i] > 0 && p.x[i] <= c.output.snapshot_x_fraction * M.domain.L[0])
         snap << fmt::format("{:.8g},{},{:.8g},{:.8g},{:.8g},{:.6g},{:.6g},{:.6g},{:g},{}\n", t, p.id[i], p.x[i], p.y[i],
