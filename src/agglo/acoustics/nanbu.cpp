@@ -35,8 +35,7 @@ void NanbuStats::add(const NanbuStats& o) {
 CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
                        const Gas& gas) {
   CellBounds cb;
-  cb.need_cbar = k.settings().model == KernelModel::brownian_fuchs ||
-                 (k.settings().brownian && k.settings().brownian_form == BrownianForm::fuchs);
+  cb.need_cbar = k.needs_thermal_speed();
   double sw = 0.0, mx = 0.0, my = 0.0, mz = 0.0;
   for (std::size_t a = 0; a < n; ++a) {
     const std::size_t i = idx[a];
@@ -64,7 +63,7 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
     const double ex = p.vx[i] - cb.vref[0], ey = p.vy[i] - cb.vref[1], ez = p.vz[i] - cb.vref[2];
     s2_max = std::max(s2_max, ex * ex + ey * ey + ez * ez);
   }
-  if (k.settings().model == KernelModel::additive)  // vol_max is used by the additive kernel only
+  if (k.needs_volume())  // vol_max is used by the additive kernel only
     for (std::size_t a = 0; a < n; ++a)
       if (p.w[idx[a]] > 0.0) vol_max = std::max(vol_max, p.vol_s[idx[a]] + p.vol_l[idx[a]]);
   cb.d_max = d_max;
