@@ -1,6 +1,6 @@
 #pragma once
 // Constant test kernel (docs/model.md §C.7.1): beta = K0 [m^3/s] (kernels.constant_coefficient).
-// Its own bound.
+// Bound: K0.
 #include <string_view>
 
 #include "agglo/acoustics/kernels/cell_bounds.hpp"
