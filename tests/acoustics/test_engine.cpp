@@ -76,7 +76,7 @@ TEST(Engine, SameResultWithOneAndTwoThreads) {
   Engine a = run(1);
   Engine b = run(2);
   omp_set_num_threads(saved);
-  const ParticleSet &p = a.particles(), &q = b.particles();
+  const SampleSet &p = a.particles(), &q = b.particles();
   ASSERT_EQ(p.size(), q.size());
   ASSERT_GT(a.stats().collisions, 0u);
   EXPECT_EQ(a.stats().collisions, b.stats().collisions);
@@ -128,7 +128,7 @@ restitution = 1.0
 friction = 0.0
 )";
   Engine e = test::make_engine(toml);
-  ParticleSet& p = e.particles();
+  SampleSet& p = e.particles();
   std::mt19937_64 rng(1);
   std::normal_distribution<double> g(0.0, 1.0);
   for (std::size_t i = 0; i < p.size(); ++i) {

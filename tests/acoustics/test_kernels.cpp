@@ -7,6 +7,7 @@
 #include "agglo/acoustics/kernels.hpp"
 #include "agglo/acoustics/nanbu.hpp"
 #include "agglo/core/constants.hpp"
+#include "agglo/core/error.hpp"
 
 using namespace agglo::acoustics;
 using agglo::constants::pi;
@@ -41,7 +42,7 @@ TEST(Kernels, MechanismFormulas) {
   EXPECT_NEAR(beta_brownian_slip(g, 1e-6, 2e-6, 1.2, 1.1),
               2 * kT / (3 * g.viscosity) * 3e-6 * (1.2 / 1e-6 + 1.1 / 2e-6), 1e-30);
   // MRPE is ~1e-6 of OI at the seed's conditions (MODEL C.3).
-  const double mr = beta_radiation_pressure(g, 0.69, 1e-3, 30e-6, 1e-6, 0.99, 0.1, 1.0);
+  const double mr = beta_radiation_pressure(radiation_pressure_prefactor(g, 0.69), 1e-3, 30e-6, 1e-6, 0.99, 0.1, 1.0);
   EXPECT_GT(mr, 0.0);
   EXPECT_LT(mr / beta_orthokinetic(30e-6, 1e-6, 0.69), 1e-4);
 }
@@ -58,7 +59,7 @@ TEST(Kernels, CellBoundIsAMajorant) {
     for (auto form : {BrownianForm::continuum_slip, BrownianForm::fuchs}) {
       ks.brownian_form = form;
       Kernel K(ks, gas, snd);
-      ParticleSet p;
+      SampleSet p;
       for (int i = 0; i < 60; ++i) {
         const double d = 1e-8 * std::pow(5000.0, u(rng));
         const double v = pi * d * d * d / 6;
@@ -85,4 +86,51 @@ TEST(Kernels, CellBoundIsAMajorant) {
       }
     }
   }
+}
+
+TEST(Kernels, MechanismsAreSelectedByNameInSummationOrder) {
+  const Gas gas = Gas::air(298.15, 101325.0, false);
+  const Sound snd = Sound::make(gas, true, 140.0, 2000.0);
+  KernelSettings ks;
+  ks.acoustic_wake = false;
+  const Kernel K(ks, gas, snd);
+  const std::vector<std::string_view> on = K.mechanisms();
+  ASSERT_EQ(on.size(), 3u);
+  EXPECT_EQ(on[0], "orthokinetic");
+  EXPECT_EQ(on[1], "radiation_pressure");
+  EXPECT_EQ(on[2], "brownian");
+  EXPECT_TRUE(K.needs_distance());
+  EXPECT_FALSE(K.needs_thermal_speed());
+  ks.model = KernelModel::additive;
+  const Kernel A(ks, gas, snd);
+  ASSERT_EQ(A.mechanisms().size(), 1u);
+  EXPECT_EQ(A.mechanisms()[0], "additive");
+  EXPECT_TRUE(A.needs_volume());
+  EXPECT_FALSE(A.needs_distance());
+  // Every name mechanism_names() can produce is registered, and an unknown one is refused.
+  EXPECT_THROW(KernelMechanisms({"orthokinetic", "no_such_mechanism"}, ks, gas, snd), agglo::ConfigError);
+}
+
+TEST(Kernels, SumOfMechanismsInOrder) {
+  // beta of the acoustic model is the sum of the per-mechanism kernels, added in registry order.
+  const Gas gas = Gas::air(298.15, 101325.0, true);
+  const Sound snd = Sound::make(gas, true, 140.0, 2000.0);
+  SampleSet p;
+  const double d0 = 2e-6, d1 = 20e-6, v0 = pi * d0 * d0 * d0 / 6, v1 = pi * d1 * d1 * d1 / 6;
+  p.add(1e-4, 0, 0, v0, 0, 2500 * v0, 10, 0, gas, snd);
+  p.add(3e-4, 1e-5, 0, 0, v1, 1000 * v1, 1, 1, gas, snd);
+  p.vx[0] = 0.3;
+  p.vz[1] = -0.01;
+  KernelSettings ks;
+  ks.collision_efficiency = 0.7;
+  const Kernel K(ks, gas, snd);
+  const double r = 2.1e-4;
+  const double gx = p.vx[0] - p.vx[1], gy = p.vy[0] - p.vy[1], gz = p.vz[0] - p.vz[1];
+  double expect = 0.0;
+  expect += 0.7 * beta_orthokinetic(p.d[0], p.d[1], std::sqrt(gx * gx + gy * gy + gz * gz));
+  expect += beta_acoustic_wake(snd.u_amp, r, p.d[0], p.d[1], p.slip_l[0], p.slip_l[1]);
+  expect += beta_radiation_pressure(radiation_pressure_prefactor(gas, snd.u_amp), r, p.d[0], p.d[1], p.slip_l[0],
+                                    p.slip_l[1], p.cphi[0] * p.cphi[1] + p.sphi[0] * p.sphi[1]);
+  expect += beta_brownian_slip(gas, p.d[0], p.d[1], p.cc[0], p.cc[1]);
+  EXPECT_EQ(K.beta(p, 0, 1, r), expect);
 }

@@ -16,7 +16,7 @@ namespace {
 struct Pair {
   Gas gas = Gas::air(298.15, 101325.0, true);
   Sound snd = Sound::make(gas, true, 140.0, 2000.0);
-  ParticleSet p;
+  SampleSet p;
   // i: solid 1 um, j: droplet 10 um
   Pair(double wi, double wj) {
     const double vi = pi * 1e-18 / 6, vj = pi * 1e-15 / 6;

@@ -10,7 +10,7 @@ using namespace agglo::acoustics;
 namespace {
 struct Sampled {
   SampledPopulation pop;
-  ParticleSet p;
+  SampleSet p;
 };
 Sampled sample(Distribution dist, long samples, double conc, bool conserving) {
   const Gas g = Gas::air(298.15, 101325.0, true);

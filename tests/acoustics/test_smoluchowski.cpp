@@ -56,7 +56,7 @@ struct Errors {
 };
 
 // Relative L2 errors over log-spaced bins in x = v/v0 of the number and mass per bin.
-Errors l2_errors(const ParticleSet& p, const std::function<double(double)>& f, double xmin, double xmax, int nb) {
+Errors l2_errors(const SampleSet& p, const std::function<double(double)>& f, double xmin, double xmax, int nb) {
   std::vector<double> ns(nb, 0.0), ms(nb, 0.0), ne(nb, 0.0), me(nb, 0.0);
   const double r = std::log(xmax / xmin) / nb;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -91,7 +91,7 @@ Errors l2_errors(const ParticleSet& p, const std::function<double(double)>& f, d
   return {std::sqrt(dn / en), std::sqrt(dm / em)};
 }
 
-double total_number(const ParticleSet& p) {
+double total_number(const SampleSet& p) {
   double n = 0;
   for (std::size_t i = 0; i < p.size(); ++i) n += p.w[i];
   return n;

@@ -5,7 +5,7 @@
 
 namespace agglo::acoustics {
 
-Counts count(const ParticleSet& p, double V) {
+Counts count(const SampleSet& p, double V) {
   Counts c;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double w = p.w[i];
@@ -37,7 +37,7 @@ int PsdBins::find(double d) const {
   return static_cast<int>(it - edges.begin()) - 1;
 }
 
-std::array<std::vector<double>, 4> psd(const ParticleSet& p, double V, const PsdBins& bins) {
+std::array<std::vector<double>, 4> psd(const SampleSet& p, double V, const PsdBins& bins) {
   const std::size_t K = bins.edges.size() - 1;
   std::array<std::vector<double>, 4> out;
   for (auto& v : out) v.assign(K, 0.0);

@@ -21,7 +21,7 @@ struct Counts {
   double mass = 0.0;                    // sum w m / V
   std::size_t live_samples = 0;
 };
-Counts count(const ParticleSet& p, double box_volume);
+Counts count(const SampleSet& p, double box_volume);
 
 struct PsdBins {
   std::vector<double> edges;  // diameters [m], size K+1, log spaced
@@ -30,6 +30,6 @@ struct PsdBins {
 };
 
 // dN/dlog10 d for each phase (index by Phase) and all particles (index 3).
-std::array<std::vector<double>, 4> psd(const ParticleSet& p, double box_volume, const PsdBins& bins);
+std::array<std::vector<double>, 4> psd(const SampleSet& p, double box_volume, const PsdBins& bins);
 
 }  // namespace agglo::acoustics

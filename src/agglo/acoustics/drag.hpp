@@ -36,25 +36,25 @@ struct Motion {
   bool inertia_correction = true;
 
   // Effective relaxation time tau/C_I of sample i for its current slip at time t.
-  double effective_tau(const ParticleSet& p, std::size_t i, double t) const;
+  double effective_tau(const SampleSet& p, std::size_t i, double t) const;
   // Steady periodic response to the wave plus terminal settling velocity at time t (initial state).
-  void set_steady_velocity(ParticleSet& p, std::size_t i, double t) const;
+  void set_steady_velocity(SampleSet& p, std::size_t i, double t) const;
   // Advance samples [begin, end) from t to t + h with the chosen integrator using `substeps`
   // sub-steps (explicit scheme) or one closed-form step (exact). Positions are wrapped.
-  void advance(ParticleSet& p, std::size_t begin, std::size_t end, double t, double h, int substeps) const;
-  void advance_exact(ParticleSet& p, std::size_t i, double t, double h) const;
-  // Fast form of advance_exact with the time trigonometry of the step precomputed:
-  // swt, cwt = sin, cos(omega t); swh, cwh = sin, cos(omega h).
+  void advance(SampleSet& p, std::size_t begin, std::size_t end, double t, double h, int substeps) const;
+  // Time trigonometry of an exact step from t over h: swt, cwt = sin, cos(omega t); swh, cwh =
+  // sin, cos(omega h); swh2, cwh2 = sin, cos(omega h / 2).
   struct StepTrig {
-    double swt, cwt, swh, cwh, swh2, cwh2;  // ... and sin, cos(omega h / 2)
-    double inv_omega;                        // 1 / omega
+    double swt, cwt, swh, cwh, swh2, cwh2;
+    double inv_omega;  // 1 / omega
   };
   StepTrig trig(double t, double h) const;
-  void advance_exact(ParticleSet& p, std::size_t i, const StepTrig& tr, double h) const;
-  // Same for samples [begin, end), in stages over blocks of samples (instruction-level parallelism).
-  void advance_exact_block(ParticleSet& p, std::size_t begin, std::size_t end, const StepTrig& tr, double h) const;
-  void advance_explicit(ParticleSet& p, std::size_t i, double t, double h) const;
-  void wrap(ParticleSet& p, std::size_t i) const;
+  // Exact step of samples [begin, end), in stages over blocks of samples (instruction-level parallelism).
+  void advance_exact_block(SampleSet& p, std::size_t begin, std::size_t end, const StepTrig& tr, double h) const;
+  // The same step of sample i alone, written plainly (the tested reference of advance_exact_block).
+  void advance_exact(SampleSet& p, std::size_t i, const StepTrig& tr, double h) const;
+  void advance_explicit(SampleSet& p, std::size_t i, double t, double h) const;
+  void wrap(SampleSet& p, std::size_t i) const;
 };
 
 }  // namespace agglo::acoustics

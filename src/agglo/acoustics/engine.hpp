@@ -46,8 +46,8 @@ class Engine {
   int motion_substeps() const { return substeps_; }
 
   const EngineSettings& settings() const { return s_; }
-  const ParticleSet& particles() const { return p_; }
-  ParticleSet& particles() { return p_; }
+  const SampleSet& particles() const { return p_; }
+  SampleSet& particles() { return p_; }
   const std::vector<SampledPopulation>& sampled() const { return sampled_; }
   const NanbuStats& stats() const { return stats_; }
   const Kernel& kernel() const { return kernel_; }
@@ -65,7 +65,7 @@ class Engine {
   void sort_cells();                                        // order_, start_ from cell_of_
   bool state_ok(std::size_t begin, std::size_t end) const;  // fast test of check_state's conditions
   EngineSettings s_;
-  ParticleSet p_;
+  SampleSet p_;
   Kernel kernel_;
   std::vector<SampledPopulation> sampled_;
   NanbuStats stats_;

@@ -6,7 +6,7 @@
 
 namespace agglo::acoustics {
 
-Merged merged_state(const ParticleSet& p, std::size_t i, std::size_t j) {
+Merged merged_state(const SampleSet& p, std::size_t i, std::size_t j) {
   Merged m;
   m.vol_s = p.vol_s[i] + p.vol_s[j];
   m.vol_l = p.vol_l[i] + p.vol_l[j];
@@ -19,7 +19,7 @@ Merged merged_state(const ParticleSet& p, std::size_t i, std::size_t j) {
 }
 
 namespace {
-void assign(ParticleSet& p, std::size_t k, const Merged& m) {
+void assign(SampleSet& p, std::size_t k, const Merged& m) {
   p.vol_s[k] = m.vol_s;
   p.vol_l[k] = m.vol_l;
   p.mass[k] = m.mass;
@@ -31,7 +31,7 @@ void assign(ParticleSet& p, std::size_t k, const Merged& m) {
 bool is_odd_integer(double w) { return w == std::floor(w) && std::fmod(w, 2.0) == 1.0; }
 }  // namespace
 
-void coalesce_weighted(ParticleSet& p, std::size_t i, std::size_t j, const Gas& gas, const Sound& sound) {
+void coalesce_weighted(SampleSet& p, std::size_t i, std::size_t j, const Gas& gas, const Sound& sound) {
   const Merged m = merged_state(p, i, j);
   const double wi = p.w[i], wj = p.w[j];
   if (wi == wj) {
@@ -61,7 +61,7 @@ void coalesce_weighted(ParticleSet& p, std::size_t i, std::size_t j, const Gas& 
   }
 }
 
-double rebound_weighted(ParticleSet& p, std::size_t i, std::size_t j, const Vec3& n, double e, double f) {
+double rebound_weighted(SampleSet& p, std::size_t i, std::size_t j, const Vec3& n, double e, double f) {
   const Vec3 vi{p.vx[i], p.vy[i], p.vz[i]}, vj{p.vx[j], p.vy[j], p.vz[j]};
   Vec3 vir, vjr;
   hard_sphere_rebound(vi, vj, p.mass[i], p.mass[j], n, e, f, vir, vjr);
@@ -92,7 +92,7 @@ double rebound_weighted(ParticleSet& p, std::size_t i, std::size_t j, const Vec3
   return dE > 0.0 ? dE : 0.0;
 }
 
-bool add_relative_energy(ParticleSet& p, std::size_t s, std::size_t t, double dE) {
+bool add_relative_energy(SampleSet& p, std::size_t s, std::size_t t, double dE) {
   const double Ms = p.w[s] * p.mass[s], Mt = p.w[t] * p.mass[t];
   const Vec3 vs{p.vx[s], p.vy[s], p.vz[s]}, vt{p.vx[t], p.vy[t], p.vz[t]};
   const Vec3 g = vs - vt;
@@ -108,14 +108,14 @@ bool add_relative_energy(ParticleSet& p, std::size_t s, std::size_t t, double dE
   return true;
 }
 
-double kinetic_energy(const ParticleSet& p) {
+double kinetic_energy(const SampleSet& p) {
   double e = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i)
     e += 0.5 * p.w[i] * p.mass[i] * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i] + p.vz[i] * p.vz[i]);
   return e;
 }
 
-Vec3 momentum(const ParticleSet& p) {
+Vec3 momentum(const SampleSet& p) {
   Vec3 m;
   for (std::size_t i = 0; i < p.size(); ++i) m += p.w[i] * p.mass[i] * Vec3{p.vx[i], p.vy[i], p.vz[i]};
   return m;

@@ -25,22 +25,22 @@ struct Merged {
   Vec3 v;
   int pop;
 };
-Merged merged_state(const ParticleSet& p, std::size_t i, std::size_t j);
+Merged merged_state(const SampleSet& p, std::size_t i, std::size_t j);
 
 // Weighted coalescence (eqs. 18-21). Refreshes the caches of the samples that changed.
-void coalesce_weighted(ParticleSet& p, std::size_t i, std::size_t j, const Gas& gas, const Sound& sound);
+void coalesce_weighted(SampleSet& p, std::size_t i, std::size_t j, const Gas& gas, const Sound& sound);
 
 // Weighted rebound with normal n (unit, from i to j, (v_i - v_j).n > 0), restitution e and
 // friction f. Returns the kinetic energy lost by the split-merge (eq. 29, >= 0; 0 for equal weights)
 // and books it as a debt on the split sample.
-double rebound_weighted(ParticleSet& p, std::size_t i, std::size_t j, const Vec3& n, double e, double f);
+double rebound_weighted(SampleSet& p, std::size_t i, std::size_t j, const Vec3& n, double e, double f);
 
 // Adds energy dE [J] to the relative motion of samples s, t (group masses w m), momentum exact.
 // Returns false (nothing changed) if the pair has no relative velocity.
-bool add_relative_energy(ParticleSet& p, std::size_t s, std::size_t t, double dE);
+bool add_relative_energy(SampleSet& p, std::size_t s, std::size_t t, double dE);
 
 // Total kinetic energy sum_i w_i m_i |v_i|^2 / 2 [J] and momentum sum_i w_i m_i v_i.
-double kinetic_energy(const ParticleSet& p);
-Vec3 momentum(const ParticleSet& p);
+double kinetic_energy(const SampleSet& p);
+Vec3 momentum(const SampleSet& p);
 
 }  // namespace agglo::acoustics

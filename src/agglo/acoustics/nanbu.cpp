@@ -32,11 +32,10 @@ void NanbuStats::add(const NanbuStats& o) {
   energy_returned += o.energy_returned;
 }
 
-CellBounds cell_bounds(const ParticleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
+CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
                        const Gas& gas) {
   CellBounds cb;
-  cb.need_cbar = k.settings().model == KernelModel::brownian_fuchs ||
-                 (k.settings().brownian && k.settings().brownian_form == BrownianForm::fuchs);
+  cb.need_cbar = k.needs_thermal_speed();
   double sw = 0.0, mx = 0.0, my = 0.0, mz = 0.0;
   for (std::size_t a = 0; a < n; ++a) {
     const std::size_t i = idx[a];
@@ -64,7 +63,7 @@ CellBounds cell_bounds(const ParticleSet& p, const std::uint32_t* idx, std::size
     const double ex = p.vx[i] - cb.vref[0], ey = p.vy[i] - cb.vref[1], ez = p.vz[i] - cb.vref[2];
     s2_max = std::max(s2_max, ex * ex + ey * ey + ez * ez);
   }
-  if (k.settings().model == KernelModel::additive)  // vol_max is used by the additive kernel only
+  if (k.needs_volume())  // vol_max is used by the additive kernel only
     for (std::size_t a = 0; a < n; ++a)
       if (p.w[idx[a]] > 0.0) vol_max = std::max(vol_max, p.vol_s[idx[a]] + p.vol_l[idx[a]]);
   cb.d_max = d_max;
@@ -80,7 +79,7 @@ CellBounds cell_bounds(const ParticleSet& p, const std::uint32_t* idx, std::size
   return cb;
 }
 
-double guard_pn(const ParticleSet& p, std::size_t i, std::size_t N, const CellBounds& cb, const Kernel& k, double dt,
+double guard_pn(const SampleSet& p, std::size_t i, std::size_t N, const CellBounds& cb, const Kernel& k, double dt,
                 double cell_volume) {
   return static_cast<double>(N) * k.bound(p, i, cb) * cb.w_max * dt / (2.0 * cell_volume);
 }
@@ -111,142 +110,242 @@ Vec3 contact_normal(const Vec3& G, CounterRng& rng) {
 
 double min_image(double d, double L) { return d - L * std::nearbyint(d / L); }
 
-}  // namespace
+// The collision step of one cell: state shared by the steps of its samples.
+class CellCollision {
+ public:
+  CellCollision(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
+                const CollisionContext& ctx, NanbuStats& st);
+  void run();
 
-void collide_cell(ParticleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
-                  const CollisionContext& ctx, NanbuStats& st) {
-  const Kernel& K = *ctx.kernel;
-  const OutcomeParams& oc = *ctx.outcomes;
-  std::size_t N = 0;
-  for (std::size_t a = 0; a < n; ++a) N += p.w[idx[a]] > 0.0 ? 1 : 0;
-  if (N < 2) return;
-  N = n;  // dead samples stay candidates (they are refilled when possible): keep the draw uniform over n
-  const double Vc = ctx.domain.cell_volume();
-  const double invN = 1.0 / static_cast<double>(N);
-  CellBounds cb = cell_bounds(p, idx, n, K, *ctx.gas);
-  CounterRng rng(ctx.seed, 0x100000000ULL + cell, step);
-  const bool need_r = K.needs_distance();
-  const bool excl = K.settings().exclude_same_population;
+ private:
+  void refill(std::size_t dead);
+  void compensate(std::size_t i, std::size_t j);
+  void collide(std::size_t i, std::size_t j);
+  bool evaluate(std::size_t i, std::size_t j, double h, double thr);
+  bool trial(std::size_t i, double h, double pbound);
+  void plain_trial(std::size_t& a, double pe);
+  bool skip_to_passing_trial(std::size_t& a, double pe);
+  void subcycled_trials(std::size_t i);
+
+  SampleSet& p;
+  const std::uint32_t* idx;
+  const std::size_t n;
+  const std::uint64_t cell, step;
+  const CollisionContext& ctx;
+  NanbuStats& st;
+  const Kernel& K;
+  const OutcomeParams& oc;
+  const std::size_t N;  // dead samples stay candidates (they are refilled when possible): the draw is uniform over n
+  const double Vc, invN;
+  CellBounds cb;
+  CounterRng rng;
+  const bool need_r, excl;
   std::vector<std::uint32_t> debtors;
+  double pcell = 0.0;  // cell-wide majorant probability of a full step
+};
+
+CellCollision::CellCollision(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_, std::uint64_t cell_,
+                             std::uint64_t step_, const CollisionContext& ctx_, NanbuStats& st_)
+    : p(p_), idx(idx_), n(n_), cell(cell_), step(step_), ctx(ctx_), st(st_), K(*ctx_.kernel), oc(*ctx_.outcomes),
+      N(n_), Vc(ctx_.domain.cell_volume()), invN(1.0 / static_cast<double>(n_)),
+      cb(cell_bounds(p_, idx_, n_, K, *ctx_.gas)), rng(ctx_.seed, 0x100000000ULL + cell_, step_),
+      need_r(K.needs_distance()), excl(K.settings().exclude_same_population) {
   if (oc.energy_compensation)
     for (std::size_t a = 0; a < n; ++a)
       if (p.debt[idx[a]] > 0.0) debtors.push_back(idx[a]);
+}
 
-  auto refill = [&](std::size_t dead) {
-    std::size_t best = dead;
-    double wb = 1.0;
-    for (std::size_t a = 0; a < n; ++a)
-      if (p.w[idx[a]] > wb) {
-        wb = p.w[idx[a]];
-        best = idx[a];
+// A sample whose weight dropped to 0 takes half of the heaviest sample of the cell.
+void CellCollision::refill(std::size_t dead) {
+  std::size_t best = dead;
+  double wb = 1.0;
+  for (std::size_t a = 0; a < n; ++a)
+    if (p.w[idx[a]] > wb) {
+      wb = p.w[idx[a]];
+      best = idx[a];
+    }
+  if (best == dead) {
+    ++st.dead;
+    return;
+  }
+  const std::uint64_t keep_id = p.id[dead];
+  p.copy_sample(best, dead);
+  p.id[dead] = keep_id;
+  p.w[best] = std::ceil(0.5 * wb);
+  p.w[dead] = std::floor(0.5 * wb);
+  p.debt[dead] = 0.0;
+  p.debt_ref[dead] = 0.0;
+  ++st.refills;
+}
+
+// Gives the first fitting split-merge debt back to the pair (i, j) as relative kinetic energy.
+void CellCollision::compensate(std::size_t i, std::size_t j) {
+  if (!oc.energy_compensation) return;
+  for (std::size_t k = 0; k < debtors.size(); ++k) {
+    const std::size_t h = debtors[k];
+    if (!(p.debt[h] > 0.0)) continue;
+    const double Mref = p.debt_ref[h];
+    const double ri = p.w[i] * p.mass[i] / Mref, rj = p.w[j] * p.mass[j] / Mref;
+    if ((ri > 0.5 && ri < 2.0) || (rj > 0.5 && rj < 2.0)) {
+      if (add_relative_energy(p, i, j, p.debt[h])) {
+        st.energy_returned += p.debt[h];
+        p.debt[h] = 0.0;
+        cb.include(p, i, *ctx.gas);
+        cb.include(p, j, *ctx.gas);
       }
-    if (best == dead) {
-      ++st.dead;
       return;
     }
-    const std::uint64_t keep_id = p.id[dead];
-    p.copy_sample(best, dead);
-    p.id[dead] = keep_id;
-    p.w[best] = std::ceil(0.5 * wb);
-    p.w[dead] = std::floor(0.5 * wb);
-    p.debt[dead] = 0.0;
-    p.debt_ref[dead] = 0.0;
-    ++st.refills;
-  };
+  }
+}
 
-  auto compensate = [&](std::size_t i, std::size_t j) {
-    if (!oc.energy_compensation) return;
-    for (std::size_t k = 0; k < debtors.size(); ++k) {
-      const std::size_t h = debtors[k];
-      if (!(p.debt[h] > 0.0)) continue;
-      const double Mref = p.debt_ref[h];
-      const double ri = p.w[i] * p.mass[i] / Mref, rj = p.w[j] * p.mass[j] / Mref;
-      if ((ri > 0.5 && ri < 2.0) || (rj > 0.5 && rj < 2.0)) {
-        if (add_relative_energy(p, i, j, p.debt[h])) {
-          st.energy_returned += p.debt[h];
-          p.debt[h] = 0.0;
-          cb.include(p, i, *ctx.gas);
-          cb.include(p, j, *ctx.gas);
-        }
-        return;
-      }
-    }
-  };
+// Outcome of a collision of samples i and j: coalescence or rebound.
+void CellCollision::collide(std::size_t i, std::size_t j) {
+  ++st.collisions;
+  const PairType type = pair_type(p.phase(i), p.phase(j));
+  bool coalesce = oc.always_coalesce || type == PairType::droplet;
+  Vec3 nrm;
+  double gn = 0.0;
+  if (!coalesce) {
+    const Vec3 G{p.vx[i] - p.vx[j], p.vy[i] - p.vy[j], p.vz[i] - p.vz[j]};
+    nrm = contact_normal(G, rng);
+    gn = dot(G, nrm);
+    const double vcr = type == PairType::dry ? critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j])
+                                             : critical_velocity_wet(oc, p.d[i], p.d[j]);
+    coalesce = gn <= vcr;
+  }
+  if (coalesce) {
+    ++st.coalescences[static_cast<int>(type)];
+    coalesce_weighted(p, i, j, *ctx.gas, *ctx.sound);
+    if (p.w[i] <= 0.0) refill(i);
+    if (p.w[j] <= 0.0) refill(j);
+  } else {
+    ++st.rebounds[static_cast<int>(type)];
+    const double e = type == PairType::dry ? oc.restitution : wet_restitution(oc, p.d[i], p.d[j], gn);
+    const double dE = rebound_weighted(p, i, j, nrm, e, oc.friction);
+    st.energy_lost += dE;
+    if (dE > 0.0) debtors.push_back(static_cast<std::uint32_t>(p.w[i] > p.w[j] ? i : j));
+    compensate(i, j);
+  }
+  cb.include(p, i, *ctx.gas);
+  cb.include(p, j, *ctx.gas);
+}
 
-  auto collide = [&](std::size_t i, std::size_t j) {
-    ++st.collisions;
-    const Phase pi_ = p.phase(i), pj = p.phase(j);
-    const PairType type = pair_type(pi_, pj);
-    bool coalesce = oc.always_coalesce || type == PairType::droplet;
-    Vec3 nrm;
-    double gn = 0.0;
-    if (!coalesce) {
-      const Vec3 G{p.vx[i] - p.vx[j], p.vy[i] - p.vy[j], p.vz[i] - p.vz[j]};
-      nrm = contact_normal(G, rng);
-      gn = dot(G, nrm);
-      const double vcr = type == PairType::dry ? critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j])
-                                               : critical_velocity_wet(oc, p.d[i], p.d[j]);
-      coalesce = gn <= vcr;
-    }
-    if (coalesce) {
-      ++st.coalescences[static_cast<int>(type)];
-      coalesce_weighted(p, i, j, *ctx.gas, *ctx.sound);
-      if (p.w[i] <= 0.0) refill(i);
-      if (p.w[j] <= 0.0) refill(j);
-      cb.include(p, i, *ctx.gas);
-      cb.include(p, j, *ctx.gas);
-    } else {
-      ++st.rebounds[static_cast<int>(type)];
-      const double e = type == PairType::dry ? oc.restitution : wet_restitution(oc, p.d[i], p.d[j], gn);
-      const double dE = rebound_weighted(p, i, j, nrm, e, oc.friction);
-      st.energy_lost += dE;
-      if (dE > 0.0) debtors.push_back(static_cast<std::uint32_t>(p.w[i] > p.w[j] ? i : j));
-      compensate(i, j);
-      cb.include(p, i, *ctx.gas);
-      cb.include(p, j, *ctx.gas);
-    }
-  };
+// Kernel evaluation of a draw that passed the majorant: collide iff P_ij > thr. Returns true if i
+// collided (its state changed).
+bool CellCollision::evaluate(std::size_t i, std::size_t j, double h, double thr) {
+  if (excl && p.pop[i] == p.pop[j]) return false;
+  ++st.kernel_evals;
+  double r = 0.0;
+  if (need_r) {
+    const double dx = min_image(p.x[i] - p.x[j], ctx.domain.L[0]);
+    const double dy = min_image(p.y[i] - p.y[j], ctx.domain.L[1]);
+    const double dz = min_image(p.z[i] - p.z[j], ctx.domain.L[2]);
+    r = std::sqrt(dx * dx + dy * dy + dz * dz);
+  }
+  const double beta = K.beta(p, i, j, r);
+  const double P = beta * std::max(p.w[i], p.w[j]) * h / (2.0 * Vc);
+  st.max_pn = std::max(st.max_pn, P * static_cast<double>(N));
+  if (P > invN * (1.0 + 1e-9)) ++st.violations;
+  if (P > thr) {
+    collide(i, j);
+    return true;
+  }
+  return false;
+}
 
-  // One Nanbu trial of sample i over an interval h with majorant probability pbound.
-  // Returns true if i collided (its state changed).
-  // Kernel evaluation of a draw that passed the majorant: collide iff P_ij > thr.
-  auto evaluate = [&](std::size_t i, std::size_t j, double h, double thr) -> bool {
-    if (excl && p.pop[i] == p.pop[j]) return false;
-    ++st.kernel_evals;
-    double r = 0.0;
-    if (need_r) {
-      const double dx = min_image(p.x[i] - p.x[j], ctx.domain.L[0]);
-      const double dy = min_image(p.y[i] - p.y[j], ctx.domain.L[1]);
-      const double dz = min_image(p.z[i] - p.z[j], ctx.domain.L[2]);
-      r = std::sqrt(dx * dx + dy * dy + dz * dz);
-    }
-    const double beta = K.beta(p, i, j, r);
-    const double P = beta * std::max(p.w[i], p.w[j]) * h / (2.0 * Vc);
-    st.max_pn = std::max(st.max_pn, P * static_cast<double>(N));
-    if (P > invN * (1.0 + 1e-9)) ++st.violations;
-    if (P > thr) {
-      collide(i, j);
-      return true;
-    }
-    return false;
-  };
+// One Nanbu trial of sample i over an interval h with majorant probability pbound. Returns true if
+// i collided (its state changed).
+bool CellCollision::trial(std::size_t i, double h, double pbound) {
+  ++st.trials;
+  const double R = rng.uniform();
+  std::size_t ja = static_cast<std::size_t>(R * static_cast<double>(N));
+  if (ja >= N) ja = N - 1;
+  const std::size_t j = idx[ja];
+  if (j == i || p.w[j] <= 0.0) return false;
+  const double thr = static_cast<double>(ja + 1) * invN - R;
+  if (thr >= pbound) return false;  // majorant rejection: P_ij <= pbound <= thr
+  return evaluate(i, j, h, thr);
+}
 
-  // One Nanbu trial of sample i over an interval h with majorant probability pbound.
-  // Returns true if i collided (its state changed).
-  auto trial = [&](std::size_t i, double h, double pbound) -> bool {
-    ++st.trials;
-    const double R = rng.uniform();
-    std::size_t ja = static_cast<std::size_t>(R * static_cast<double>(N));
-    if (ja >= N) ja = N - 1;
-    const std::size_t j = idx[ja];
-    if (j == i || p.w[j] <= 0.0) return false;
-    const double thr = static_cast<double>(ja + 1) * invN - R;
-    if (thr >= pbound) return false;  // majorant rejection: P_ij <= pbound <= thr
-    return evaluate(i, j, h, thr);
-  };
+// Majorant met for a full step but most trials pass it: one plain trial of sample idx[a++].
+void CellCollision::plain_trial(std::size_t& a, double pe) {
+  const std::size_t i = idx[a++];
+  if (p.w[i] <= 0.0) return;
+  ++st.particle_steps;
+  st.max_bound_pn = std::max(st.max_bound_pn, pe);
+  trial(i, ctx.dt, pcell);
+  st.max_subcycles = std::max<std::uint64_t>(st.max_subcycles, 1);
+}
 
+// Fast path: the cell-wide majorant meets the bound for a full step. A trial (R, candidate
+// ja = int(R N), threshold thr = (ja+1)/N - R) passes the majorant (thr < pcell) with probability
+// N pcell, and then ja is uniform and thr uniform in (0, pcell). The samples whose trial passes are
+// found by geometric skipping (one draw per passing trial instead of one per sample); the trials of
+// the skipped samples are rejections and need no draw. Returns false when the cell is done.
+bool CellCollision::skip_to_passing_trial(std::size_t& a, double pe) {
+  std::size_t skip = n - a;
+  if (pe > 0.0) {
+    const double g = std::floor(std::log1p(-rng.uniform()) / std::log1p(-std::min(pe, 1.0 - 1e-16)));
+    if (g < static_cast<double>(n - a)) skip = static_cast<std::size_t>(g);
+  }
+  std::uint64_t live = 0;
+  for (const std::size_t stop = a + skip; a < stop; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
+  if (a < n && p.w[idx[a]] > 0.0) ++live;
+  if (live > 0) {
+    st.particle_steps += live;
+    st.trials += live;
+    st.max_bound_pn = std::max(st.max_bound_pn, pe);
+    st.max_subcycles = std::max<std::uint64_t>(st.max_subcycles, 1);
+  }
+  if (a == n) return false;
+  const std::size_t i = idx[a++];
+  if (p.w[i] <= 0.0) return true;
+  std::size_t ja = static_cast<std::size_t>(rng.uniform() * static_cast<double>(N));
+  if (ja >= N) ja = N - 1;
+  const std::size_t j = idx[ja];
+  if (j == i || p.w[j] <= 0.0) return true;
+  evaluate(i, j, ctx.dt, pcell * (1.0 - rng.uniform()));
+  return true;
+}
+
+// Trials of sample i with its own majorant, the step sub-cycled so that N P_bound <= 1.
+void CellCollision::subcycled_trials(std::size_t i) {
+  ++st.particle_steps;
+  double remaining = ctx.dt;
+  std::uint64_t intervals = 0;
+  bool first = true;
+  while (remaining > 0.0 && p.w[i] > 0.0) {
+    const double B = K.bound(p, i, cb);
+    const double pn_full = static_cast<double>(N) * B * cb.w_max * remaining / (2.0 * Vc);
+    if (first) st.max_bound_pn = std::max(st.max_bound_pn, pn_full);
+    first = false;
+    double nsub = std::max(1.0, std::ceil(pn_full * (1.0 + 1e-12)));
+    if (nsub > 1.0 && ctx.strict)
+      throw NumericalError(fmt::format("step {}: Nanbu bound P_ij <= 1/N violated in cell {} for particle {} "
+                                       "(N P = {:.3g}) and time.nanbu_guard = \"strict\"",
+                                       step, cell, p.id[i], pn_full));
+    if (intervals + nsub > static_cast<double>(ctx.max_subcycles))
+      throw NumericalError(fmt::format("step {}: Nanbu bound cannot be met in cell {} for particle {}: needs "
+                                       "{:.3g} sub-cycles > time.max_subcycles = {}",
+                                       step, cell, p.id[i], nsub, ctx.max_subcycles));
+    const double h = remaining / nsub;
+    const double pbound = B * cb.w_max * h / (2.0 * Vc);
+    // Trials of length h until a collision changes i (then the bound is recomputed).
+    bool changed = false;
+    for (double s = 0; s < nsub && !changed; s += 1.0) {
+      ++intervals;
+      remaining -= h;
+      changed = trial(i, h, pbound);
+    }
+    if (remaining < 1e-12 * ctx.dt) remaining = 0.0;
+  }
+  if (intervals > 1) ++st.subcycled;
+  st.max_subcycles = std::max(st.max_subcycles, intervals);
+}
+
+void CellCollision::run() {
   const double pfac = ctx.dt / (2.0 * Vc);
-  double pcell = K.bound_cell(cb) * cb.w_max * pfac;
+  pcell = K.bound_cell(cb) * cb.w_max * pfac;
   std::uint64_t seen = st.collisions;
   std::size_t a = 0;
   while (a < n) {
@@ -256,79 +355,24 @@ void collide_cell(ParticleSet& p, const std::uint32_t* idx, std::size_t n, std::
     }
     const double pe = pcell * static_cast<double>(N);
     if (pe > 0.25 && pe <= 1.0) {
-      // Majorant met for a full step but most trials pass it: one plain trial per sample.
+      plain_trial(a, pe);
+    } else if (pe <= 1.0) {
+      if (!skip_to_passing_trial(a, pe)) break;
+    } else {
       const std::size_t i = idx[a++];
-      if (p.w[i] <= 0.0) continue;
-      ++st.particle_steps;
-      st.max_bound_pn = std::max(st.max_bound_pn, pe);
-      trial(i, ctx.dt, pcell);
-      st.max_subcycles = std::max<std::uint64_t>(st.max_subcycles, 1);
-      continue;
+      if (p.w[i] > 0.0) subcycled_trials(i);
     }
-    if (pe <= 1.0) {
-      // Fast path: the cell-wide majorant meets the bound for a full step. A trial (R, candidate
-      // ja = int(R N), threshold thr = (ja+1)/N - R) passes the majorant (thr < pcell) with
-      // probability N pcell, and then ja is uniform and thr uniform in (0, pcell). The samples whose
-      // trial passes are found by geometric skipping (one draw per passing trial instead of one per
-      // sample); the trials of the skipped samples are rejections and need no draw.
-      std::size_t skip = n - a;
-      if (pe > 0.0) {
-        const double g = std::floor(std::log1p(-rng.uniform()) / std::log1p(-std::min(pe, 1.0 - 1e-16)));
-        if (g < static_cast<double>(n - a)) skip = static_cast<std::size_t>(g);
-      }
-      std::uint64_t live = 0;
-      for (const std::size_t stop = a + skip; a < stop; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
-      if (a < n && p.w[idx[a]] > 0.0) ++live;
-      if (live > 0) {
-        st.particle_steps += live;
-        st.trials += live;
-        st.max_bound_pn = std::max(st.max_bound_pn, pe);
-        st.max_subcycles = std::max<std::uint64_t>(st.max_subcycles, 1);
-      }
-      if (a == n) break;
-      const std::size_t i = idx[a++];
-      if (p.w[i] <= 0.0) continue;
-      std::size_t ja = static_cast<std::size_t>(rng.uniform() * static_cast<double>(N));
-      if (ja >= N) ja = N - 1;
-      const std::size_t j = idx[ja];
-      if (j == i || p.w[j] <= 0.0) continue;
-      evaluate(i, j, ctx.dt, pcell * (1.0 - rng.uniform()));
-      continue;
-    }
-    const std::size_t i = idx[a++];
-    if (p.w[i] <= 0.0) continue;
-    ++st.particle_steps;
-    double remaining = ctx.dt;
-    std::uint64_t intervals = 0;
-    bool first = true;
-    while (remaining > 0.0 && p.w[i] > 0.0) {
-      const double B = K.bound(p, i, cb);
-      const double pn_full = static_cast<double>(N) * B * cb.w_max * remaining / (2.0 * Vc);
-      if (first) st.max_bound_pn = std::max(st.max_bound_pn, pn_full);
-      first = false;
-      double nsub = std::max(1.0, std::ceil(pn_full * (1.0 + 1e-12)));
-      if (nsub > 1.0 && ctx.strict)
-        throw NumericalError(fmt::format("step {}: Nanbu bound P_ij <= 1/N violated in cell {} for particle {} "
-                                         "(N P = {:.3g}) and time.nanbu_guard = \"strict\"",
-                                         step, cell, p.id[i], pn_full));
-      if (intervals + nsub > static_cast<double>(ctx.max_subcycles))
-        throw NumericalError(fmt::format("step {}: Nanbu bound cannot be met in cell {} for particle {}: needs "
-                                         "{:.3g} sub-cycles > time.max_subcycles = {}",
-                                         step, cell, p.id[i], nsub, ctx.max_subcycles));
-      const double h = remaining / nsub;
-      const double pbound = B * cb.w_max * h / (2.0 * Vc);
-      // Trials of length h until a collision changes i (then the bound is recomputed).
-      bool changed = false;
-      for (double s = 0; s < nsub && !changed; s += 1.0) {
-        ++intervals;
-        remaining -= h;
-        changed = trial(i, h, pbound);
-      }
-      if (remaining < 1e-12 * ctx.dt) remaining = 0.0;
-    }
-    if (intervals > 1) ++st.subcycled;
-    st.max_subcycles = std::max(st.max_subcycles, intervals);
   }
+}
+
+}  // namespace
+
+void collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
+                  const CollisionContext& ctx, NanbuStats& st) {
+  std::size_t live = 0;
+  for (std::size_t a = 0; a < n; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
+  if (live < 2) return;
+  CellCollision(p, idx, n, cell, step, ctx, st).run();
 }
 
 }  // namespace agglo::acoustics

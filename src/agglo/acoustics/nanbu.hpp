@@ -57,15 +57,15 @@ struct CollisionContext {
 };
 
 // Processes the samples listed in idx (all in one cell) for one collision step.
-void collide_cell(ParticleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
+void collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
                   const CollisionContext& ctx, NanbuStats& st);
 
 // Cell bounds of the listed samples (used by collide_cell and by the start-up guard check).
-CellBounds cell_bounds(const ParticleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
+CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
                        const Gas& gas);
 
 // Number of trial intervals the guard needs for sample i (ceil(N P_bound)), given the bounds.
-double guard_pn(const ParticleSet& p, std::size_t i, std::size_t N, const CellBounds& cb, const Kernel& k,
+double guard_pn(const SampleSet& p, std::size_t i, std::size_t N, const CellBounds& cb, const Kernel& k,
                 double dt, double cell_volume);
 
 }  // namespace agglo::acoustics

@@ -27,7 +27,7 @@ struct Draft {
 }  // namespace
 
 SampledPopulation sample_population(const PopulationSpec& s, int index, const Domain& dom, std::uint64_t seed,
-                                    const Gas& gas, const Sound& sound, ParticleSet& p) {
+                                    const Gas& gas, const Sound& sound, SampleSet& p) {
   using constants::pi;
   const double V = dom.volume();
   const double Ntot = s.number_concentration * V;

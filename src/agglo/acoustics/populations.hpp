@@ -50,7 +50,7 @@ struct SampledPopulation {
 };
 
 SampledPopulation sample_population(const PopulationSpec& spec, int index, const Domain& dom, std::uint64_t seed,
-                                    const Gas& gas, const Sound& sound, ParticleSet& p);
+                                    const Gas& gas, const Sound& sound, SampleSet& p);
 
 double normal_cdf(double z);
 double normal_quantile(double q);

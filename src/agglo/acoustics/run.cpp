@@ -156,7 +156,7 @@ class Observer {
   }
 
   void snapshot(double t) {
-    const ParticleSet& p = eng_.particles();
+    const SampleSet& p = eng_.particles();
     const double xmax = c_.output.snapshot_x_fraction * eng_.settings().motion.domain.L[0];
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.w[i] > 0 && p.x[i] <= xmax)
@@ -174,7 +174,7 @@ class Observer {
 
 void check_startup(const AcousticCase& c, const Engine& e) {
   const auto& s = c.engine;
-  const ParticleSet& p = e.particles();
+  const SampleSet& p = e.particles();
   if (s.motion.integrator == Integrator::explicit_euler) {
     double tmin = std::numeric_limits<double>::infinity();
     std::size_t imin = 0;

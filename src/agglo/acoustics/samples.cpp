@@ -16,7 +16,7 @@ const char* phase_name(Phase p) {
   return "?";
 }
 
-void ParticleSet::resize(std::size_t n) {
+void SampleSet::resize(std::size_t n) {
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
                   &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd, &acc_z})
     v->resize(n, 0.0);
@@ -27,7 +27,7 @@ void ParticleSet::resize(std::size_t n) {
   id.resize(n, 0);
 }
 
-std::size_t ParticleSet::add(double x_, double y_, double z_, double vs, double vl, double m, double w_, int p,
+std::size_t SampleSet::add(double x_, double y_, double z_, double vs, double vl, double m, double w_, int p,
                              const Gas& gas, const Sound& sound) {
   const std::size_t i = size();
   resize(i + 1);
@@ -44,7 +44,7 @@ std::size_t ParticleSet::add(double x_, double y_, double z_, double vs, double 
   return i;
 }
 
-void ParticleSet::refresh(std::size_t i, const Gas& gas, const Sound& sound) {
+void SampleSet::refresh(std::size_t i, const Gas& gas, const Sound& sound) {
   const double v = vol_s[i] + vol_l[i];
   d[i] = std::cbrt(6.0 * v / constants::pi);
   rho[i] = mass[i] / v;
@@ -61,7 +61,7 @@ void ParticleSet::refresh(std::size_t i, const Gas& gas, const Sound& sound) {
   acc_z[i] = -gas.gravity * (rho[i] - gas.density) / rho[i];
 }
 
-void ParticleSet::copy_sample(std::size_t from, std::size_t to) {
+void SampleSet::copy_sample(std::size_t from, std::size_t to) {
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
                   &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd, &acc_z, &x_ref, &skx, &ckx})
     (*v)[to] = (*v)[from];
@@ -72,7 +72,7 @@ void ParticleSet::copy_sample(std::size_t from, std::size_t to) {
 
 namespace agglo::acoustics {
 
-void ParticleSet::permute(const std::vector<std::uint32_t>& order) {
+void SampleSet::permute(const std::vector<std::uint32_t>& order) {
   auto apply = [&](auto& v) {
     auto old = v;
     for (std::size_t k = 0; k < order.size(); ++k) v[k] = old[order[k]];

@@ -1,7 +1,7 @@
 #pragma once
-// Sampled particles of the DSMC (structure of arrays). Sample i stands for w_i real particles
-// (integer-valued weight stored as double) that share position, velocity, solid volume, liquid
-// volume and mass. Diameter and density follow from them (seed eqs. 15-16):
+// Weighted samples of the DSMC (structure of arrays; DEM particles are dem/particles.hpp). Sample i
+// stands for w_i real particles (integer-valued weight stored as double) that share position,
+// velocity, solid volume, liquid volume and mass. Diameter and density follow from them (seed eqs. 15-16):
 //   d = (6 (V_s + V_l) / pi)^(1/3),  rho = m / (V_s + V_l).
 // Phase (MODEL C.5): solid (V_l = 0), liquid (V_s = 0), mixed (both > 0).
 // Derived per-sample quantities used by motion and kernels are cached and refreshed by
@@ -17,7 +17,7 @@ namespace agglo::acoustics {
 enum class Phase : std::uint8_t { solid = 0, liquid = 1, mixed = 2 };
 const char* phase_name(Phase p);
 
-struct ParticleSet {
+struct SampleSet {
   // State.
   std::vector<double> x, y, z;        // position [m]
   std::vector<double> vx, vy, vz;     // velocity [m/s]
@@ -54,5 +54,8 @@ struct ParticleSet {
   void permute(const std::vector<std::uint32_t>& order);
   double volume(std::size_t i) const { return vol_s[i] + vol_l[i]; }
 };
+
+// Transitional alias for diagnostics.{hpp,cpp} and populations.{hpp,cpp} (other owners); remove it once
+// they spell SampleSet.
 
 }  // namespace agglo::acoustics

@@ -1,0 +1,35 @@
+#pragma once
+// Aggregates of one cell from which every mechanism bounds its kernel over all pairs of the cell
+// (majorant of the Nanbu guard, docs/model.md §C.4).
+#include <cmath>
+#include <cstddef>
+
+#include "agglo/acoustics/gas.hpp"
+#include "agglo/acoustics/samples.hpp"
+
+namespace agglo::acoustics {
+
+// What a mechanism needs beyond the per-sample caches: the centre distance r of a pair, the
+// thermal speeds (CellBounds::cbar_max) or the particle volumes (CellBounds::vol_max).
+struct KernelNeeds {
+  bool distance = false;
+  bool thermal_speed = false;
+  bool volume = false;
+};
+
+struct CellBounds {
+  double d_max = 0.0;        // largest diameter
+  double vol_max = 0.0;      // largest particle volume
+  double dl_max = 0.0;       // largest d l
+  double ccd_max = 0.0;      // largest C_c / d
+  double speed_dev_max = 0.0;// largest |v - v_ref| (valid after finalize())
+  double speed_dev2_max = 0.0;// its square
+  double w_max = 0.0;        // largest weight
+  double cbar_max = 0.0;     // largest thermal speed (Fuchs)
+  double vref[3] = {0, 0, 0};// reference velocity of the cell
+  bool need_cbar = false;    // track cbar_max (Fuchs only)
+  void include(const SampleSet& p, std::size_t i, const Gas& gas);
+  void finalize() { speed_dev_max = std::sqrt(speed_dev2_max); }
+};
+
+}  // namespace agglo::acoustics

@@ -1,0 +1,88 @@
+#pragma once
+// Composition of kernel mechanisms, written once: beta, bound and bound_cell of the set are the sums
+// over the switched-on mechanisms, in the order of the type list (the summation order). Mechanisms are
+// switched on by name when the set is built; the sums then test one precomputed flag per mechanism
+// and call its (inlined) member, with no virtual call per pair.
+// A mechanism M provides:
+//   static constexpr std::string_view name;
+//   M(const KernelSettings&, const Gas&, const Sound&);
+//   KernelNeeds needs() const;
+//   double beta(const SampleSet&, std::size_t i, std::size_t j, double r) const;   // [m^3/s]
+//   double bound(const SampleSet&, std::size_t i, const CellBounds&) const;        // >= beta(i, j) for j in the cell
+//   double bound_cell(const CellBounds&) const;                                    // >= bound(i) for i in the cell
+#include <array>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "agglo/acoustics/kernels/cell_bounds.hpp"
+#include "agglo/acoustics/kernels/settings.hpp"
+#include "agglo/acoustics/sound.hpp"
+
+namespace agglo::acoustics {
+
+// Throws ConfigError naming the registered mechanisms (kernels.cpp).
+[[noreturn]] void throw_unknown_mechanism(const std::string& name, const std::vector<std::string_view>& known);
+
+template <class... M>
+class MechanismSet {
+ public:
+  static constexpr std::size_t size = sizeof...(M);
+  static std::vector<std::string_view> registered_names() { return {M::name...}; }
+
+  MechanismSet(const std::vector<std::string>& names, const KernelSettings& s, const Gas& gas, const Sound& sound)
+      : m_(M(s, gas, sound)...) {
+    const std::vector<std::string_view> known = registered_names();
+    for (const std::string& n : names) {
+      std::size_t k = 0;
+      while (k < size && known[k] != n) ++k;
+      if (k == size) throw_unknown_mechanism(n, known);
+      on_[k] = true;
+    }
+    each([&](const auto& m, std::size_t) {
+      const KernelNeeds nd = m.needs();
+      needs_.distance = needs_.distance || nd.distance;
+      needs_.thermal_speed = needs_.thermal_speed || nd.thermal_speed;
+      needs_.volume = needs_.volume || nd.volume;
+    });
+  }
+
+  const KernelNeeds& needs() const { return needs_; }
+  std::vector<std::string_view> names() const {
+    std::vector<std::string_view> v;
+    each([&](const auto& m, std::size_t) { v.push_back(m.name); });
+    return v;
+  }
+  double beta(const SampleSet& p, std::size_t i, std::size_t j, double r) const {
+    double b = 0.0;
+    each([&](const auto& m, std::size_t) { b += m.beta(p, i, j, r); });
+    return b;
+  }
+  double bound(const SampleSet& p, std::size_t i, const CellBounds& cb) const {
+    double b = 0.0;
+    each([&](const auto& m, std::size_t) { b += m.bound(p, i, cb); });
+    return b;
+  }
+  double bound_cell(const CellBounds& cb) const {
+    double b = 0.0;
+    each([&](const auto& m, std::size_t) { b += m.bound_cell(cb); });
+    return b;
+  }
+
+ private:
+  // f(mechanism, index) for every switched-on mechanism, in list order.
+  template <class F>
+  void each(F&& f) const {
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      ((on_[K] ? f(std::get<K>(m_), K) : void()), ...);
+    }(std::index_sequence_for<M...>{});
+  }
+  std::tuple<M...> m_;
+  std::array<bool, size> on_{};
+  KernelNeeds needs_;
+};
+
+}  // namespace agglo::acoustics

@@ -1,0 +1,40 @@
+#pragma once
+// Orthokinetic interaction + gravitational (differential) settling (docs/model.md §C.3, eq. 8):
+//   beta = E (pi/4) (d_i + d_j)^2 |v_i - v_j|                                   [m^3/s]
+// d diameter [m], v sample velocity [m/s], E collision efficiency (kernels.collision_efficiency).
+// Bound over the cell: |v_i - v_j| <= |v_i - v_ref| + max_j |v_j - v_ref|, d_j <= d_max.
+#include <cmath>
+#include <string_view>
+
+#include "agglo/acoustics/kernels/cell_bounds.hpp"
+#include "agglo/acoustics/kernels/settings.hpp"
+#include "agglo/acoustics/sound.hpp"
+#include "agglo/core/constants.hpp"
+
+namespace agglo::acoustics {
+
+inline double beta_orthokinetic(double di, double dj, double rel_speed) {
+  const double s = di + dj;
+  return 0.25 * constants::pi * s * s * rel_speed;
+}
+
+struct Orthokinetic {
+  static constexpr std::string_view name = "orthokinetic";
+  double efficiency;  // E
+
+  Orthokinetic(const KernelSettings& s, const Gas&, const Sound&) : efficiency(s.collision_efficiency) {}
+  KernelNeeds needs() const { return {}; }
+  double beta(const SampleSet& p, std::size_t i, std::size_t j, double) const {
+    const double gx = p.vx[i] - p.vx[j], gy = p.vy[i] - p.vy[j], gz = p.vz[i] - p.vz[j];
+    return efficiency * beta_orthokinetic(p.d[i], p.d[j], std::sqrt(gx * gx + gy * gy + gz * gz));
+  }
+  double bound(const SampleSet& p, std::size_t i, const CellBounds& cb) const {
+    const double ex = p.vx[i] - cb.vref[0], ey = p.vy[i] - cb.vref[1], ez = p.vz[i] - cb.vref[2];
+    return efficiency * beta_orthokinetic(p.d[i], cb.d_max, std::sqrt(ex * ex + ey * ey + ez * ez) + cb.speed_dev_max);
+  }
+  double bound_cell(const CellBounds& cb) const {
+    return efficiency * beta_orthokinetic(cb.d_max, cb.d_max, 2.0 * cb.speed_dev_max);
+  }
+};
+
+}  // namespace agglo::acoustics
