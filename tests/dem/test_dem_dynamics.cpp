@@ -149,14 +149,15 @@ TEST(DemDynamics, BreakRules) {
     auto prm = params_for(m, 0.7, false);
     prm.contact.break_rule = rule;
     auto jkr = JkrPair::make(m.r / 2, m.E / (2 * (1 - m.nu * m.nu)), m.gamma);
+    const ContactLaw law(prm.contact);
     ContactState s;
     PairKinematics k{{0, 0, 0}, {2 * m.r, 0, 0}, {}, {}, {}, {}, m.r, m.r, 1e-11, 1e-11};
-    contact_force(prm.contact, jkr, 0.0, k, s, 1e-9);
+    law.evaluate_pair(jkr, k, s, 1e-9);
     ASSERT_TRUE(s.active);
     double broke_at = 0.0;
     for (double d = 0.0; d > -2 * jkr.deltaC; d -= 1e-5 * jkr.deltaC) {
       k.xj = {2 * m.r - d, 0, 0};
-      auto f = contact_force(prm.contact, jkr, 0.0, k, s, 1e-9);
+      auto f = law.evaluate_pair(jkr, k, s, 1e-9);
       if (!s.active) {
         broke_at = d;
         break;
@@ -169,7 +170,7 @@ TEST(DemDynamics, BreakRules) {
     EXPECT_NEAR(broke_at / jkr.deltaC, expect, 2e-5);
     // No re-forming until delta >= 0 again.
     k.xj = {2 * m.r + 0.1 * jkr.deltaC, 0, 0};
-    contact_force(prm.contact, jkr, 0.0, k, s, 1e-9);
+    law.evaluate_pair(jkr, k, s, 1e-9);
     EXPECT_FALSE(s.active);
   }
 }

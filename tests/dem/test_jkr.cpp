@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "agglo/dem/contact/alpha_damping.hpp"
 #include "agglo/dem/jkr.hpp"
 
 using agglo::dem::JkrPair;
@@ -82,9 +83,9 @@ TEST(Jkr, InversionRoundTrip) {
 
 TEST(Jkr, DampingCoefficient) {
   // alpha(1) ~ 0 (no damping for perfectly elastic contacts), alpha decreasing in e.
-  EXPECT_NEAR(agglo::dem::damping_alpha(1.0), 0.0, 1e-3);
+  EXPECT_NEAR(agglo::dem::contact::damping_alpha(1.0), 0.0, 1e-3);
   for (double e = 0.1; e < 0.95; e += 0.05)
-    EXPECT_GT(agglo::dem::damping_alpha(e), agglo::dem::damping_alpha(e + 0.05));
+    EXPECT_GT(agglo::dem::contact::damping_alpha(e), agglo::dem::contact::damping_alpha(e + 0.05));
 }
 
 }  // namespace
