@@ -1,4 +1,4 @@
-// Dynamic checks of the DEM (MODEL.md A.4 items 5-7): undamped and damped sticking velocities of a
+// Dynamic checks of the DEM (docs/model.md §A.4 items 5-7): undamped and damped sticking velocities of a
 // head-on pair, the universality of g(e), a pair at rest staying at rest, conservation laws,
 // break rules, thread-count independence.
 #include <gtest/gtest.h>
