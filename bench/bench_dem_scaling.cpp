@@ -1,7 +1,7 @@
 // DEM cost benchmarks (issue 2; docs/benchmarks_dem.md).
 //
 // BM_DemStep/N: one velocity-Verlet step of an adhesive agglomerate of N equal spheres (r = 10 um,
-//   rho = 2500, JKR as MODEL.md A.3, Marshall tangential spring) packed on a simple cubic lattice
+//   rho = 2500, JKR as docs/model.md §A.3, Marshall tangential spring) packed on a simple cubic lattice
 //   with spacing 2r - delta0 (every lattice contact at the JKR equilibrium overlap), sites filled in
 //   order, with random velocities of 1 mm/s (well below the sticking velocity, so contacts stay).
 //   Counter "ns_per_particle_step" = wall time / (N x steps); it stays flat if the step is O(N).

@@ -78,7 +78,7 @@ TEST(DemDynamics, UndampedStickingVelocity) {
 }
 
 TEST(DemDynamics, DampedStickingRatioUniversal) {
-  // g(e) = v_s / v_s0 (MODEL.md A.4 item 6) for two very different materials.
+  // g(e) = v_s / v_s0 (docs/model.md §A.4 item 6) for two very different materials.
   const std::pair<double, double> table[] = {{0.9, 1.275}, {0.7, 1.983}, {0.5, 3.123}, {0.3, 5.444}};
   Material a;
   Material b{2e-6, 1000, 5e9, 0.25, 0.05};

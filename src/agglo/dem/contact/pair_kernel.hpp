@@ -64,7 +64,9 @@ class PairKernel final : public ContactKernel {
     return true;
   }
 
-  PairForce force(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt) const {
+  // flatten: the sub-model calls are inlined into one body (as fast as a hand-written law; without it
+  // GCC keeps them out of line and a step costs ~25 % more).
+  [[gnu::flatten]] PairForce force(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt) const {
     PairForce out;
     const Vec3 d = k.xj - k.xi;
     const double dist = norm(d);
