@@ -139,7 +139,8 @@ namespace {
 class ImpactRun {
  public:
   ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double speed, Recorder* rec, const ProgressFn& progress)
-      : c_(c), sys_(std::move(agglomerate), c.dem), n_agg_(sys_.particles().size()), rec_(rec), progress_(progress) {
+      : c_(c), speed_(speed), sys_(std::move(agglomerate), c.dem), n_agg_(sys_.particles().size()), rec_(rec),
+        progress_(progress) {
     if (c.electrostatics) {
       es_ = make_electrostatic_force(c);
       sys_.set_external_force(es_.get());
@@ -154,13 +155,13 @@ class ImpactRun {
     sys_.add_particle(tmp.x.back(), tmp.r.back(), c.agglomerate.density, tmp.v.back(), tmp.q.back(), tmp.kappa.back());
   }
 
-  ImpactOutcome run(double speed) {
+  ImpactOutcome run() {
     ImpactOutcome out;
-    out.speed = speed;
+    out.speed = speed_;
     out.dt = sys_.dt();
     sys_.compute_forces();  // contacts and electrostatic energy of the launch state
     record();
-    out.contact = approach(speed);
+    out.contact = approach();
     out.t_contact = since_launch();
     if (out.contact) contact_phase(out);
     out.t_end = since_launch();
@@ -181,11 +182,11 @@ class ImpactRun {
   }
 
   // Until the projectile (the last particle) is in contact; false if max_approach passes first.
-  bool approach(double speed) {
+  bool approach() {
     const double rp = c_.agglomerate.radius;
     const double gap = c_.projectile.gap_radii * rp;
     const double max_approach =
-        c_.time.max_approach > 0.0 ? c_.time.max_approach : 5.0 * (gap + rp) / std::max(speed, 1e-3) + 1e-4;
+        c_.time.max_approach > 0.0 ? c_.time.max_approach : 5.0 * (gap + rp) / std::max(speed_, 1e-3) + 1e-4;
     while (since_launch() < max_approach) {
       step();
       if (progress_ && sys_.steps() % 2000 == 0) progress_(0.0, since_launch());
@@ -246,6 +247,7 @@ class ImpactRun {
   }
 
   const ImpactCase& c_;
+  double speed_;  // launch speed of the projectile [m/s]
   dem::DemSystem sys_;
   std::size_t n_agg_;  // the projectile is particle n_agg_
   Recorder* rec_;
@@ -262,7 +264,7 @@ class ImpactRun {
 ImpactOutcome run_impact(const ImpactCase& c, double speed, Recorder* rec, const ProgressFn& progress,
                          const dem::Particles* relaxed) {
   ImpactRun run(c, relaxed ? *relaxed : relaxed_agglomerate(c), speed, rec, progress);
-  return run.run(speed);
+  return run.run();
 }
 
 }  // namespace agglo::impact

@@ -14,7 +14,7 @@ constexpr TypeList<A..., B...> operator+(TypeList<A...>, TypeList<B...>) {
   return {};
 }
 
-// The types of `L` whose `category` is C, in order.
+// The listed types whose `category` is C, in order.
 template <Category C, class... Ts>
 constexpr auto of_category(TypeList<Ts...>) {
   return (TypeList<>{} + ... + std::conditional_t<Ts::category == C, TypeList<Ts>, TypeList<>>{});
