@@ -4,6 +4,7 @@
 // contact.rolling, contact.twisting and contact.damping.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "agglo/dem/contact_params.hpp"
 
@@ -24,6 +25,9 @@ struct ModelNames {
   const std::string& operator[](Category c) const;
   std::string& operator[](Category c);
 };
+
+// Registered names of a category, sorted: the allowed values of its config key (registry.cpp).
+std::vector<std::string> names(Category c);
 
 // normal "jkr"; damping "alpha" | "none" (contact.damping); tangential "seed" | "marshall"
 // (contact.tangential); rolling and twisting "marshall" | "none" (contact.rolling, contact.twisting).

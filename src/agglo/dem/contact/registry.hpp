@@ -19,9 +19,6 @@ namespace agglo::dem::contact {
 using KernelPtr = std::shared_ptr<const ContactKernel>;
 using KernelMaker = KernelPtr (*)(const ModelNames&, const ContactParams&);
 
-// Registered names of a category, sorted (the allowed values of its config key).
-std::vector<std::string> names(Category c);
-
 // The pair loop for the named models. Throws ConfigError naming the category, the unknown name and
 // the registered ones, or the two non-built-in models that cannot be combined.
 KernelPtr make_kernel(const ModelNames& names, const ContactParams& p);
