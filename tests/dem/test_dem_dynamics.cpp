@@ -1,4 +1,4 @@
-// Dynamic checks of the DEM (MODEL.md A.4 items 5-7): undamped and damped sticking velocities of a
+// Dynamic checks of the DEM (docs/model.md §A.4 items 5-7): undamped and damped sticking velocities of a
 // head-on pair, the universality of g(e), a pair at rest staying at rest, conservation laws,
 // break rules, thread-count independence.
 #include <gtest/gtest.h>
@@ -78,7 +78,7 @@ TEST(DemDynamics, UndampedStickingVelocity) {
 }
 
 TEST(DemDynamics, DampedStickingRatioUniversal) {
-  // g(e) = v_s / v_s0 (MODEL.md A.4 item 6) for two very different materials.
+  // g(e) = v_s / v_s0 (docs/model.md §A.4 item 6) for two very different materials.
   const std::pair<double, double> table[] = {{0.9, 1.275}, {0.7, 1.983}, {0.5, 3.123}, {0.3, 5.444}};
   Material a;
   Material b{2e-6, 1000, 5e9, 0.25, 0.05};
@@ -149,14 +149,15 @@ TEST(DemDynamics, BreakRules) {
     auto prm = params_for(m, 0.7, false);
     prm.contact.break_rule = rule;
     auto jkr = JkrPair::make(m.r / 2, m.E / (2 * (1 - m.nu * m.nu)), m.gamma);
+    const ContactLaw law(prm.contact);
     ContactState s;
     PairKinematics k{{0, 0, 0}, {2 * m.r, 0, 0}, {}, {}, {}, {}, m.r, m.r, 1e-11, 1e-11};
-    contact_force(prm.contact, jkr, 0.0, k, s, 1e-9);
+    law.evaluate_pair(jkr, k, s, 1e-9);
     ASSERT_TRUE(s.active);
     double broke_at = 0.0;
     for (double d = 0.0; d > -2 * jkr.deltaC; d -= 1e-5 * jkr.deltaC) {
       k.xj = {2 * m.r - d, 0, 0};
-      auto f = contact_force(prm.contact, jkr, 0.0, k, s, 1e-9);
+      auto f = law.evaluate_pair(jkr, k, s, 1e-9);
       if (!s.active) {
         broke_at = d;
         break;
@@ -169,7 +170,7 @@ TEST(DemDynamics, BreakRules) {
     EXPECT_NEAR(broke_at / jkr.deltaC, expect, 2e-5);
     // No re-forming until delta >= 0 again.
     k.xj = {2 * m.r + 0.1 * jkr.deltaC, 0, 0};
-    contact_force(prm.contact, jkr, 0.0, k, s, 1e-9);
+    law.evaluate_pair(jkr, k, s, 1e-9);
     EXPECT_FALSE(s.active);
   }
 }

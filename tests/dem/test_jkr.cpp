@@ -1,8 +1,9 @@
-// Analytic checks of the JKR contact law, MODEL.md A.4 items 1-4, and the delta <-> a round trip.
+// Analytic checks of the JKR contact law, docs/model.md §A.4 items 1-4, and the delta <-> a round trip.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "agglo/dem/contact/alpha_damping.hpp"
 #include "agglo/dem/jkr.hpp"
 
 using agglo::dem::JkrPair;
@@ -23,7 +24,7 @@ TEST(Jkr, EquilibriumPoint) {
   double h = 1e-6 * p.deltaC, d0 = p.delta_equilibrium();
   double k = (p.force_of_a(p.a_of_delta(d0 + h)) - p.force_of_a(p.a_of_delta(d0 - h))) / (2 * h);
   // Closed form: dF/d(delta) = (dF/da)/(d(delta)/da) = (6 F_C/a0) / (5 a0 / (3 R)) = 1.8 / 6^(1/3) F_C/delta_C
-  // = 0.990578 F_C/delta_C. MODEL.md A.4 quotes 0.99050 (truncated to 4 digits; 8e-5 below the exact value).
+  // = 0.990578 F_C/delta_C. docs/model.md §A.4 quotes 0.99050 (truncated to 4 digits; 8e-5 below the exact value).
   EXPECT_NEAR(k / (p.Fc / p.deltaC), 1.8 / std::cbrt(6.0), 1e-8);
   EXPECT_NEAR(k / (p.Fc / p.deltaC), 0.99050, 1e-4);
 }
@@ -82,9 +83,9 @@ TEST(Jkr, InversionRoundTrip) {
 
 TEST(Jkr, DampingCoefficient) {
   // alpha(1) ~ 0 (no damping for perfectly elastic contacts), alpha decreasing in e.
-  EXPECT_NEAR(agglo::dem::damping_alpha(1.0), 0.0, 1e-3);
+  EXPECT_NEAR(agglo::dem::contact::damping_alpha(1.0), 0.0, 1e-3);
   for (double e = 0.1; e < 0.95; e += 0.05)
-    EXPECT_GT(agglo::dem::damping_alpha(e), agglo::dem::damping_alpha(e + 0.05));
+    EXPECT_GT(agglo::dem::contact::damping_alpha(e), agglo::dem::contact::damping_alpha(e + 0.05));
 }
 
 }  // namespace

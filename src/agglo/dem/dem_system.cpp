@@ -5,12 +5,9 @@
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/dem/parallel_for.hpp"
 
 namespace agglo::dem {
-
-namespace {
-constexpr std::int64_t kParallelThreshold = 4096;  // pairs or particles
-}  // namespace
 
 double reference_period(const Particles& p, const ContactParams& c) {
   double best = 1e300;
@@ -31,8 +28,11 @@ double reference_period(const Particles& p, const ContactParams& c) {
   return best;
 }
 
-DemSystem::DemSystem(Particles particles, DemParams params) : p_(std::move(particles)), params_(params) {
-  alpha_ = damping_alpha(params_.contact.restitution);
+DemSystem::DemSystem(Particles particles, DemParams params)
+    : DemSystem(std::move(particles), params, contact::model_names(params.contact)) {}
+
+DemSystem::DemSystem(Particles particles, DemParams params, const contact::ModelNames& models)
+    : p_(std::move(particles)), params_(params), law_(params_.contact, models) {
   dt_ = params_.dt > 0.0 ? params_.dt : reference_period(p_, params_.contact) / params_.steps_per_period;
   double rmin = p_.size() ? *std::min_element(p_.r.begin(), p_.r.end()) : 1.0;
   skin_ = params_.skin > 0.0 ? params_.skin : 0.1 * rmin;
@@ -47,23 +47,7 @@ void DemSystem::compute_forces() {
   const std::size_t n = p_.size();
   if (nl_.needs_rebuild(p_.x, skin_))
     nl_.build(p_.x, p_.r, skin_, [this](std::uint32_t i, std::uint32_t j) { return jkr_for(i, j); });
-  auto& pairs = nl_.pairs();
-  const std::int64_t np = static_cast<std::int64_t>(pairs.size());
-  pair_forces_.resize(pairs.size());
-  const ContactParams& cp = params_.contact;
-  auto pair_loop = [&](std::int64_t k) {
-    Pair& pr = pairs[k];
-    PairKinematics kin{p_.x[pr.i], p_.x[pr.j], p_.v[pr.i], p_.v[pr.j], p_.w[pr.i], p_.w[pr.j],
-                       p_.r[pr.i], p_.r[pr.j], p_.m[pr.i], p_.m[pr.j]};
-    pair_forces_[k] = contact_force(cp, pr.jkr, alpha_, kin, pr.state, dt_);
-  };
-  // Small systems stay serial: entering an OpenMP region costs more than the work.
-  if (np > kParallelThreshold) {
-#pragma omp parallel for schedule(static)
-    for (std::int64_t k = 0; k < np; ++k) pair_loop(k);
-  } else {
-    for (std::int64_t k = 0; k < np; ++k) pair_loop(k);
-  }
+  law_.evaluate_pairs(nl_.pairs(), p_, dt_, pair_forces_);
   const auto& off = nl_.offsets();
   const auto& ent = nl_.entries();
   auto gather = [&](std::int64_t q) {
@@ -81,13 +65,7 @@ void DemSystem::compute_forces() {
     p_.f[q] = f;
     p_.t[q] = t;
   };
-  const std::int64_t nn = static_cast<std::int64_t>(n);
-  if (nn > kParallelThreshold) {
-#pragma omp parallel for schedule(static)
-    for (std::int64_t q = 0; q < nn; ++q) gather(q);
-  } else {
-    for (std::int64_t q = 0; q < nn; ++q) gather(q);
-  }
+  parallel_for(static_cast<std::int64_t>(n), gather);
   if (ext_) ext_->add_forces(p_, step_, time_, p_.f, p_.t);
   forces_ready_ = true;
 }
@@ -105,21 +83,11 @@ void DemSystem::step() {
     p_.v[q] += (h / p_.m[q]) * p_.f[q];
     p_.w[q] += (h / p_.I[q]) * p_.t[q];
   };
-  if (n > kParallelThreshold) {
-#pragma omp parallel for schedule(static)
-    for (std::int64_t q = 0; q < n; ++q) kick_drift(q);
-  } else {
-    for (std::int64_t q = 0; q < n; ++q) kick_drift(q);
-  }
+  parallel_for(n, kick_drift);
   time_ += dt_;
   ++step_;
   compute_forces();
-  if (n > kParallelThreshold) {
-#pragma omp parallel for schedule(static)
-    for (std::int64_t q = 0; q < n; ++q) kick(q);
-  } else {
-    for (std::int64_t q = 0; q < n; ++q) kick(q);
-  }
+  parallel_for(n, kick);
   if (step_ % 256 == 0) check_state();
 }
 

@@ -6,7 +6,8 @@
 #include <memory>
 #include <vector>
 
-#include "agglo/dem/contact_model.hpp"
+#include "agglo/dem/contact_law.hpp"
+#include "agglo/dem/contact_params.hpp"
 #include "agglo/dem/external_force.hpp"
 #include "agglo/dem/neighbor_list.hpp"
 #include "agglo/dem/particles.hpp"
@@ -22,7 +23,9 @@ struct DemParams {
 
 class DemSystem {
  public:
+  // Contact sub-models as named by params.contact (contact::model_names) or explicitly by `models`.
   DemSystem(Particles particles, DemParams params);
+  DemSystem(Particles particles, DemParams params, const contact::ModelNames& models);
 
   void set_external_force(ExternalForce* ext) {
     ext_ = ext;
@@ -42,6 +45,7 @@ class DemSystem {
   double time() const { return time_; }
   long steps() const { return step_; }
   const DemParams& params() const { return params_; }
+  const ContactLaw& contact_law() const { return law_; }
   const Particles& particles() const { return p_; }
   Particles& particles() { return p_; }
   const std::vector<Pair>& pairs() const { return nl_.pairs(); }
@@ -65,10 +69,10 @@ class DemSystem {
 
   Particles p_;
   DemParams params_;
+  ContactLaw law_;
   NeighborList nl_;
   ExternalForce* ext_ = nullptr;
   std::vector<PairForce> pair_forces_;
-  double alpha_ = 0.0;
   double dt_ = 0.0, skin_ = 0.0, time_ = 0.0;
   long step_ = 0;
   bool forces_ready_ = false;

@@ -58,9 +58,4 @@ double JkrPair::force_of_a(double a) const {
   return 4.0 * Fc * (x * x * x - x * std::sqrt(x));
 }
 
-double damping_alpha(double e) {
-  return 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * std::pow(e, 3) + 27.467 * std::pow(e, 4) -
-         18.022 * std::pow(e, 5) + 4.8218 * std::pow(e, 6);
-}
-
 }  // namespace agglo::dem

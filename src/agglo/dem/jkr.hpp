@@ -1,6 +1,6 @@
 #pragma once
 // JKR adhesive normal contact (Johnson-Kendall-Roberts; Marshall 2009 J. Comput. Phys. 228, 5466;
-// MODEL.md A.2). Units: SI. F > 0 is repulsive.
+// docs/model.md §A.2). Units: SI. F > 0 is repulsive.
 //   F_C  = 3 pi gamma R                       pull-off force [N]
 //   a0   = (9 pi gamma R^2 / E*)^(1/3)        equilibrium contact radius [m]
 //   delta_C = a0^2 / (2 6^(1/3) R)            critical overlap [m]
@@ -31,9 +31,6 @@ struct JkrPair {
   // Equilibrium overlap delta0 = a0^2 / (3 R).
   double delta_equilibrium() const { return a0 * a0 / (3.0 * R); }
 };
-
-// Damping coefficient alpha(e) of Marshall (2009) / Tsuji (1992): eta_N = alpha(e) sqrt(m* k_N).
-double damping_alpha(double restitution);
 
 // Overlap at which the pair force is the pull-off minimum -F_C: delta = -0.48075 delta_C.
 inline constexpr double kDeltaAtMinForce = -0.480750157;  // (2^(-2/3)) mapped through delta(a)

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "agglo/core/vec3.hpp"
-#include "agglo/dem/contact_model.hpp"
+#include "agglo/dem/contact/pair_state.hpp"
 #include "agglo/dem/jkr.hpp"
 
 namespace agglo::dem {

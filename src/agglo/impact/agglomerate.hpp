@@ -1,5 +1,5 @@
 #pragma once
-// Built-in agglomerates and the projectile (MODEL.md A.3). Contacts start at the JKR equilibrium
+// Built-in agglomerates and the projectile (docs/model.md §A.3). Contacts start at the JKR equilibrium
 // overlap delta0 = a0^2/(3R) (zero elastic force). The projectile (last particle) starts a surface gap
 // of gap_radii * r_p before the agglomerate and moves along +x towards its centroid, offset along y.
 //   tetrahedron: regular, edge (0,1) along z facing the projectile; charges +,-,+,-.

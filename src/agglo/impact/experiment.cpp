@@ -50,8 +50,6 @@ io::ParticleSnapshot snapshot(const dem::DemSystem& sys) {
   return io::ParticleSnapshot{p.x, p.v, p.w, p.r, p.q, sys.contacts_per_particle()};
 }
 
-}  // namespace
-
 // Broken, every fragment escaping, and every fragment's surfaces at least `min_gap` from the rest
 // (beyond adhesive reach; its kinetic energy already exceeds its electrostatic binding).
 bool clearly_broken(const dem::DemSystem& sys, std::size_t n_agg, double kappa0, double min_gap) {
@@ -67,6 +65,8 @@ bool clearly_broken(const dem::DemSystem& sys, std::size_t n_agg, double kappa0,
   }
   return true;
 }
+
+}  // namespace
 
 ImpactOutcome classify(const dem::DemSystem& sys, std::size_t n_agg, double kappa0) {
   ImpactOutcome out;
@@ -131,104 +131,140 @@ dem::Particles relaxed_agglomerate(const ImpactCase& c) {
   return p;
 }
 
-ImpactOutcome run_impact(const ImpactCase& c, double speed, Recorder* rec, const ProgressFn& progress,
-                               const dem::Particles* relaxed) {
-  dem::Particles agg = relaxed ? *relaxed : relaxed_agglomerate(c);
-  const std::size_t n_agg = agg.size();
-  dem::DemSystem sys(std::move(agg), c.dem);
-  std::unique_ptr<dem::ExternalForce> es;
-  if (c.electrostatics) {
-    es = make_electrostatic_force(c);
-    sys.set_external_force(es.get());
-  }
-  const double rp = c.agglomerate.radius;
-  const double u0 = 2.0 * constants::pi * rp * rp * rp * c.agglomerate.charge_density * c.agglomerate.charge_density /
-                    constants::eps0;
-  const double t_launch = sys.time();
-  {
-    dem::Particles tmp = sys.particles();
+namespace {
+
+// One run from the launch of the projectile to the classification, in phases: launch (constructor),
+// approach until the projectile first touches, contact phase (after_contact, extended while the
+// outcome is undecided), result. Every step is recorded (time series, snapshots) on the output clock.
+class ImpactRun {
+ public:
+  ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double speed, Recorder* rec, const ProgressFn& progress)
+      : c_(c), speed_(speed), sys_(std::move(agglomerate), c.dem), n_agg_(sys_.particles().size()), rec_(rec),
+        progress_(progress) {
+    if (c.electrostatics) {
+      es_ = make_electrostatic_force(c);
+      sys_.set_external_force(es_.get());
+    }
+    const double rp = c.agglomerate.radius;
+    const double sigma = c.agglomerate.charge_density;
+    u0_ = 2.0 * constants::pi * rp * rp * rp * sigma * sigma / constants::eps0;
+    kappa0_ = es_ ? c.medium_permittivity : 1.0;
+    t_launch_ = sys_.time();
+    dem::Particles tmp = sys_.particles();
     add_projectile(tmp, c, speed);
-    sys.add_particle(tmp.x.back(), tmp.r.back(), c.agglomerate.density, tmp.v.back(), tmp.q.back(), tmp.kappa.back());
+    sys_.add_particle(tmp.x.back(), tmp.r.back(), c.agglomerate.density, tmp.v.back(), tmp.q.back(), tmp.kappa.back());
   }
-  const std::size_t proj = n_agg;
-  const double gap = c.projectile.gap_radii * rp;
-  double max_approach = c.time.max_approach > 0.0 ? c.time.max_approach
-                                                  : 5.0 * (gap + rp) / std::max(speed, 1e-3) + 1e-4;
-  const double kappa0 = es ? c.medium_permittivity : 1.0;
 
-  double next_row = 0.0, next_snap = 0.0;
-  auto record = [&]() {
-    if (!rec) return;
-    double t = sys.time() - t_launch;
-    if (t + 1e-15 >= next_row) {
-      double ues = sys.external_energy();
-      rec->rows.push_back({t, sys.kinetic_energy(), ues, u0 > 0 ? ues / u0 : 0.0,
-                           radius_of_gyration(sys.particles()), radius_of_gyration(sys.particles(), n_agg),
-                           sys.active_contacts()});
-      next_row += c.output.timeseries_interval;
-    }
-    if (c.output.snapshot_interval > 0.0 && t + 1e-15 >= next_snap) {
-      rec->snapshots.emplace_back(t, snapshot(sys));
-      next_snap += c.output.snapshot_interval;
-    }
-  };
-
-  ImpactOutcome out;
-  out.speed = speed;
-  out.dt = sys.dt();
-  // Approach until first contact of the projectile.
-  sys.compute_forces();  // contacts and electrostatic energy of the launch state
-  record();
-  auto projectile_touches = [&]() {
-    for (const auto& pr : sys.pairs())
-      if (pr.state.active && (pr.i == proj || pr.j == proj)) return true;
-    return false;
-  };
-  while (sys.time() - t_launch < max_approach) {
-    sys.step();
+  ImpactOutcome run() {
+    ImpactOutcome out;
+    out.speed = speed_;
+    out.dt = sys_.dt();
+    sys_.compute_forces();  // contacts and electrostatic energy of the launch state
     record();
-    if (progress && sys.steps() % 2000 == 0) progress(0.0, sys.time() - t_launch);
-    if (projectile_touches()) {
-      out.contact = true;
-      break;
+    out.contact = approach();
+    out.t_contact = since_launch();
+    if (out.contact) contact_phase(out);
+    out.t_end = since_launch();
+    if (auto* ef = dynamic_cast<ElectrostaticForce*>(es_.get())) {
+      out.es_solves = ef->solves();
+      out.es_seconds = ef->seconds();
     }
+    out.steps = sys_.steps();
+    return out;
   }
-  out.t_contact = sys.time() - t_launch;
-  if (out.contact) {
-    double t_stop = sys.time() + c.time.after_contact;
+
+ private:
+  double since_launch() const { return sys_.time() - t_launch_; }
+
+  void step() {
+    sys_.step();
+    record();
+  }
+
+  // Until the projectile (the last particle) is in contact; false if max_approach passes first.
+  bool approach() {
+    const double rp = c_.agglomerate.radius;
+    const double gap = c_.projectile.gap_radii * rp;
+    const double max_approach =
+        c_.time.max_approach > 0.0 ? c_.time.max_approach : 5.0 * (gap + rp) / std::max(speed_, 1e-3) + 1e-4;
+    while (since_launch() < max_approach) {
+      step();
+      if (progress_ && sys_.steps() % 2000 == 0) progress_(0.0, since_launch());
+      if (projectile_touches()) return true;
+    }
+    return false;
+  }
+
+  bool projectile_touches() const {
+    for (const auto& pr : sys_.pairs())
+      if (pr.state.active && (pr.i == n_agg_ || pr.j == n_agg_)) return true;
+    return false;
+  }
+
+  // after_contact, then extensions while undecided; classifies the end state.
+  void contact_phase(ImpactOutcome& out) {
+    double t_stop = sys_.time() + c_.time.after_contact;
     for (int ext = 0;; ++ext) {
-      const double t_from = sys.time();
-      bool decided_early = false;
-      while (sys.time() < t_stop) {
-        sys.step();
-        record();
-        if (progress && sys.steps() % 2000 == 0)
-          progress((sys.time() - t_from) / (t_stop - t_from), sys.time() - t_launch);
-        if (c.time.early_stop && sys.steps() % 500 == 0 && clearly_broken(sys, n_agg, kappa0, c.time.early_stop_gap * rp)) {
-          decided_early = true;
-          break;
-        }
-      }
-      out.early_stop = decided_early;
-      auto cl = classify(sys, n_agg, kappa0);
+      out.early_stop = run_until(t_stop);
+      auto cl = classify(sys_, n_agg_, kappa0_);
       out.broken = cl.broken;
       out.undecided = cl.undecided;
       out.components = cl.components;
       out.fragments = cl.fragments;
       out.extensions = ext;
-      if (!cl.undecided || ext >= c.time.max_extensions) break;
-      t_stop += c.time.extension;
+      if (!cl.undecided || ext >= c_.time.max_extensions) break;
+      t_stop += c_.time.extension;
     }
-  } else {
-    out.components = {};
   }
-  out.t_end = sys.time() - t_launch;
-  if (auto* ef = dynamic_cast<ElectrostaticForce*>(es.get())) {
-    out.es_solves = ef->solves();
-    out.es_seconds = ef->seconds();
+
+  // Integrates to t_stop; true if stopped before because the agglomerate is clearly broken.
+  bool run_until(double t_stop) {
+    const double t_from = sys_.time();
+    const double min_gap = c_.time.early_stop_gap * c_.agglomerate.radius;
+    while (sys_.time() < t_stop) {
+      step();
+      if (progress_ && sys_.steps() % 2000 == 0)
+        progress_((sys_.time() - t_from) / (t_stop - t_from), since_launch());
+      if (c_.time.early_stop && sys_.steps() % 500 == 0 && clearly_broken(sys_, n_agg_, kappa0_, min_gap)) return true;
+    }
+    return false;
   }
-  out.steps = sys.steps();
-  return out;
+
+  void record() {
+    if (!rec_) return;
+    const double t = since_launch();
+    if (t + 1e-15 >= next_row_) {
+      const double ues = sys_.external_energy();
+      rec_->rows.push_back({t, sys_.kinetic_energy(), ues, u0_ > 0 ? ues / u0_ : 0.0,
+                            radius_of_gyration(sys_.particles()), radius_of_gyration(sys_.particles(), n_agg_),
+                            sys_.active_contacts()});
+      next_row_ += c_.output.timeseries_interval;
+    }
+    if (c_.output.snapshot_interval > 0.0 && t + 1e-15 >= next_snap_) {
+      rec_->snapshots.emplace_back(t, snapshot(sys_));
+      next_snap_ += c_.output.snapshot_interval;
+    }
+  }
+
+  const ImpactCase& c_;
+  double speed_;  // launch speed of the projectile [m/s]
+  dem::DemSystem sys_;
+  std::size_t n_agg_;  // the projectile is particle n_agg_
+  Recorder* rec_;
+  const ProgressFn& progress_;
+  std::unique_ptr<dem::ExternalForce> es_;
+  double u0_ = 0.0;      // U0 = 2 pi r_p^3 sigma_f^2 / eps0 [J]
+  double kappa0_ = 1.0;  // medium permittivity of the point-charge binding
+  double t_launch_ = 0.0;
+  double next_row_ = 0.0, next_snap_ = 0.0;
+};
+
+}  // namespace
+
+ImpactOutcome run_impact(const ImpactCase& c, double speed, Recorder* rec, const ProgressFn& progress,
+                         const dem::Particles* relaxed) {
+  ImpactRun run(c, relaxed ? *relaxed : relaxed_agglomerate(c), speed, rec, progress);
+  return run.run();
 }
 
 }  // namespace agglo::impact

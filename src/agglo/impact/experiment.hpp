@@ -1,5 +1,5 @@
 #pragma once
-// One collision run (MODEL.md A.3): optional relaxation of the agglomerate under electrostatics,
+// One collision run (docs/model.md §A.3): optional relaxation of the agglomerate under electrostatics,
 // launch of the projectile, integration until `after_contact` after its first contact, break-up
 // classification (extended while undecided). The engine records time series and snapshots into a
 // Recorder; it never writes files itself.

@@ -1,0 +1,22 @@
+#pragma once
+// The contact sub-models compiled into agglo: a model listed here is selectable by name and combines
+// with every other listed model. Adding one = its header (+ .cpp) and one entry in this list.
+#include "agglo/dem/contact/alpha_damping.hpp"
+#include "agglo/dem/contact/jkr_normal.hpp"
+#include "agglo/dem/contact/marshall_rolling.hpp"
+#include "agglo/dem/contact/marshall_sliding.hpp"
+#include "agglo/dem/contact/marshall_twisting.hpp"
+#include "agglo/dem/contact/no_resistance.hpp"
+#include "agglo/dem/contact/seed_friction.hpp"
+#include "agglo/dem/contact/type_list.hpp"
+
+namespace agglo::dem::contact {
+
+using BuiltinModels = TypeList<
+    JkrNormal,                      // normal "jkr"
+    AlphaDamping, NoDamping,        // damping "alpha", "none"
+    SeedFriction, MarshallSliding,  // tangential "seed", "marshall"
+    NoRolling, MarshallRolling,     // rolling "none", "marshall"
+    NoTwisting, MarshallTwisting>;  // twisting "none", "marshall"
+
+}  // namespace agglo::dem::contact

@@ -1,0 +1,24 @@
+#pragma once
+// The selected contact law as the DEM engine calls it: one virtual call per step evaluates every
+// listed pair (the loop itself is compiled for the chosen sub-models, see pair_kernel.hpp).
+#include <vector>
+
+#include "agglo/dem/contact/pair_state.hpp"
+#include "agglo/dem/jkr.hpp"
+#include "agglo/dem/neighbor_list.hpp"
+#include "agglo/dem/particles.hpp"
+
+namespace agglo::dem::contact {
+
+class ContactKernel {
+ public:
+  virtual ~ContactKernel() = default;
+  // Forces of every pair into out[k] (resized to pairs.size()); updates the pair states.
+  virtual void evaluate_pairs(std::vector<Pair>& pairs, const Particles& p, double dt,
+                              std::vector<PairForce>& out) const = 0;
+  // One pair (tests and diagnostics; a virtual call per pair).
+  virtual PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
+                                  double dt) const = 0;
+};
+
+}  // namespace agglo::dem::contact

@@ -1,0 +1,21 @@
+#pragma once
+// What a contact sub-model includes and implements. Every sub-model is a small class with
+//   static constexpr Category category;          static constexpr const char* name;
+//   explicit Model(const ContactParams& p);       // copies and checks its coefficients (require())
+// and the per-pair method of its category, called by pair_kernel.hpp for each active contact:
+//   normal      double break_separation(const JkrPair&) const;   [m] breaks when delta < -this
+//               double contact_radius(const JkrPair&, double delta, double a_prev) const;   [m]
+//               double force(const JkrPair&, double a) const;     [N] elastic, > 0 repulsive
+//               double stiffness(const JkrPair&, double a) const; [N/m] k_N for the damping
+//   damping     double coefficient(double mstar, double k_n) const;                [kg/s] eta_N
+//   tangential  Vec3 force(const ContactPoint&, const JkrPair&, ContactState&) const;   [N] on i
+//   rolling,    Vec3 torque(const ContactPoint&, const JkrPair&, ContactState&) const; [N m] on i
+//   twisting    (j receives the opposite), or `static constexpr bool inactive = true;` to do nothing.
+// Springs keep their displacement in ContactState (xi_t, xi_r, xi_q), reset when a contact forms.
+#include "agglo/core/vec3.hpp"
+#include "agglo/dem/contact/coefficient_check.hpp"
+#include "agglo/dem/contact/contact_point.hpp"
+#include "agglo/dem/contact/model_names.hpp"
+#include "agglo/dem/contact/pair_state.hpp"
+#include "agglo/dem/contact_params.hpp"
+#include "agglo/dem/jkr.hpp"

@@ -1,0 +1,12 @@
+#include "agglo/dem/contact_law.hpp"
+
+#include "agglo/dem/contact/registry.hpp"
+
+namespace agglo::dem {
+
+ContactLaw::ContactLaw(const ContactParams& p) : ContactLaw(p, contact::model_names(p)) {}
+
+ContactLaw::ContactLaw(const ContactParams& p, const contact::ModelNames& names)
+    : names_(names), kernel_(contact::make_kernel(names, p)) {}
+
+}  // namespace agglo::dem

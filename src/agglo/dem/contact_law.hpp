@@ -1,0 +1,36 @@
+#pragma once
+// The adhesive contact law of the DEM (docs/model.md §A.2): one normal, damping, tangential, rolling
+// and twisting sub-model, chosen by name (src/agglo/dem/contact/; the names are listed by
+// contact::names(category)). Selected once; evaluating all pairs costs one virtual call per step.
+#include <memory>
+#include <vector>
+
+#include "agglo/dem/contact/contact_kernel.hpp"
+#include "agglo/dem/contact/model_names.hpp"
+#include "agglo/dem/contact_params.hpp"
+
+namespace agglo::dem {
+
+class ContactLaw {
+ public:
+  // The models the config fields of `p` name (contact::model_names).
+  explicit ContactLaw(const ContactParams& p);
+  // Explicit names; throws ConfigError for unknown names or coefficients a model rejects.
+  ContactLaw(const ContactParams& p, const contact::ModelNames& names);
+
+  const contact::ModelNames& names() const { return names_; }
+
+  void evaluate_pairs(std::vector<Pair>& pairs, const Particles& p, double dt, std::vector<PairForce>& out) const {
+    kernel_->evaluate_pairs(pairs, p, dt, out);
+  }
+  // One contact evaluation: updates `s` (formation, break, springs) and returns the forces.
+  PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt) const {
+    return kernel_->evaluate_pair(jkr, k, s, dt);
+  }
+
+ private:
+  contact::ModelNames names_;
+  std::shared_ptr<const contact::ContactKernel> kernel_;
+};
+
+}  // namespace agglo::dem

@@ -1,0 +1,12 @@
+#include "agglo/dem/contact_params.hpp"
+
+namespace agglo::dem {
+
+double ContactParams::estar() const { return youngs_modulus / (2.0 * (1.0 - poisson_ratio * poisson_ratio)); }
+
+double ContactParams::gstar() const {
+  double G = youngs_modulus / (2.0 * (1.0 + poisson_ratio));
+  return G / (2.0 * (2.0 - poisson_ratio));
+}
+
+}  // namespace agglo::dem

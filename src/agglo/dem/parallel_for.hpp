@@ -1,0 +1,21 @@
+#pragma once
+// f(k) for k in [0, n): an OpenMP parallel loop (static schedule) above kParallelThreshold items,
+// serial below it (entering a parallel region costs more than small loops). Every k is handled by
+// exactly one thread, so results do not depend on the thread count when f(k) writes only slot k.
+#include <cstdint>
+
+namespace agglo::dem {
+
+inline constexpr std::int64_t kParallelThreshold = 4096;  // pairs or particles
+
+template <class F>
+void parallel_for(std::int64_t n, const F& f) {
+  if (n > kParallelThreshold) {
+#pragma omp parallel for schedule(static)
+    for (std::int64_t k = 0; k < n; ++k) f(k);
+  } else {
+    for (std::int64_t k = 0; k < n; ++k) f(k);
+  }
+}
+
+}  // namespace agglo::dem
