@@ -1,4 +1,4 @@
-// Engine-level invariants: exact solid/liquid volume and mass conservation (MODEL C.7.4), energy
+// Engine-level invariants: exact solid/liquid volume and mass conservation (docs/model.md §C.7.4), energy
 // bookkeeping of split-merge with compensation at e = 1 (C.7.4), thread-count independence, the
 // Nanbu guard (sub-cycling keeps every evaluated P_ij <= 1/N; strict mode refuses), lost particles.
 #include <cmath>

@@ -1,4 +1,4 @@
-// MODEL C.1 reference values of the gas and sound field, and the fast C_I used by the motion loop.
+// docs/model.md §C.1 reference values of the gas and sound field, and the fast C_I used by the motion loop.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@ TEST(Gas, AirAtReferenceConditionsMatchesModelC1) {
   EXPECT_NEAR(g.density, 1.1839, 5e-4);
   EXPECT_NEAR(g.sound_speed, 346.15, 0.01);
   EXPECT_NEAR(g.viscosity, 1.837e-5, 0.001e-5);
-  // lambda_g = 2 mu_g / (rho_g cbar) evaluates to 66.48 nm (MODEL C.1 quotes "~66.6 nm").
+  // lambda_g = 2 mu_g / (rho_g cbar) evaluates to 66.48 nm (an earlier version of the specification quoted "~66.6 nm").
   EXPECT_NEAR(g.mean_free_path, 2 * g.viscosity / (g.density * g.mean_speed), 1e-20);
   EXPECT_NEAR(g.mean_free_path, 66.6e-9, 0.2e-9);
   EXPECT_NEAR(g.gravity, 9.80665, 1e-12);

@@ -1,4 +1,4 @@
-// Kernel values (MODEL C.3, C.7.5) and the majorant property the Nanbu guard relies on.
+// Kernel values (docs/model.md §C.3, C.7.5) and the majorant property the Nanbu guard relies on.
 #include <cmath>
 #include <random>
 
@@ -17,7 +17,7 @@ TEST(Kernels, FuchsValueForTwo200nmSpheres) {
   // textbook gas values mu = 1.8e-5 Pa s, lambda = 65.1 nm (Seinfeld & Pandis).
   const Gas tb = Gas::air(298.15, 101325.0, false, 1.8e-5, 65.1e-9);
   EXPECT_NEAR(beta_brownian_fuchs(tb, 200e-9, 200e-9, 2000.0, 2000.0), 1.012e-15, 0.002e-15);
-  // With the MODEL C.1 gas (mu = 1.837e-5, lambda = 66.5 nm) the same formula gives 1.004e-15 (0.8 % lower).
+  // With the docs/model.md §C.1 gas (mu = 1.837e-5, lambda = 66.5 nm) the same formula gives 1.004e-15 (0.8 % lower).
   const Gas g = Gas::air(298.15, 101325.0, false);
   const double k = beta_brownian_fuchs(g, 200e-9, 200e-9, 2000.0, 2000.0);
   EXPECT_NEAR(k, 1.004e-15, 0.002e-15);
@@ -41,7 +41,7 @@ TEST(Kernels, MechanismFormulas) {
   const double kT = agglo::constants::k_B * 298.15;
   EXPECT_NEAR(beta_brownian_slip(g, 1e-6, 2e-6, 1.2, 1.1),
               2 * kT / (3 * g.viscosity) * 3e-6 * (1.2 / 1e-6 + 1.1 / 2e-6), 1e-30);
-  // MRPE is ~1e-6 of OI at the seed's conditions (MODEL C.3).
+  // MRPE is ~1e-6 of OI at the seed's conditions (docs/model.md §C.3).
   const double mr = beta_radiation_pressure(radiation_pressure_prefactor(g, 0.69), 1e-3, 30e-6, 1e-6, 0.99, 0.1, 1.0);
   EXPECT_GT(mr, 0.0);
   EXPECT_LT(mr / beta_orthokinetic(30e-6, 1e-6, 0.69), 1e-4);

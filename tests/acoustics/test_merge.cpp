@@ -1,4 +1,4 @@
-// Weighted coalescence rules (seed eqs. 15-21), conservation in coalescence (MODEL C.7.4), hard-sphere
+// Weighted coalescence rules (seed eqs. 15-21), conservation in coalescence (docs/model.md §C.7.4), hard-sphere
 // rebound (eqs. 22-24), split-merge (eqs. 25-29) and the energy compensation of eq. 30.
 #include <cmath>
 

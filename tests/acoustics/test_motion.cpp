@@ -1,4 +1,4 @@
-// MODEL C.7.2: single-particle acoustic response (amplitude 1/sqrt(1+(w tau)^2), lag atan(w tau)) and
+// docs/model.md §C.7.2: single-particle acoustic response (amplitude 1/sqrt(1+(w tau)^2), lag atan(w tau)) and
 // settling velocity, for the exact integrator at large steps and the seed's explicit scheme.
 #include <bit>
 #include <cmath>

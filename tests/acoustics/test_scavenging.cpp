@@ -1,4 +1,4 @@
-// MODEL C.7.3: scavenging of fines by monodisperse, nearly stationary droplets with only orthokinetic
+// docs/model.md §C.7.3: scavenging of fines by monodisperse, nearly stationary droplets with only orthokinetic
 // fine-droplet collisions: n_f(t) = n_f0 exp(-<beta> n_d t) with
 //   <beta> = (pi/4)(d_d+d_f)^2 (2/pi) u_amp w |tau_d - tau_f| / sqrt((1 + w^2 tau_d^2)(1 + w^2 tau_f^2)).
 // The check is within 4 binomial standard deviations of the surviving fraction (3500 equal-weight fine

@@ -1,4 +1,4 @@
-// MODEL C.7.1: Smoluchowski coagulation from an exponential start, n(v,0) = N0/v0 exp(-v/v0), x = v/v0,
+// docs/model.md §C.7.1: Smoluchowski coagulation from an exponential start, n(v,0) = N0/v0 exp(-v/v0), x = v/v0,
 // with 1e5 sampled particles (the PartMC tolerances: relative L2 error over size bins <= 5 % in number and
 // <= 20 % in mass; N(t) within 2 %).
 //   constant K0, tau = K0 N0 t:   n = 4 N0 / (v0 (2+tau)^2) exp(-2x/(2+tau)),  N = 2 N0/(2+tau)

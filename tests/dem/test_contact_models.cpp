@@ -63,7 +63,7 @@ TEST(ContactModels, CoefficientsAreChecked) {
     JkrNormal bad(p);
     FAIL() << "no error for gamma = 0";
   } catch (const ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("material.surface_energy"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("surface energy gamma"), std::string::npos) << e.what();
   }
   p = params();
   p.restitution = 1.5;

@@ -24,7 +24,7 @@ TEST(Jkr, EquilibriumPoint) {
   double h = 1e-6 * p.deltaC, d0 = p.delta_equilibrium();
   double k = (p.force_of_a(p.a_of_delta(d0 + h)) - p.force_of_a(p.a_of_delta(d0 - h))) / (2 * h);
   // Closed form: dF/d(delta) = (dF/da)/(d(delta)/da) = (6 F_C/a0) / (5 a0 / (3 R)) = 1.8 / 6^(1/3) F_C/delta_C
-  // = 0.990578 F_C/delta_C. docs/model.md §A.4 quotes 0.99050 (truncated to 4 digits; 8e-5 below the exact value).
+  // = 0.990578 F_C/delta_C. an earlier version of the specification quoted 0.99050 (truncated to 4 digits; 8e-5 below the exact value).
   EXPECT_NEAR(k / (p.Fc / p.deltaC), 1.8 / std::cbrt(6.0), 1e-8);
   EXPECT_NEAR(k / (p.Fc / p.deltaC), 0.99050, 1e-4);
 }

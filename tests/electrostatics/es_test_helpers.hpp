@@ -1,5 +1,5 @@
 #pragma once
-// Solver-generic checks of MODEL B.4, shared by the spectral/coulomb tests and (later) the BEM
+// Solver-generic checks of docs/model.md §B.4, shared by the spectral/coulomb tests and (later) the BEM
 // tests: every helper takes an es::Solver& and returns numbers or runs gtest expectations with
 // caller-given tolerances.
 #include <gtest/gtest.h>
@@ -15,7 +15,7 @@ namespace agglo::es::testing {
 using constants::eps0;
 using constants::pi;
 
-// MODEL B.4 table: equal spheres of radius R, both kappa_p, charges c1 Q0 and c2 Q0, gap h.
+// docs/model.md §B.4 table: equal spheres of radius R, both kappa_p, charges c1 Q0 and c2 Q0, gap h.
 // value = force on sphere 2 along the line of centres / F0, F0 = Q0^2 / (4 pi eps0 R^2).
 struct TableEntry {
   double kappa, h, c1, c2, value;

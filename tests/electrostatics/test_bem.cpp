@@ -1,4 +1,4 @@
-// BEM solver (MODEL B.2 item 2) against MODEL B.4 and analytic invariants.
+// BEM solver (docs/model.md §B.2 item 2) against docs/model.md §B.4 and analytic invariants.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,7 +32,7 @@ Problem two_spheres(double kp, double h, double c1, double c2) {
   return p;
 }
 
-// Force on sphere 2 along the line of centres in units of F0 = Q0^2/(4 pi eps0 R^2) (MODEL B.4).
+// Force on sphere 2 along the line of centres in units of F0 = Q0^2/(4 pi eps0 R^2) (docs/model.md §B.4).
 double force_ratio(const Solution& s) { return s.force[1].x / (Q0 * Q0 / (4 * pi * eps0 * R * R)); }
 
 double solve_ratio(double kp, double h, double c1, double c2, int ppp) {
@@ -42,7 +42,7 @@ double solve_ratio(double kp, double h, double c1, double c2, int ppp) {
 
 }  // namespace
 
-// MODEL B.4 table, 2000 patches per sphere, gaps >= 0.1 R: within 3 % (issue 3 acceptance).
+// docs/model.md §B.4 table, 2000 patches per sphere, gaps >= 0.1 R: within 3 % (issue 3 acceptance).
 TEST(Bem, TwoSphereTableWithin3Percent) {
   struct Entry {
     double kp, h, c1, c2, ref;
@@ -100,7 +100,7 @@ TEST(Bem, NetChargeOfEachBodyExact) {
   }
 }
 
-// Dielectric sphere in a uniform field (MODEL B.4): sigma_b = 3 eps0 E0 cos(t) (k-1)/(k+2),
+// Dielectric sphere in a uniform field (docs/model.md §B.4): sigma_b = 3 eps0 E0 cos(t) (k-1)/(k+2),
 // dipole p = 4 pi eps0 R^3 (k-1)/(k+2) E0, net force Q E0, torque zero about the centre.
 TEST(Bem, DielectricSphereInUniformField) {
   const double kp = 5.0, E0 = 2e5;

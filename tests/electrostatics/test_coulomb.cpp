@@ -1,4 +1,4 @@
-// Coulomb solver: exact for kappa_p = kappa_0 (MODEL B.2 item 1), and equal to the spectral
+// Coulomb solver: exact for kappa_p = kappa_0 (docs/model.md §B.2 item 1), and equal to the spectral
 // solver (which is exact there too) for random configurations.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// [electrostatics] parsing, defaults, range checks, and the min-gap radius helper (MODEL B.3).
+// [electrostatics] parsing, defaults, range checks, and the min-gap radius helper (docs/model.md §B.3).
 #include <gtest/gtest.h>
 
 #include "agglo/core/config.hpp"

@@ -1,4 +1,4 @@
-// Spectral solver against MODEL B.4: the reference table, the independent two-sphere reference,
+// Spectral solver against docs/model.md §B.4: the reference table, the independent two-sphere reference,
 // BSL App. C, the unequal-sphere value, uniform field, invariants (Newton 3, F = -dU/dx, net
 // charge, zero torque).
 #include <gtest/gtest.h>
@@ -40,7 +40,7 @@ double reference_table_force(double kappa, double h, double c1, double c2, int N
 }  // namespace
 
 TEST(TwoSphereReference, ReproducesTable) {
-  // The independent reference must itself reproduce MODEL B.4 to the printed digits.
+  // The independent reference must itself reproduce docs/model.md §B.4 to the printed digits.
   for (const auto& e : model_b4_table()) {
     int N = e.h >= 1 ? 40 : (e.h >= 0.1 ? 80 : 160);
     double f = reference_table_force(e.kappa, e.h, e.c1, e.c2, N);

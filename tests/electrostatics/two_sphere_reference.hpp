@@ -2,7 +2,7 @@
 // Test-side INDEPENDENT reference for two dielectric spheres on a common axis (no applied field):
 // zonal Legendre expansion of each sphere's total surface charge density,
 //   sigma_i(theta_i) = sum_n s_i^n P_n(cos theta_i),   n = 0..N,
-// and BSL's projected equation for each sphere and degree l (MODEL B.2 item 3, m = 0):
+// and BSL's projected equation for each sphere and degree l (docs/model.md §B.2 item 3, m = 0):
 //   [(k0 (l+1) + k_i l)/(2l+1)] s_i^l - (k0 - k_i) (l / a_i) c_i^l = sigma_f,i delta_l0 ,
 // where c_i^l = (2l+1)/2 \int phi_other(a_i, mu) P_l(mu) dmu / eps0 is the Legendre coefficient
 // of the other sphere's potential on sphere i, obtained by Gauss-Legendre quadrature of the

@@ -1,4 +1,4 @@
-// Electrostatics-DEM coupling (MODEL.md B.3): the pair-corrected hold is exact for an isolated pair
+// Electrostatics-DEM coupling (docs/model.md §B.3): the pair-corrected hold is exact for an isolated pair
 // and keeps action-reaction; the coulomb fast path is exact for kappa_p = kappa_0; the break-up
 // classification of hand-made states.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #pragma once
-// Diagnostics of a sampled state (MODEL C.6):
+// Diagnostics of a sampled state (docs/model.md §C.6):
 //  - number concentrations by phase (sum of weights / box volume) [1/m^3];
 //  - fine efficiency eta(t) = (N_f,0 - N_f(t)) / N_f,0 where N_f counts particles without liquid
 //    (decision: "fine" = solid phase);

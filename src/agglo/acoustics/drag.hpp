@@ -1,5 +1,5 @@
 #pragma once
-// Particle motion in the sound field (MODEL C.2; seed eqs. 3-5):
+// Particle motion in the sound field (docs/model.md §C.2; seed eqs. 3-5):
 //   m dv/dt = 3 pi mu_g d (u_g - v) C_I / C_c + (rho - rho_g) pi d^3 g / 6
 // i.e. dv/dt = (u_g - v)/tau_e + a,  tau_e = tau / C_I,  a = -g (rho - rho_g)/rho e_z.
 // Integrators over a step h:

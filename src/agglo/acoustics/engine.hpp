@@ -1,5 +1,5 @@
 #pragma once
-// DSMC acoustic agglomeration engine (MODEL Part C): sampled particles in a periodic box,
+// DSMC acoustic agglomeration engine (docs/model.md Part C): sampled particles in a periodic box,
 // motion in the sound field (drag.hpp) over each collision step dt_c, then binning into cells
 // and one modified-Nanbu collision step per cell (nanbu.hpp). Cells run in parallel (OpenMP);
 // every random draw comes from a counter-based stream keyed by (seed, cell, step) or

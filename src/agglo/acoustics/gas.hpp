@@ -1,5 +1,5 @@
 #pragma once
-// Carrier gas (air) properties from temperature and pressure (MODEL C.1; seed 002 section 2.1).
+// Carrier gas (air) properties from temperature and pressure (docs/model.md §C.1; seed 002 section 2.1).
 //   rho_g = P M / (R T)                          ideal gas                         [kg/m^3]
 //   c     = sqrt(1.4 R T / M)                    speed of sound                    [m/s]
 //   mu_g  = 1.716e-5 (T/273.15)^1.5 (273.15+110.4)/(T+110.4)   Sutherland          [Pa s]

@@ -8,6 +8,7 @@
 #include "agglo/acoustics/merge.hpp"
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
+#include "agglo/core/settings_acoustic.hpp"
 #include "agglo/core/rng.hpp"
 
 namespace agglo::acoustics {
@@ -322,12 +323,14 @@ void CellCollision::subcycled_trials(std::size_t i) {
     double nsub = std::max(1.0, std::ceil(pn_full * (1.0 + 1e-12)));
     if (nsub > 1.0 && ctx.strict)
       throw NumericalError(fmt::format("step {}: Nanbu bound P_ij <= 1/N violated in cell {} for particle {} "
-                                       "(N P = {:.3g}) and time.nanbu_guard = \"strict\"",
-                                       step, cell, p.id[i], pn_full));
+                                       "(N P = {:.3g}) and {} = \"strict\"",
+                                       step, cell, p.id[i], pn_full,
+                                       settings::acoustic_settings().time.nanbu_guard.dotted()));
     if (intervals + nsub > static_cast<double>(ctx.max_subcycles))
       throw NumericalError(fmt::format("step {}: Nanbu bound cannot be met in cell {} for particle {}: needs "
-                                       "{:.3g} sub-cycles > time.max_subcycles = {}",
-                                       step, cell, p.id[i], nsub, ctx.max_subcycles));
+                                       "{:.3g} sub-cycles > {} = {}",
+                                       step, cell, p.id[i], nsub,
+                                       settings::acoustic_settings().time.max_subcycles.dotted(), ctx.max_subcycles));
     const double h = remaining / nsub;
     const double pbound = B * cb.w_max * h / (2.0 * Vc);
     // Trials of length h until a collision changes i (then the bound is recomputed).

@@ -1,5 +1,5 @@
 #pragma once
-// Modified Nanbu collision step of one cell (MODEL C.4; seed eqs. 6, 12; Tsuji et al. 1998).
+// Modified Nanbu collision step of one cell (docs/model.md §C.4; seed eqs. 6, 12; Tsuji et al. 1998).
 // For each sample i of a cell with N live samples: R uniform in [0,1), candidate j = int(R N),
 // collide iff R > (j+1)/N - P_ij. This gives probability exactly P_ij per partner only while
 // P_ij <= 1/N.

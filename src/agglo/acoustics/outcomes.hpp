@@ -1,5 +1,5 @@
 #pragma once
-// Collision outcomes (MODEL C.5; seed section 2.4, eqs. 13-14, 22-24).
+// Collision outcomes (docs/model.md §C.5; seed section 2.4, eqs. 13-14, 22-24).
 //  - any pair with a pure droplet: coalescence;
 //  - solid-solid ("dry"): coalesce iff |G.n| <= v_cr,dry (Sgrott & Sommerfeld 2019, eq. 13)
 //      v_cr,dry = A sqrt(1-e^2) / (pi d_min z0^2 e^2 sqrt(6 p_c rho_min (1 + d_min/d_max)));

@@ -1,5 +1,5 @@
 #pragma once
-// Initial sampled populations (MODEL C.6).
+// Initial sampled populations (docs/model.md §C.6).
 //  - lognormal (d_g, sigma_g): K log-spaced bins on [d_g sigma_g^-3.5, d_g sigma_g^3.5], equal numbers
 //    of samples per bin, bin number from the lognormal integral (renormalised to the truncated
 //    range so that sum w = N_tot V); diameters at stratified quantiles of the lognormal within the bin.

@@ -9,6 +9,7 @@
 
 #include "agglo/acoustics/engine.hpp"
 #include "agglo/core/error.hpp"
+#include "agglo/core/settings_acoustic.hpp"
 
 namespace agglo::acoustics {
 
@@ -173,6 +174,7 @@ class Observer {
 }  // namespace
 
 void check_startup(const AcousticCase& c, const Engine& e) {
+  const auto& K = settings::acoustic_settings().time;
   const auto& s = c.engine;
   const SampleSet& p = e.particles();
   if (s.motion.integrator == Integrator::explicit_euler) {
@@ -184,21 +186,21 @@ void check_startup(const AcousticCase& c, const Engine& e) {
         imin = i;
       }
     if (s.motion_dt >= 2.0 * tmin)
-      throw ConfigError(fmt::format("{}: key 'time.motion_dt' = {:g}: the explicit integrator is unstable for "
+      throw ConfigError(fmt::format("{}: key '{}' = {:g}: the explicit integrator is unstable for "
                                     "motion_dt >= 2 tau; particle {} (d = {:.4g} m) has tau = {:.4g} s "
                                     "(use integrator = \"exact\" or a smaller step)",
-                                    c.file, s.motion_dt, p.id[imin], p.d[imin], tmin));
+                                    c.file, K.motion_dt.dotted(), s.motion_dt, p.id[imin], p.d[imin], tmin));
   }
   const double pn = e.max_guard_pn();
   if (s.strict_guard && pn > 1.0)
-    throw ConfigError(fmt::format("{}: key 'time.collision_dt' = {:g}: the Nanbu bound P_ij <= 1/N cannot be met "
-                                  "(initial N P_bound = {:.4g}) and time.nanbu_guard = \"strict\"; reduce collision_dt "
+    throw ConfigError(fmt::format("{}: key '{}' = {:g}: the Nanbu bound P_ij <= 1/N cannot be met "
+                                  "(initial N P_bound = {:.4g}) and {} = \"strict\"; reduce collision_dt "
                                   "by {:.3g}x or use nanbu_guard = \"subcycle\"",
-                                  c.file, s.collision_dt, pn, pn));
+                                  c.file, K.collision_dt.dotted(), s.collision_dt, pn, K.nanbu_guard.dotted(), pn));
   if (std::ceil(pn) > static_cast<double>(s.max_subcycles))
-    throw ConfigError(fmt::format("{}: key 'time.max_subcycles' = {}: the Nanbu bound P_ij <= 1/N cannot be met: "
+    throw ConfigError(fmt::format("{}: key '{}' = {}: the Nanbu bound P_ij <= 1/N cannot be met: "
                                   "the initial state needs {:.4g} sub-cycles per collision step",
-                                  c.file, s.max_subcycles, std::ceil(pn)));
+                                  c.file, K.max_subcycles.dotted(), s.max_subcycles, std::ceil(pn)));
 }
 
 AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) {

@@ -3,7 +3,7 @@
 // stands for w_i real particles (integer-valued weight stored as double) that share position,
 // velocity, solid volume, liquid volume and mass. Diameter and density follow from them (seed eqs. 15-16):
 //   d = (6 (V_s + V_l) / pi)^(1/3),  rho = m / (V_s + V_l).
-// Phase (MODEL C.5): solid (V_l = 0), liquid (V_s = 0), mixed (both > 0).
+// Phase (docs/model.md §C.5): solid (V_l = 0), liquid (V_s = 0), mixed (both > 0).
 // Derived per-sample quantities used by motion and kernels are cached and refreshed by
 // `refresh(i, ...)` after every change of size or mass.
 #include <cstdint>
@@ -55,7 +55,5 @@ struct SampleSet {
   double volume(std::size_t i) const { return vol_s[i] + vol_l[i]; }
 };
 
-// Transitional alias for diagnostics.{hpp,cpp} and populations.{hpp,cpp} (other owners); remove it once
-// they spell SampleSet.
 
 }  // namespace agglo::acoustics

@@ -1,5 +1,5 @@
 #pragma once
-// JKR adhesive normal contact (Johnson-Kendall-Roberts; Marshall 2009 J. Comput. Phys. 228, 5466;
+// JKR adhesive normal contact (Johnson-Kendall-Roberts; Marshall 2009 J. Comput. Phys. 228, 1541;
 // docs/model.md §A.2). Units: SI. F > 0 is repulsive.
 //   F_C  = 3 pi gamma R                       pull-off force [N]
 //   a0   = (9 pi gamma R^2 / E*)^(1/3)        equilibrium contact radius [m]

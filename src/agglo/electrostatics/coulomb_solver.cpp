@@ -1,4 +1,4 @@
-// Point-charge solver (MODEL B.2 item 1). See coulomb_solver.hpp.
+// Point-charge solver (docs/model.md §B.2 item 1). See coulomb_solver.hpp.
 #include "agglo/electrostatics/coulomb_solver.hpp"
 
 #include <chrono>

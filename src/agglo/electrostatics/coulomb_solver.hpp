@@ -1,5 +1,5 @@
 #pragma once
-// Point charges, MODEL B.2 item 1: exact when kappa_p = kappa_0 (a uniform shell has the exterior
+// Point charges, docs/model.md §B.2 item 1: exact when kappa_p = kappa_0 (a uniform shell has the exterior
 // field of a point charge). In a medium kappa_0:
 //   F_i = sum_k q_i q_k (x_i - x_k) / (4 pi eps0 kappa_0 |x_i - x_k|^3) + q_i E_ext,   torque 0,
 //   U   = sum_i q_i^2 / (8 pi eps0 kappa_0 a_i) + sum_{i<k} q_i q_k / (4 pi eps0 kappa_0 |x_i - x_k|)

@@ -1,10 +1,10 @@
 #pragma once
-// Electrostatics of charged dielectric spheres: one interface, several solvers (MODEL.md Part B).
+// Electrostatics of charged dielectric spheres: one interface, several solvers (docs/model.md Part B).
 //
 // Input: sphere centres [m], radii [m], free charges q [C] (uniform sigma_f = q/(4 pi r^2)),
 // relative permittivities kappa_p, the medium permittivity kappa_0 and an applied field [V/m].
 // Output: force [N] and torque [N m] on each sphere (about its centre), the energy
-// U = 1/2 \int phi sigma_f dS [J] (MODEL B.1), and solver statistics.
+// U = 1/2 \int phi sigma_f dS [J] (docs/model.md §B.1), and solver statistics.
 //
 // Solvers are selected by name ("coulomb", "spectral", "bem") through make_solver().
 #include <array>

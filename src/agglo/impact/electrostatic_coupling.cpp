@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/core/settings_electrostatics.hpp"
 
 namespace agglo::impact {
 
@@ -45,8 +46,8 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
     prob = es::make_problem(s_.es, x, radius, q, kappa);
   } catch (const NumericalError& e) {
     throw NumericalError(fmt::format("step {}: {} (particle numbers among the charged/dielectric ones; raise "
-                                     "electrostatics.min_gap or lower the impact speed)",
-                                     step, e.what()));
+                                     "{} or lower the impact speed)",
+                                     step, e.what(), settings::electrostatics_settings().solver.min_gap.dotted()));
   }
   auto t0 = std::chrono::steady_clock::now();
   bool uniform = true;

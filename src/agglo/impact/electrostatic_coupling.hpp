@@ -1,5 +1,5 @@
 #pragma once
-// Coupling of an electrostatics solver to the DEM (MODEL.md B.3).
+// Coupling of an electrostatics solver to the DEM (docs/model.md §B.3).
 // * Minimum-gap regularisation: the solver sees spheres of radius r_E = r / (1 + g_min/2) with the
 //   same charges, so touching particles keep a gap of about g_min r and forces stay finite.
 // * Update rule: a new solve runs when some pair's separation vector changed by more than
@@ -12,7 +12,7 @@
 //   1.3-2x smaller force error than "constant" in a charged tetrahedron (kappa 15), exact for a pair.
 // * Optional force scaling chi^(2/5), chi = E_reduced/E_real (for a reduced modulus).
 // * When every particle has kappa_p = kappa_0 there is no polarisation: the exact point-charge
-//   solver is used whatever solver was chosen (MODEL B.2: "the fast path for kappa_p = 1").
+//   solver is used whatever solver was chosen (docs/model.md §B.2: the fast path for kappa_p = 1).
 // * Uncharged particles with kappa_p = kappa_0 (e.g. the neutral projectile) feel and exert no
 //   electrostatic force; they are left out of the solve.
 #include <map>

@@ -8,7 +8,7 @@ double damping_alpha(double e) {
 }
 
 AlphaDamping::AlphaDamping(const ContactParams& p) : alpha_(damping_alpha(p.restitution)) {
-  require(p.restitution > 0.0 && p.restitution <= 1.0, "damping", name, "material.restitution", p.restitution,
+  require(p.restitution > 0.0 && p.restitution <= 1.0, "damping", name, "restitution coefficient e", p.restitution,
           "in (0, 1]");
 }
 

@@ -6,10 +6,10 @@
 
 namespace agglo::dem::contact {
 
-void require(bool ok, std::string_view category, std::string_view model, std::string_view key, double value,
+void require(bool ok, std::string_view category, std::string_view model, std::string_view quantity, double value,
              std::string_view requirement) {
   if (ok) return;
-  throw ConfigError(fmt::format("contact {} model \"{}\": {} = {} must be {}", category, model, key, value,
+  throw ConfigError(fmt::format("contact {} model \"{}\": {} = {} must be {}", category, model, quantity, value,
                                 requirement));
 }
 

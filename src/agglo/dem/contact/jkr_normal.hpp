@@ -1,6 +1,6 @@
 #pragma once
 // Normal sub-model "jkr": JKR adhesion with Marshall's hysteresis (docs/model.md §A.2; Marshall 2009,
-// J. Comput. Phys. 228, 5466). The pair constants F_C, a0, delta_C are in JkrPair (jkr.hpp).
+// J. Comput. Phys. 228, 1541). The pair constants F_C, a0, delta_C are in JkrPair (jkr.hpp).
 //   a(delta)  inverse of delta/delta_C = 6^(1/3) [2 (a/a0)^2 - 4/3 (a/a0)^(1/2)]   [m]
 //   F_ne    = 4 F_C [(a/a0)^3 - (a/a0)^(3/2)]                                       [N], > 0 repulsive
 //   k_N     = 4/3 E* a                                                              [N/m]

@@ -3,7 +3,7 @@
 namespace agglo::dem::contact {
 
 MarshallRolling::MarshallRolling(const ContactParams& p) : theta_crit_(p.rolling_angle) {
-  require(p.rolling_angle > 0.0, "rolling", name, "contact.rolling_angle", p.rolling_angle, "> 0 rad");
+  require(p.rolling_angle > 0.0, "rolling", name, "critical rolling angle", p.rolling_angle, "> 0 rad");
 }
 
 }  // namespace agglo::dem::contact

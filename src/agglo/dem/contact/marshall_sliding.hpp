@@ -1,6 +1,6 @@
 #pragma once
 // Tangential sub-model "marshall": sliding spring with Coulomb limit (Marshall 2009, J. Comput.
-// Phys. 228, 5466; docs/model.md §A.2):
+// Phys. 228, 1541; docs/model.md §A.2):
 //   k_T = 8 G* a [N/m],  eta_T = eta_N [kg/s],  xi_T += v_s dt (kept in the tangent plane) [m]
 //   F_t = -k_T xi_T - eta_T v_s,  |F_t| <= mu_F |F_ne + 2 F_C|  [N]
 // At the limit F_t is scaled back and the spring reset to the length that produces it.

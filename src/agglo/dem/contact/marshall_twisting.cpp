@@ -3,7 +3,7 @@
 namespace agglo::dem::contact {
 
 MarshallTwisting::MarshallTwisting(const ContactParams& p) : mu_(p.friction), gstar_(p.gstar()) {
-  require(p.friction >= 0.0, "twisting", name, "material.friction", p.friction, ">= 0");
+  require(p.friction >= 0.0, "twisting", name, "friction coefficient mu", p.friction, ">= 0");
 }
 
 }  // namespace agglo::dem::contact

@@ -3,7 +3,7 @@
 namespace agglo::dem::contact {
 
 SeedFriction::SeedFriction(const ContactParams& p) : mu_(p.friction) {
-  require(p.friction >= 0.0, "tangential", name, "material.friction", p.friction, ">= 0");
+  require(p.friction >= 0.0, "tangential", name, "friction coefficient mu", p.friction, ">= 0");
 }
 
 }  // namespace agglo::dem::contact

@@ -1,5 +1,5 @@
 #pragma once
-// Choice of the expansion degree L for the spectral solver (MODEL B.2 item 3, B.4).
+// Choice of the expansion degree L for the spectral solver (docs/model.md §B.2 item 3, B.4).
 //
 // For spheres of radii a (centre 0) and b (centre t on the axis) the image charges of the pair
 // accumulate at the two limit points of the coaxal system, x1 x2 = a^2, (t-x1)(t-x2) = b^2.

@@ -1,5 +1,5 @@
 #pragma once
-// Real solid harmonics used by the spectral solver (MODEL B.2 item 3).
+// Real solid harmonics used by the spectral solver (docs/model.md §B.2 item 3).
 //
 // Basis (Schmidt-like, no Condon-Shortley phase), for degree l and order -l <= m <= l:
 //   Y_l^m(theta, phi) = Pt_l^|m|(cos theta) * { cos(m phi)  (m >= 0);  sin(|m| phi)  (m < 0) }

@@ -1,4 +1,4 @@
-// Spectral (spherical-harmonic) solver, MODEL B.2 item 3. See spectral_solver.hpp.
+// Spectral (spherical-harmonic) solver, docs/model.md §B.2 item 3. See spectral_solver.hpp.
 #include "agglo/electrostatics/spectral/spectral_solver.hpp"
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
+#include "agglo/core/settings_electrostatics.hpp"
 #include "agglo/electrostatics/gmres.hpp"
 #include "agglo/electrostatics/spectral/degree.hpp"
 #include "agglo/electrostatics/spectral/harmonics.hpp"
@@ -26,7 +27,7 @@ using constants::pi;
 
 // Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
 // sphere's own potential outside is sum B_lm I_l^m(x - x_i). The external potential at sphere i
-// is sum A_lm R_l^m(x - x_i) with scaled alpha_lm = a^l A_lm [V]. Reaction form (MODEL B.2):
+// is sum A_lm R_l^m(x - x_i) with scaled alpha_lm = a^l A_lm [V]. Reaction form (docs/model.md §B.2):
 //   beta_lm = -gamma_l alpha_lm (l >= 1),  beta_00 = q / (4 pi eps0 kappa0 a).
 class SpectralSolver final : public Solver {
  public:
@@ -222,8 +223,8 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const std::vector
   if (!gr.converged)
     throw NumericalError(fmt::format(
         "spectral: GMRES did not converge in {} iterations (relative residual {:.3g} > {:.3g}); raise "
-        "electrostatics.max_iterations or check the configuration",
-        gr.iterations, gr.residual, tol));
+        "{} or check the configuration",
+        gr.iterations, gr.residual, tol, settings::electrostatics_settings().solver.max_iterations.dotted()));
   return gr;
 }
 

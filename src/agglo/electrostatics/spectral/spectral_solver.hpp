@@ -1,5 +1,5 @@
 #pragma once
-// Spherical-harmonic (multipole) solver for dielectric spheres, MODEL B.2 item 3
+// Spherical-harmonic (multipole) solver for dielectric spheres, docs/model.md §B.2 item 3
 // (Lindgren et al. 2018 J. Comput. Phys. 371, 712; reaction form of BSL's equation).
 //
 // Each sphere's surface charge is expanded in real spherical harmonics up to degree L

@@ -1,5 +1,5 @@
 #pragma once
-// Axial multipole-to-local translation (basis of harmonics.hpp), MODEL B.2 item 3.
+// Axial multipole-to-local translation (basis of harmonics.hpp), docs/model.md §B.2 item 3.
 //
 // A source expansion phi = sum_nm B_nm I_n^m(x - c) about c = +t z (t > 0) has the local
 // expansion phi = sum_jm A_jm R_j^m(x) about the origin with (same m, |m| <= j, n)
