@@ -20,7 +20,7 @@ Sampled sample(Distribution dist, long samples, double conc, bool conserving) {
   dom.L[1] = dom.L[2] = 0.01;
   dom.cells[0] = 100;
   PopulationSpec s;
-  s.name = "t";
+  s.name = std::string(1, 't');  // (a literal here trips GCC 12's false -Wrestrict, PR 105329)
   s.phase = Phase::liquid;
   s.distribution = dist;
   s.diameter = 30e-6;

@@ -152,3 +152,16 @@ TEST(Vcrit, SpeedsTriedDoNotDependOnThreads) {
   EXPECT_LE(a.v_crit - 0.3, spec.tolerance);
   EXPECT_EQ(a.rounds, b.rounds);
 }
+
+TEST(Ensemble, ErrorNamesTheFailedJobAndKeepsItsType) {
+  auto jobs = square_jobs(4);
+  jobs[1].run = [](const JobContext&) -> nlohmann::json { throw NumericalError("energy explosion"); };
+  jobs[3].run = [](const JobContext&) -> nlohmann::json { throw NumericalError("NaN"); };
+  const auto out = run_jobs(jobs, {2});
+  try {
+    rethrow_first_error(out, &jobs);
+    FAIL() << "no error thrown";
+  } catch (const NumericalError& e) {
+    EXPECT_EQ(std::string(e.what()), "job 'job 1' (2 of 4 jobs failed; the others completed): energy explosion");
+  }
+}

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <thread>
 
+#include <fmt/format.h>
 #include <omp.h>
 
 #include "agglo/core/error.hpp"
@@ -71,18 +72,55 @@ std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOpt
   return out;
 }
 
-void rethrow_first_error(const std::vector<JobOutcome>& outcomes) {
-  for (const auto& o : outcomes) {
-    if (!o.error) continue;
-    try {
-      std::rethrow_exception(o.error);
-    } catch (const InterruptedError&) {
-      throw;
-    } catch (...) {
-    }
+namespace {
+
+template <class E>
+[[noreturn]] void throw_with(const E&, const std::string& message) {
+  throw E(message);
+}
+
+// Rethrows `error` with `prefix` before its message, keeping the error type.
+[[noreturn]] void rethrow_prefixed(const std::exception_ptr& error, const std::string& prefix) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const InterruptedError& e) {
+    throw_with(e, prefix + e.what());
+  } catch (const ConfigError& e) {
+    throw_with(e, prefix + e.what());
+  } catch (const NumericalError& e) {
+    throw_with(e, prefix + e.what());
+  } catch (const std::exception& e) {
+    throw std::runtime_error(prefix + e.what());
   }
-  for (const auto& o : outcomes)
-    if (o.error) std::rethrow_exception(o.error);
+}
+
+bool is_interruption(const std::exception_ptr& e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const InterruptedError&) {
+    return true;
+  } catch (...) {
+    return false;
+  }
+}
+
+}  // namespace
+
+void rethrow_first_error(const std::vector<JobOutcome>& outcomes, const std::vector<Job>* jobs) {
+  std::size_t failed = 0, first = outcomes.size();
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    if (!outcomes[i].error) continue;
+    ++failed;
+    if (first == outcomes.size() || (is_interruption(outcomes[i].error) && !is_interruption(outcomes[first].error)))
+      first = i;
+  }
+  if (failed == 0) return;
+  const auto& error = outcomes[first].error;
+  if (!jobs || is_interruption(error) || (*jobs)[first].key.empty()) std::rethrow_exception(error);
+  const std::string more = failed > 1 ? fmt::format(" ({} of {} jobs failed; the others completed)", failed,
+                                                    outcomes.size())
+                                      : std::string();
+  rethrow_prefixed(error, fmt::format("job '{}'{}: ", (*jobs)[first].key, more));
 }
 
 }  // namespace agglo::run

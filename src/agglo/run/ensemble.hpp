@@ -45,8 +45,10 @@ struct EnsembleOptions {
 std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOptions& opt);
 
 // Rethrows the error of the first failed job in index order (InterruptedError first if any job was
-// cancelled, so that an interruption is reported as such).
-void rethrow_first_error(const std::vector<JobOutcome>& outcomes);
+// cancelled, so that an interruption is reported as such). With `jobs`, the message is prefixed by
+// the failed job's key ("job 'v=0.18 offset=0.05': ...") and says how many jobs failed; the error
+// type (ConfigError, NumericalError, InterruptedError) is kept.
+void rethrow_first_error(const std::vector<JobOutcome>& outcomes, const std::vector<Job>* jobs = nullptr);
 
 // Total threads to use: `requested` if > 0, else all cores.
 int resolve_threads(int requested);

@@ -20,7 +20,7 @@ impact::ImpactBatch impact_batch(const impact::ImpactCase& c, const dem::Particl
                       }});
     }
     const auto outcomes = run_jobs(jobs, opt);
-    rethrow_first_error(outcomes);
+    rethrow_first_error(outcomes, &jobs);
     std::vector<impact::ImpactOutcome> out;
     for (const auto& o : outcomes) out.push_back(io::outcome_from_json(o.result));
     return out;

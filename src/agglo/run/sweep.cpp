@@ -90,7 +90,7 @@ SweepResult run_sweep(const Command& cmd, const Config& base, const std::vector<
   Journal journal(out.file("journal.jsonl"), hash_hex(std::string(cmd.name()) + "\n" + base.resolved_toml()),
                   ctx.resume);
   const auto outcomes = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), "sweep"});
-  rethrow_first_error(outcomes);
+  rethrow_first_error(outcomes, &jobs);
   for (const auto& o : outcomes) res.summaries.push_back(o.result);
   return res;
 }
