@@ -16,4 +16,11 @@ bash tests/regression/run_cases.sh "$W/build/agglo" . "$W/old"
 bash tests/regression/run_cases.sh build/agglo . "$W/new"
 /usr/bin/python3 tests/regression/checksums.py "$W/old" > "$W/old.sums"
 echo "comparing current build against $REF:"
-/usr/bin/python3 tests/regression/checksums.py "$W/new" --compare "$W/old.sums"
+rc=0
+/usr/bin/python3 tests/regression/checksums.py "$W/new" --compare "$W/old.sums" | tee "$W/report" || rc=$?
+# Show what differs in each differing text file (the raw files; timing fields are not stripped here).
+sed -n 's/^differs: //p' "$W/report" | while read -r f; do
+  echo "--- $f"
+  diff "$W/old/$f" "$W/new/$f" | head -6
+done
+exit $rc
