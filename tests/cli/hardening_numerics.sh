@@ -59,6 +59,6 @@ expect 2 "vcrit.tolerance" vcrit "$TET" --set vcrit.tolerance=1e-17
 # Item 2: the total cell count is a 64-bit product, capped.
 short=(--set time.end=0.001 --set "output.psd_times=[0.0,0.001]" --set "output.snapshot_times=[0.0]" --set output.plots=false)
 expect 2 "domain.cells_z" acoustic "$ACO" "${short[@]}" --set domain.cells_y=65536 --set domain.cells_z=65536
-expect 2 "cells" acoustic "$ACO" "${short[@]}" --set domain.cells_x=100000
+expect 2 "1000000000000 cells" acoustic "$ACO" "${short[@]}" --set domain.cells_y=100000 --set domain.cells_z=100000
 expect 2 "214748828100" acoustic "$ACO" "${short[@]}" --set domain.cells_y=46341 --set domain.cells_z=46341
 echo "all hardening checks passed"
