@@ -134,6 +134,11 @@ double parse_populations(const ConfigSection& root, EngineSettings& e) {
 
 void check_cells(const settings::AcousticSettings::Domain& k, const ConfigSection& dm, const EngineSettings& e,
                  double dmax) {
+  const std::int64_t cells = e.motion.domain.num_cells();
+  if (cells > kMaxCells)
+    k.cells_x.reject(dm, fmt::format("gives {} x {} x {} = {} cells ({}, {}, {}), more than the limit of {} cells",
+                                     e.motion.domain.cells[0], e.motion.domain.cells[1], e.motion.domain.cells[2],
+                                     cells, k.cells_x.dotted(), k.cells_y.dotted(), k.cells_z.dotted(), kMaxCells));
   const settings::Integer* ck[3] = {&k.cells_x, &k.cells_y, &k.cells_z};
   for (int i = 0; i < 3; ++i) {
     const double edge = e.motion.domain.L[i] / e.motion.domain.cells[i];
@@ -141,9 +146,9 @@ void check_cells(const settings::AcousticSettings::Domain& k, const ConfigSectio
       ck[i]->reject(dm, fmt::format("gives cell edge {:.4g} m, not larger than the largest particle ({:.4g} m): "
                                     "the cells do not fit", edge, dmax));
   }
-  long total_samples = 0;
+  std::int64_t total_samples = 0;
   for (const auto& p : e.populations) total_samples += p.samples;
-  if (static_cast<long>(e.motion.domain.num_cells()) > std::max<long>(1, total_samples))
+  if (cells > std::max<std::int64_t>(1, total_samples))
     k.cells_x.reject(dm, fmt::format("gives {} cells for {} sampled particles: the cells do not fit (need at "
                                      "least one sample per cell on average)",
                                      e.motion.domain.num_cells(), total_samples));

@@ -11,6 +11,7 @@
 //    for h < 2 tau_e (the engine checks this).
 //  - none: particles keep their positions and velocities (test kernels).
 #include <cstddef>
+#include <cstdint>
 
 #include "agglo/acoustics/gas.hpp"
 #include "agglo/acoustics/samples.hpp"
@@ -20,12 +21,19 @@ namespace agglo::acoustics {
 
 enum class Integrator { exact, explicit_euler, none };
 
+// Largest total cell count accepted (docs/acoustics.md, "Limits and checks"): cell indices are 32-bit
+// and every cell holds statistics, so 1e8 cells (several GB) is the most a run can afford.
+inline constexpr std::int64_t kMaxCells = 100000000;
+
 struct Domain {
   double L[3] = {0, 0, 0};  // periodic box lengths [m]
   int cells[3] = {1, 1, 1};
   double volume() const { return L[0] * L[1] * L[2]; }
-  double cell_volume() const { return volume() / (cells[0] * cells[1] * cells[2]); }
-  int num_cells() const { return cells[0] * cells[1] * cells[2]; }
+  double cell_volume() const { return volume() / static_cast<double>(num_cells()); }
+  // 64-bit product: parse_acoustic_case refuses more than kMaxCells (so int cell indices are safe).
+  std::int64_t num_cells() const {
+    return static_cast<std::int64_t>(cells[0]) * static_cast<std::int64_t>(cells[1]) * static_cast<std::int64_t>(cells[2]);
+  }
 };
 
 struct Motion {

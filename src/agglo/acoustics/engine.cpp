@@ -181,7 +181,7 @@ void Engine::step() {
   ctx.seed = s_.seed;
   ctx.strict = s_.strict_guard;
   ctx.max_subcycles = s_.max_subcycles;
-  const int nc = s_.motion.domain.num_cells();
+  const int nc = static_cast<int>(s_.motion.domain.num_cells());
   const std::uint64_t st = step_;
   // Exceptions must not leave an OpenMP region: keep the message of the lowest failing cell.
   std::vector<std::string> errors(static_cast<std::size_t>(nc));

@@ -48,7 +48,7 @@ struct ImpactSettings {
 
   struct Time {
     Table t{"time", kImpactCommands, "time stepping and run length"};
-    Real dt{t, {"time.dt", "s", "time step", {}, "0 = T0/steps_per_period"}, 0.0, Range::nonnegative()};
+    Real dt{t, {"time.dt", "s", "time step, at most T0/10", {}, "0 = T0/steps_per_period"}, 0.0, Range::nonnegative()};
     Real steps_per_period{t, {"time.steps_per_period", "", "steps per contact period T0 when dt = 0"}, 50.0,
                           Range::closed(10.0, 1e6)};
     Real after_contact{t, {"time.after_contact", "s", "run time after the first projectile contact"}, 2e-3,
@@ -104,7 +104,7 @@ struct ImpactSettings {
     Real v_min{t, {"vcrit.v_min", "m/s", "lowest speed of the scan"}, 0.02, Range::positive()};
     Real v_max{t, {"vcrit.v_max", "m/s", "highest speed of the scan"}, 0.6, Range::positive()};
     Integer scan_points{t, {"vcrit.scan_points", "", "speeds of the coarse linear scan"}, 12, 3, 1000};
-    Real tolerance{t, {"vcrit.tolerance", "m/s", "bisection tolerance"}, 5e-4, Range::positive()};
+    Real tolerance{t, {"vcrit.tolerance", "m/s", "bisection tolerance, at least 1e-9 v_max"}, 5e-4, Range::positive()};
     Integer points_per_round{t,
                              {"vcrit.points_per_round", "",
                               "speeds tried per bisection round; fixed by configuration so v_crit never depends "

@@ -94,12 +94,12 @@ void DemSystem::step() {
 void DemSystem::check_state() const {
   for (std::size_t q = 0; q < p_.size(); ++q) {
     if (!isfinite(p_.x[q]) || !isfinite(p_.v[q]) || !isfinite(p_.w[q]))
-      throw NumericalError(fmt::format("DEM: non-finite state of particle {} at step {} (t = {:.6g} s); "
+      throw DemInstability(fmt::format("DEM: non-finite state of particle {} at step {} (t = {:.6g} s); "
                                        "reduce the time step",
                                        q, step_, time_));
     // A particle faster than one radius per step has certainly blown up.
     if (norm(p_.v[q]) * dt_ > p_.r[q])
-      throw NumericalError(fmt::format("DEM: particle {} moves more than its radius per step at step {} "
+      throw DemInstability(fmt::format("DEM: particle {} moves more than its radius per step at step {} "
                                        "(|v| = {:.3g} m/s): energy explosion; reduce the time step",
                                        q, step_, norm(p_.v[q])));
   }

@@ -11,8 +11,20 @@
 #include "agglo/dem/external_force.hpp"
 #include "agglo/dem/neighbor_list.hpp"
 #include "agglo/dem/particles.hpp"
+#include "agglo/core/error.hpp"
 
 namespace agglo::dem {
+
+// A blown-up DEM state (non-finite values, a particle crossing its radius in one step, an energy
+// rise): a NumericalError (exit code 3) that callers may extend with the likely input cause.
+struct DemInstability : NumericalError {
+  using NumericalError::NumericalError;
+};
+
+// Largest time step accepted, as a fraction of the reference contact period T0: dt <= T0 / 10, the
+// coarsest step allowed by time.steps_per_period. Above it a contact is resolved by too few steps
+// and velocity Verlet pumps energy into it.
+inline constexpr double kMaxDtOverPeriod = 0.1;
 
 struct DemParams {
   ContactParams contact;
@@ -60,13 +72,16 @@ class DemSystem {
   Vec3 momentum() const;
   Vec3 angular_momentum() const;  // about the origin, spin included
 
+  // Throws DemInstability naming step and particle if a position or velocity is not finite or a
+  // particle moves more than its radius per step. step() calls it every 256 steps; callers call it
+  // before they record or classify a state.
+  void check_state() const;
+
   // Compute forces for the current state without advancing (first call of step() does it).
   void compute_forces();
   JkrPair jkr_for(std::uint32_t i, std::uint32_t j) const;
 
  private:
-  void check_state() const;
-
   Particles p_;
   DemParams params_;
   ContactLaw law_;

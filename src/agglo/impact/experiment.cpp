@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include <fmt/format.h>
+
 #include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/electrostatic_coupling.hpp"
 #include "agglo/core/constants.hpp"
@@ -50,6 +52,15 @@ io::ParticleSnapshot snapshot(const dem::DemSystem& sys) {
   return io::ParticleSnapshot{p.x, p.v, p.w, p.r, p.q, sys.contacts_per_particle()};
 }
 
+// Adds the likely input cause to a DEM blow-up message.
+[[noreturn]] void rethrow_with_cause(const dem::DemInstability& e) {
+  const auto& k = impact_keys();
+  throw dem::DemInstability(fmt::format("{}; likely input cause: {} too large for the contact stiffness, or an extreme "
+                                        "{}, {} or {}",
+                                        e.what(), k.time.dt.dotted(), k.material.density.dotted(),
+                                        k.agglomerate.radius.dotted(), k.projectile.radius.dotted()));
+}
+
 // Broken, every fragment escaping, and every fragment's surfaces at least `min_gap` from the rest
 // (beyond adhesive reach; its kinetic energy already exceeds its electrostatic binding).
 bool clearly_broken(const dem::DemSystem& sys, std::size_t n_agg, double kappa0, double min_gap) {
@@ -64,6 +75,25 @@ bool clearly_broken(const dem::DemSystem& sys, std::size_t n_agg, double kappa0,
         if (in[a] && !in[b] && norm(p.x[a] - p.x[b]) - p.r[a] - p.r[b] < min_gap) return false;
   }
   return true;
+}
+
+dem::Particles relax(const ImpactCase& c) {
+  dem::DemSystem sys(build_agglomerate(c), c.dem);
+  if (!c.electrostatics || c.time.relax_time <= 0.0) return sys.particles();
+  auto es = make_electrostatic_force(c);
+  sys.set_external_force(es.get());
+  auto jkr = sys.jkr_for(0, 1);
+  const double ke_tol = c.time.relax_energy * jkr.Fc * jkr.deltaC;
+  const long max_steps = static_cast<long>(c.time.relax_time / sys.dt());
+  for (long s = 0; s < max_steps; ++s) {
+    sys.step();
+    if (s > 100 && s % 50 == 0 && sys.kinetic_energy() < ke_tol) break;
+  }
+  sys.check_state();
+  dem::Particles p = sys.particles();
+  for (auto& v : p.v) v = {};
+  for (auto& w : p.w) w = {};
+  return p;
 }
 
 }  // namespace
@@ -114,24 +144,20 @@ ImpactOutcome classify(const dem::DemSystem& sys, std::size_t n_agg, double kapp
 }
 
 dem::Particles relaxed_agglomerate(const ImpactCase& c) {
-  dem::DemSystem sys(build_agglomerate(c), c.dem);
-  if (!c.electrostatics || c.time.relax_time <= 0.0) return sys.particles();
-  auto es = make_electrostatic_force(c);
-  sys.set_external_force(es.get());
-  auto jkr = sys.jkr_for(0, 1);
-  const double ke_tol = c.time.relax_energy * jkr.Fc * jkr.deltaC;
-  const long max_steps = static_cast<long>(c.time.relax_time / sys.dt());
-  for (long s = 0; s < max_steps; ++s) {
-    sys.step();
-    if (s > 100 && s % 50 == 0 && sys.kinetic_energy() < ke_tol) break;
+  try {
+    return relax(c);
+  } catch (const dem::DemInstability& e) {
+    rethrow_with_cause(e);
   }
-  dem::Particles p = sys.particles();
-  for (auto& v : p.v) v = {};
-  for (auto& w : p.w) w = {};
-  return p;
 }
 
 namespace {
+
+// Energy watchdog bound (docs/dem.md, "Limits and checks"): kinetic + electrostatic energy may exceed
+// its launch value by at most half the launch energy scale plus kJkrReleasePerParticle F_C delta_C
+// per particle, the most the JKR contacts can release (about 1.5 F_C delta_C per broken contact, at
+// most 6 contacts per particle) with margin. Any larger rise is energy made by the integrator.
+constexpr double kJkrReleasePerParticle = 10.0;
 
 // One run from the launch of the projectile to the classification, in phases: launch (constructor),
 // approach until the projectile first touches, contact phase (after_contact, extended while the
@@ -159,11 +185,18 @@ class ImpactRun {
     ImpactOutcome out;
     out.speed = speed_;
     out.dt = sys_.dt();
-    sys_.compute_forces();  // contacts and electrostatic energy of the launch state
-    record();
-    out.contact = approach();
-    out.t_contact = since_launch();
-    if (out.contact) contact_phase(out);
+    try {
+      sys_.compute_forces();  // contacts and electrostatic energy of the launch state
+      arm_watchdog();
+      record();
+      out.contact = approach();
+      guard();
+      out.t_contact = since_launch();
+      if (out.contact) contact_phase(out);
+      guard();
+    } catch (const dem::DemInstability& e) {
+      rethrow_with_cause(e);
+    }
     out.t_end = since_launch();
     if (auto* ef = dynamic_cast<ElectrostaticForce*>(es_.get())) {
       out.es_solves = ef->solves();
@@ -178,7 +211,39 @@ class ImpactRun {
 
   void step() {
     sys_.step();
+    if (sys_.steps() % 256 == 0) check_energy();
     record();
+  }
+
+  // The state is finite and sane and the energy has not risen beyond the watchdog bound.
+  void guard() const {
+    sys_.check_state();
+    check_energy();
+  }
+
+  double watched_energy() const { return sys_.kinetic_energy() + sys_.external_energy(); }
+
+  void arm_watchdog() {
+    const auto& p = sys_.particles();
+    const std::size_t big = static_cast<std::size_t>(std::max_element(p.r.begin(), p.r.end()) - p.r.begin());
+    const auto jkr = sys_.jkr_for(static_cast<std::uint32_t>(big), static_cast<std::uint32_t>(big));
+    e_launch_ = watched_energy();
+    e_allowed_ = 0.5 * (sys_.kinetic_energy() + std::abs(sys_.external_energy())) +
+                 kJkrReleasePerParticle * jkr.Fc * jkr.deltaC * static_cast<double>(p.size());
+  }
+
+  void check_energy() const {
+    const double e = watched_energy();
+    if (e <= e_launch_ + e_allowed_) return;
+    const auto& p = sys_.particles();
+    std::size_t fast = 0;
+    for (std::size_t q = 1; q < p.size(); ++q)
+      if (!(norm2(p.v[q]) <= norm2(p.v[fast]))) fast = q;
+    throw dem::DemInstability(fmt::format("DEM: energy rise at step {} (t = {:.6g} s): kinetic + electrostatic "
+                                          "energy {:.3g} J exceeds its launch value {:.3g} J by more than {:.3g} J "
+                                          "(fastest particle {}, |v| = {:.3g} m/s)",
+                                          sys_.steps(), sys_.time(), e, e_launch_, e_allowed_, fast,
+                                          norm(p.v[fast])));
   }
 
   // Until the projectile (the last particle) is in contact; false if max_approach passes first.
@@ -206,6 +271,7 @@ class ImpactRun {
     double t_stop = sys_.time() + c_.time.after_contact;
     for (int ext = 0;; ++ext) {
       out.early_stop = run_until(t_stop);
+      guard();
       auto cl = classify(sys_, n_agg_, kappa0_);
       out.broken = cl.broken;
       out.undecided = cl.undecided;
@@ -233,14 +299,17 @@ class ImpactRun {
   void record() {
     if (!rec_) return;
     const double t = since_launch();
-    if (t + 1e-15 >= next_row_) {
+    const bool row_due = t + 1e-15 >= next_row_;
+    const bool snap_due = c_.output.snapshot_interval > 0.0 && t + 1e-15 >= next_snap_;
+    if (row_due || snap_due) guard();
+    if (row_due) {
       const double ues = sys_.external_energy();
       rec_->rows.push_back({t, sys_.kinetic_energy(), ues, u0_ > 0 ? ues / u0_ : 0.0,
                             radius_of_gyration(sys_.particles()), radius_of_gyration(sys_.particles(), n_agg_),
                             sys_.active_contacts()});
       next_row_ += c_.output.timeseries_interval;
     }
-    if (c_.output.snapshot_interval > 0.0 && t + 1e-15 >= next_snap_) {
+    if (snap_due) {
       rec_->snapshots.emplace_back(t, snapshot(sys_));
       next_snap_ += c_.output.snapshot_interval;
     }
@@ -257,6 +326,8 @@ class ImpactRun {
   double kappa0_ = 1.0;  // medium permittivity of the point-charge binding
   double t_launch_ = 0.0;
   double next_row_ = 0.0, next_snap_ = 0.0;
+  double e_launch_ = 0.0;   // kinetic + electrostatic energy at launch [J]
+  double e_allowed_ = 0.0;  // largest rise above it the watchdog accepts [J]
 };
 
 }  // namespace

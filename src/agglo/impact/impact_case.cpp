@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/impact/agglomerate.hpp"
 
 namespace agglo::impact {
 
@@ -52,6 +53,29 @@ void parse_time(const ConfigSection& root, ImpactCase& c) {
   c.time.early_stop_gap = k.early_stop_gap.read(ts);
 }
 
+// [[particles]] entries of a list agglomerate may overlap by at most kMaxListOverlap times the JKR
+// equilibrium overlap delta0 of their pair (touching at delta0 is the rest state); deeper overlaps
+// start with a huge elastic energy (50 % overlap multiplies the kinetic energy by 1e6).
+constexpr double kMaxListOverlap = 2.0;
+
+void check_list_overlaps(const ConfigSection& root, const ImpactCase& c) {
+  const auto& particles = settings::electrostatics_settings().particles.t;
+  const auto& lp = c.agglomerate.particles;
+  const auto& cp = c.dem.contact;
+  for (std::size_t i = 0; i < lp.size(); ++i)
+    for (std::size_t k = i + 1; k < lp.size(); ++k) {
+      const double ri = lp[i].radius, rk = lp[k].radius;
+      const double overlap = ri + rk - norm(lp[i].position - lp[k].position);
+      const double delta0 = dem::JkrPair::make(ri * rk / (ri + rk), cp.estar(), cp.surface_energy).delta_equilibrium();
+      if (!(overlap <= kMaxListOverlap * delta0))
+        particles.fail(root, fmt::format("[[{}]] entries {} and {} overlap by {:.3g} m, more than {:g} x their JKR "
+                                         "equilibrium overlap {:.3g} m; place touching particles at centre distance "
+                                         "{:.6g} m",
+                                         particles.name(), i, k, overlap, kMaxListOverlap, delta0,
+                                         ri + rk - delta0));
+    }
+}
+
 // [agglomerate], [[particles]] (shape = "list") and [projectile].
 void parse_bodies(const ConfigSection& root, ImpactCase& c) {
   const auto& ka = impact_keys().agglomerate;
@@ -83,6 +107,9 @@ void parse_bodies(const ConfigSection& root, ImpactCase& c) {
   p.permittivity = kp.permittivity.read(pj);
 }
 
+// Smallest vcrit.tolerance accepted, relative to vcrit.v_max.
+constexpr double kMinRelativeTolerance = 1e-9;
+
 // [output], [vcrit] and [breakup].
 void parse_searches(const ConfigSection& root, ImpactCase& c) {
   const auto& ko = impact_keys().output;
@@ -97,6 +124,10 @@ void parse_searches(const ConfigSection& root, ImpactCase& c) {
   if (c.vcrit.v_max <= c.vcrit.v_min) kv.v_max.reject(vc, fmt::format("must be larger than {}", kv.v_min.dotted()));
   c.vcrit.scan_points = static_cast<int>(kv.scan_points.read(vc));
   c.vcrit.tolerance = kv.tolerance.read(vc);
+  if (!(c.vcrit.tolerance >= kMinRelativeTolerance * c.vcrit.v_max))
+    kv.tolerance.reject(vc, fmt::format("must be at least {:g} x {} = {:.3g} m/s (bisection below that resolves "
+                                        "nothing physical and approaches the spacing of doubles)",
+                                        kMinRelativeTolerance, kv.v_max.dotted(), kMinRelativeTolerance * c.vcrit.v_max));
   c.vcrit.points_per_round = static_cast<int>(kv.points_per_round.read(vc));
 
   const auto& kb = impact_keys().breakup;
@@ -130,6 +161,22 @@ void parse_coupling(const ConfigSection& root, double real_modulus, ImpactCase& 
   c.electrostatics = c.electrostatics || norm(c.coupling.es.external_field) > 0.0;
 }
 
+// A time step set above dem::kMaxDtOverPeriod T0 (T0 of the launch configuration, agglomerate and
+// projectile) resolves a contact by too few steps: refused before the run.
+void check_time_step(const ConfigSection& root, const ImpactCase& c) {
+  if (c.dem.dt <= 0.0) return;
+  dem::Particles p = build_agglomerate(c);
+  add_projectile(p, c, c.projectile.speed);
+  const double t0 = dem::reference_period(p, c.dem.contact);
+  const double dt_max = dem::kMaxDtOverPeriod * t0;
+  if (!(c.dem.dt <= dt_max)) {
+    const auto& k = impact_keys().time;
+    k.dt.reject(k.t.open(root), fmt::format("must be at most {:.3g} s = T0/{:g} (contact period T0 = {:.3g} s); "
+                                            "set 0 for T0/{}",
+                                            dt_max, 1.0 / dem::kMaxDtOverPeriod, t0, k.steps_per_period.leaf()));
+  }
+}
+
 }  // namespace
 
 ImpactCase parse_impact_case(Config& cfg) {
@@ -141,6 +188,8 @@ ImpactCase parse_impact_case(Config& cfg) {
   parse_bodies(root, c);
   parse_searches(root, c);
   parse_coupling(root, real_modulus, c);
+  check_list_overlaps(root, c);
+  check_time_step(root, c);
   return c;
 }
 

@@ -61,6 +61,13 @@ VcritResult find_vcrit(const VcritSpec& spec, const SpeedBatch& run_batch, const
   while (!update_bracket(spec, res)) {
     std::vector<double> mid(per_round);
     for (int k = 0; k < per_round; ++k) mid[k] = res.lo + (res.hi - res.lo) * (k + 1) / (per_round + 1);
+    // Below the spacing of doubles the midpoints no longer move inside the bracket: stop there.
+    if (std::none_of(mid.begin(), mid.end(), [&](double v) { return v > res.lo && v < res.hi; })) {
+      res.warnings.push_back(fmt::format("bracket [{:.17g}, {:.17g}] m/s cannot shrink further (floating-point "
+                                         "resolution); stopped above the tolerance",
+                                         res.lo, res.hi));
+      break;
+    }
     add(run_batch(mid));
     ++res.rounds;
     if (progress) progress(std::min(0.99, res.rounds / std::max(1.0, expected_rounds)));
