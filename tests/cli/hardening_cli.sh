@@ -66,6 +66,12 @@ err "output folder /proc/x" collide "$DEM" --out /proc/x
 err "output folder /proc/self" collide "$DEM" --out /proc/self
 touch "$T/file"
 err "output folder $T/file/sub" collide "$DEM" --out "$T/file/sub"
+mkdir -p "$T/ro" && chmod 555 "$T/ro"
+if ! touch "$T/ro/probe" 2>/dev/null; then  # root writes anywhere: checked only for other users
+  $A -q --no-plots collide "$DEM" --out "$T/ro" > /dev/null 2> "$T/stderr"
+  [ $? -eq 2 ] && [ "$(wc -l < "$T/stderr")" -eq 1 ] && grep -qF "output folder $T/ro" "$T/stderr" \
+    || fail "read-only folder: $(cat "$T/stderr")"
+fi
 
 # sweep.csv: RFC 4180 quoting of a value holding a quote; plain values stay unquoted.
 $A -q --no-plots sweep "$SRC/cases/electrostatics_two_spheres.toml" --command electrostatics \
