@@ -34,9 +34,9 @@ void run(const SweepArgs& a) {
   agglo::Config base = agglo::cli::load_case(a.common);
   const auto ax = axes(a);
   const auto path = agglo::cli::output_path(a.common, "sweep");
-  const auto cases = agglo::run::sweep_grid(ax);  // ConfigError before the folder is made
+  auto plan = agglo::run::plan_sweep(cmd, base, ax);  // every case validated before the folder is made
   agglo::OutputDir out(path);
-  const auto res = agglo::run::run_sweep(cmd, base, ax, out, agglo::cli::context(a.common));
+  const auto res = agglo::run::run_sweep(cmd, plan, out, agglo::cli::context(a.common));
   std::vector<agglo::io::SweepRow> rows;
   for (std::size_t i = 0; i < res.cases.size(); ++i)
     rows.push_back({res.cases[i].values, res.cases[i].folder, res.summaries[i]});

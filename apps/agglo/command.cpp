@@ -25,12 +25,32 @@ bool& plots_enabled() {
   return on;
 }
 
+namespace {
+// --threads: a whole number >= 0 (0 = all cores); the message names the rule, not a numeric bound.
+CLI::Validator thread_count() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        std::size_t used = 0;
+        long v = -1;
+        try {
+          v = std::stol(s, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != s.size() || v < 0 || v > 100000)
+          return "'" + s + "' is not a whole number of threads from 0 (all cores) to 100000";
+        return {};
+      },
+      "INT>=0");
+}
+}  // namespace
+
 void add_common_options(CLI::App& sub, CommonArgs& args) {
   sub.add_option("case", args.case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
   sub.add_option("-o,--out", args.out, "Output folder (default: results/<case>-<command>)");
   sub.add_option("-s,--set", args.sets, "Override a config key: --set section.key=value (repeatable)")
       ->take_all();
-  sub.add_option("-j,--threads", args.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  sub.add_option("-j,--threads", args.threads, "OpenMP threads (default: all cores)")->check(thread_count());
   sub.add_flag("--resume", args.resume,
                "Reuse the finished jobs recorded in the output folder's journal.jsonl (vcrit, breakup, sweep)");
 }

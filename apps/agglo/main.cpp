@@ -23,20 +23,21 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    int rc = app.exit(e);
-    return rc == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::fprintf(stderr, "agglo: error: %s (see --help)\n", agglo::one_line(e.what()).c_str());
+    return 2;
   } catch (const agglo::ConfigError& e) {
-    std::fprintf(stderr, "agglo: error: %s\n", e.what());
+    std::fprintf(stderr, "agglo: error: %s\n", agglo::one_line(e.what()).c_str());
     return 2;
   } catch (const agglo::NumericalError& e) {
-    std::fprintf(stderr, "agglo: numerical failure: %s\n", e.what());
+    std::fprintf(stderr, "agglo: numerical failure: %s\n", agglo::one_line(e.what()).c_str());
     return 3;
   } catch (const agglo::InterruptedError& e) {
     std::fprintf(stderr, "agglo: %s; finished jobs are kept in the output folder's journal.jsonl, rerun with --resume "
-                 "to continue\n", e.what());
+                 "to continue\n", agglo::one_line(e.what()).c_str());
     return 130;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "agglo: internal error: %s\n", e.what());
+    std::fprintf(stderr, "agglo: internal error: %s\n", agglo::one_line(e.what()).c_str());
     return 1;
   }
   return 0;

@@ -1,7 +1,10 @@
 // Config layer: every kind of bad input gives a one-line ConfigError naming file, key, value and rule.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <unistd.h>
 
 #include "agglo/impact/impact_case.hpp"
 #include "agglo/core/config.hpp"
@@ -88,3 +91,41 @@ TEST(Config, ResolvedConfigHoldsDefaults) {
 }
 
 }  // namespace
+
+// Issue 9 items 1, 11, 13, 14: malformed --set assignments, empty case files, one-line messages.
+TEST(ConfigHardening, WhitespaceKeyIsAnErrorNotACrash) {
+  for (const char* s : {" =5", "\t=5", " \t \n=5", ". =5"})
+    EXPECT_THROW(Config::from_string("").apply_override(s), ConfigError) << s;
+}
+
+TEST(ConfigHardening, TrailingDotAndSecondAssignmentRejected) {
+  EXPECT_THROW(Config::from_string("").apply_override("material.density.=2500"), ConfigError);
+  EXPECT_THROW(Config::from_string("").apply_override(".material.density=2500"), ConfigError);
+  EXPECT_THROW(Config::from_string("").apply_override("material.density=2500\nbogus=1"), ConfigError);
+  EXPECT_THROW(Config::from_string("").apply_override("material.density=2500\n[x]\ny=1"), ConfigError);
+  EXPECT_THROW(Config::from_string("").apply_override("material.name=a\nb c"), ConfigError);
+  auto cfg = Config::from_string("");
+  cfg.apply_override(" material . density = 2500 # comment");
+  EXPECT_NE(cfg.resolved_toml().find("density = 2500"), std::string::npos) << cfg.resolved_toml();
+}
+
+TEST(ConfigHardening, EmptyCaseFileIsAnError) {
+  const auto dir = std::filesystem::temp_directory_path() / ("agglo_empty_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  { std::ofstream(dir / "empty.toml") << ""; }
+  try {
+    Config::load(dir / "empty.toml");
+    ADD_FAILURE() << "an empty case file must be an error";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("empty.toml: empty case file"), std::string::npos) << e.what();
+  }
+  { std::ofstream(dir / "newline.toml") << "\n"; }
+  EXPECT_NO_THROW(Config::load(dir / "newline.toml"));  // an explicit "all defaults" case
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ConfigHardening, OneLineEscapesControlCharacters) {
+  EXPECT_EQ(one_line("a\nb\tc\rd\x1b" "e"), "a\\nb\\tc\\rd\\x1be");
+  EXPECT_EQ(one_line("x\u2028y\u2029z\u0085w"), "x\\u2028y\\u2029z\\u0085w");
+  EXPECT_EQ(one_line("plain é ü"), "plain é ü");
+}

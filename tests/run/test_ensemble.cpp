@@ -11,6 +11,7 @@
 
 #include "agglo/core/error.hpp"
 #include "agglo/impact/vcrit.hpp"
+#include "agglo/io/sweep_table.hpp"
 #include "agglo/run/ensemble.hpp"
 #include "agglo/run/sweep.hpp"
 
@@ -114,6 +115,20 @@ TEST(Sweep, GridIsCartesianLastAxisFastest) {
   EXPECT_THROW(sweep_grid({{" ", {"1"}}}), ConfigError);
   EXPECT_THROW(sweep_grid({}), ConfigError);
   EXPECT_THROW(split_values("1,,2"), ConfigError);
+  EXPECT_THROW(split_values("10e-6,"), ConfigError);
+  EXPECT_THROW(split_values(",10e-6"), ConfigError);
+  EXPECT_THROW(split_values(""), ConfigError);
+  EXPECT_THROW(sweep_grid({{"\t\n", {"1"}}}), ConfigError);
+  EXPECT_EQ(split_values(" 1 ,\t2"), (std::vector<std::string>{"1", "2"}));
+}
+
+TEST(Sweep, CsvFieldsQuotedOnlyWhenNeeded) {
+  EXPECT_EQ(io::csv_field("10e-6"), "10e-6");
+  EXPECT_EQ(io::csv_field("case_00_a"), "case_00_a");
+  EXPECT_EQ(io::csv_field("a,b"), "\"a,b\"");
+  EXPECT_EQ(io::csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
+  EXPECT_EQ(io::csv_field("two\nlines"), "\"two\nlines\"");
+  EXPECT_EQ(io::csv_field("cr\r"), "\"cr\r\"");
 }
 
 TEST(Vcrit, SpeedsTriedDoNotDependOnThreads) {

@@ -97,7 +97,10 @@ Config Config::load(const std::filesystem::path& file) {
   if (!in) throw ConfigError(fmt::format("{}: cannot open case file", file.string()));
   std::stringstream ss;
   ss << in.rdbuf();
-  return from_string(ss.str(), file.string());
+  const std::string text = ss.str();
+  if (text.empty())  // a 0-byte file is a mistake, not "all defaults" (a comment or newline is enough)
+    throw ConfigError(fmt::format("{}: empty case file", file.string()));
+  return from_string(text, file.string());
 }
 
 Config Config::clone() const {
@@ -107,28 +110,45 @@ Config Config::clone() const {
   return c;
 }
 
+namespace {
+// The dotted key of a --set assignment, whitespace removed, split at '.'; every segment non-empty.
+std::vector<std::string> override_key(std::string_view assignment, std::string key) {
+  key.erase(std::remove_if(key.begin(), key.end(), [](unsigned char c) { return std::isspace(c) != 0; }), key.end());
+  if (key.empty())
+    throw ConfigError(fmt::format("--set '{}': expected KEY=VALUE, e.g. --set section.key=value", assignment));
+  std::vector<std::string> parts;
+  for (std::size_t b = 0;;) {
+    const auto dot = key.find('.', b);
+    parts.push_back(key.substr(b, dot == std::string::npos ? std::string::npos : dot - b));
+    if (parts.back().empty()) throw ConfigError(fmt::format("--set '{}': empty key segment", assignment));
+    if (dot == std::string::npos) return parts;
+    b = dot + 1;
+  }
+}
+
+// The TOML value of a --set assignment; a bare word that is not TOML is taken as a string.
+std::unique_ptr<toml::node> override_value(std::string_view assignment, const std::string& value) {
+  toml::table t;
+  try {
+    t = toml::parse("v = " + value);
+  } catch (const toml::parse_error&) {
+    if (std::any_of(value.begin(), value.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; }))
+      throw ConfigError(fmt::format("--set '{}': the value contains a control character", assignment));
+    return std::make_unique<toml::value<std::string>>(value);
+  }
+  if (t.size() != 1 || !t.contains("v"))
+    throw ConfigError(fmt::format("--set '{}': one KEY=VALUE assignment per --set", assignment));
+  return std::unique_ptr<toml::node>(
+      t.get("v")->visit([](auto& n) -> toml::node* { return new std::remove_cvref_t<decltype(n)>(n); }));
+}
+}  // namespace
+
 void Config::apply_override(std::string_view assignment) {
   auto eq = assignment.find('=');
   if (eq == std::string_view::npos || eq == 0)
-    throw ConfigError(fmt::format("--set '{}': expected KEY=VALUE, e.g. --set dem.restitution=0.7", assignment));
-  std::string key(assignment.substr(0, eq));
-  std::string value(assignment.substr(eq + 1));
-  key.erase(std::remove_if(key.begin(), key.end(), ::isspace), key.end());
-
-  std::unique_ptr<toml::node> parsed;
-  try {
-    auto t = toml::parse("v = " + value);
-    parsed.reset(t.get("v")->visit([](auto& n) -> toml::node* { return new std::remove_cvref_t<decltype(n)>(n); }));
-  } catch (const toml::parse_error&) {
-    parsed = std::make_unique<toml::value<std::string>>(value);  // bare word -> string
-  }
-
-  std::vector<std::string> parts;
-  std::stringstream ks(key);
-  for (std::string p; std::getline(ks, p, '.');) {
-    if (p.empty()) throw ConfigError(fmt::format("--set '{}': empty key segment", assignment));
-    parts.push_back(p);
-  }
+    throw ConfigError(fmt::format("--set '{}': expected KEY=VALUE, e.g. --set section.key=value", assignment));
+  const std::vector<std::string> parts = override_key(assignment, std::string(assignment.substr(0, eq)));
+  const std::unique_ptr<toml::node> parsed = override_value(assignment, std::string(assignment.substr(eq + 1)));
   toml::node* cur = tbl_.get();
   for (std::size_t k = 0; k + 1 < parts.size(); ++k) {
     const auto& p = parts[k];

@@ -3,8 +3,10 @@
 // (blow-up detected during a run: NaN, energy explosion, violated probability bound);
 // InterruptedError -> exit code 130 (the run was cancelled, e.g. by Ctrl-C; finished jobs of an
 // ensemble are kept in its journal and `--resume` continues).
+#include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace agglo {
 
@@ -19,5 +21,34 @@ struct NumericalError : std::runtime_error {
 struct InterruptedError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// `text` on one line: control characters (a raw newline, tab, ESC, U+0085...) and the Unicode
+// line and paragraph separators U+2028/U+2029 copied from the input are shown escaped (\n, \t, \x1b, \u2028).
+inline std::string one_line(std::string_view text) {
+  std::string s;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == '\n') s += "\\n";
+    else if (c == '\r') s += "\\r";
+    else if (c == '\t') s += "\\t";
+    else if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      s += buf;
+    } else if (c == 0xc2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) < 0xa0 &&
+               static_cast<unsigned char>(text[i + 1]) >= 0x80) {  // C1 controls, e.g. U+0085 NEL
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned char>(text[++i]));
+      s += buf;
+    } else if (c == 0xe2 && i + 2 < text.size() && static_cast<unsigned char>(text[i + 1]) == 0x80 &&
+               (static_cast<unsigned char>(text[i + 2]) == 0xa8 || static_cast<unsigned char>(text[i + 2]) == 0xa9)) {
+      s += static_cast<unsigned char>(text[i + 2]) == 0xa8 ? "\\u2028" : "\\u2029";
+      i += 2;
+    } else {
+      s += text[i];
+    }
+  }
+  return s;
+}
 
 }  // namespace agglo

@@ -1,5 +1,7 @@
 #include "agglo/io/impact_writers.hpp"
 
+#include <filesystem>
+
 #include <fmt/format.h>
 
 namespace agglo::io {
@@ -14,7 +16,21 @@ void write_timeseries(const OutputDir& out, const Recorder& rec) {
   });
 }
 
+namespace {
+// The snapshots of an earlier run into the same folder (particles.pvd, snapshots/particles_*.vtp), so
+// that a new run with fewer or no snapshots does not leave them beside its own.
+void remove_old_snapshots(const OutputDir& out) {
+  std::error_code ec;
+  std::filesystem::remove(out.file("particles.pvd"), ec);
+  for (const auto& e : std::filesystem::directory_iterator(out.file("snapshots"), ec)) {
+    const auto name = e.path().filename().string();
+    if (name.rfind("particles_", 0) == 0 && e.path().extension() == ".vtp") std::filesystem::remove(e.path(), ec);
+  }
+}
+}  // namespace
+
 void write_snapshots(const OutputDir& out, const Recorder& rec) {
+  remove_old_snapshots(out);
   std::vector<std::pair<double, std::string>> files;
   for (std::size_t k = 0; k < rec.snapshots.size(); ++k) {
     std::string name = fmt::format("snapshots/particles_{:04d}.vtp", k);

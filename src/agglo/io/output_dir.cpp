@@ -1,8 +1,12 @@
 #include "agglo/io/output_dir.hpp"
 
+#include <cerrno>
 #include <chrono>
+#include <csignal>
+#include <cstring>
 #include <ctime>
 #include <fstream>
+#include <sys/types.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -35,10 +39,53 @@ void write_file_atomic(const std::filesystem::path& path, const std::function<vo
   std::filesystem::rename(tmp, path);
 }
 
+namespace {
+// True for "<name>.tmp-<pid>" written by a process that no longer runs.
+bool orphaned_tmp(const std::filesystem::path& p) {
+  const std::string name = p.filename().string();
+  const auto at = name.rfind(".tmp-");
+  if (at == std::string::npos || at + 5 == name.size()) return false;
+  const std::string digits = name.substr(at + 5);
+  if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) return false;
+  const long pid = std::stol(digits);
+  if (pid == static_cast<long>(::getpid())) return false;
+  return ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+}
+
+// Removes the temporary files a killed run left in `dir` and its sub-folders (snapshots/, case_*/).
+void remove_orphaned_tmp(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end;
+  for (; !ec && it != end; it.increment(ec)) {
+    if (it.depth() >= 2) it.disable_recursion_pending();
+    if (it->is_regular_file(ec) && orphaned_tmp(it->path())) fs::remove(it->path(), ec);
+  }
+}
+
+// ConfigError naming the folder and the reason unless a file can be created in it.
+void check_writable(const std::filesystem::path& dir) {
+  const auto probe = dir / fmt::format(".agglo-write-check.tmp-{}", static_cast<long>(::getpid()));
+  errno = 0;
+  std::ofstream f(probe, std::ios::binary | std::ios::trunc);
+  const int err = errno;
+  if (!f)
+    throw ConfigError(fmt::format("output folder {}: cannot write in it: {}", dir.string(),
+                                  err ? std::strerror(err) : "unknown reason"));
+  f.close();
+  std::error_code ec;
+  std::filesystem::remove(probe, ec);
+}
+}  // namespace
+
 OutputDir::OutputDir(std::filesystem::path dir) : dir_(std::move(dir)) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
-  if (ec) throw std::runtime_error(fmt::format("cannot create output folder {}: {}", dir_.string(), ec.message()));
+  if (ec) throw ConfigError(fmt::format("output folder {}: cannot create it: {}", dir_.string(), ec.message()));
+  if (!std::filesystem::is_directory(dir_, ec))
+    throw ConfigError(fmt::format("output folder {}: exists and is not a folder", dir_.string()));
+  check_writable(dir_);
+  remove_orphaned_tmp(dir_);
 }
 
 void OutputDir::write(const std::string& name, const std::function<void(std::ostream&)>& body) const {

@@ -13,7 +13,10 @@ namespace agglo {
 class OutputDir {
  public:
   OutputDir() = default;
-  explicit OutputDir(std::filesystem::path dir);  // creates the folder
+  // Creates the folder; ConfigError (one line naming the folder and the reason) when it cannot be
+  // created or written into. Removes the "*.tmp-<pid>" files of killed runs (pid no longer alive)
+  // from it and its sub-folders.
+  explicit OutputDir(std::filesystem::path dir);
 
   const std::filesystem::path& path() const { return dir_; }
   std::filesystem::path file(const std::string& name) const { return dir_ / name; }

@@ -6,6 +6,13 @@
 
 namespace agglo::io {
 
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string q = "\"";
+  for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + '"';
+}
+
 void flatten_scalars(const nlohmann::json& j, const std::string& prefix,
                      std::vector<std::pair<std::string, double>>& out) {
   if (!j.is_object()) return;
@@ -27,14 +34,14 @@ void write_sweep_table(const OutputDir& out, const std::vector<std::string>& key
   }
   out.write("sweep.csv", [&](std::ostream& os) {
     os << "index";
-    for (const auto& k : keys) os << ',' << k;
+    for (const auto& k : keys) os << ',' << csv_field(k);
     os << ",case";
-    for (const auto& c : cols) os << ',' << c;
+    for (const auto& c : cols) os << ',' << csv_field(c);
     os << '\n';
     for (std::size_t i = 0; i < rows.size(); ++i) {
       os << i;
-      for (const auto& v : rows[i].values) os << ',' << v;
-      os << ',' << rows[i].folder;
+      for (const auto& v : rows[i].values) os << ',' << csv_field(v);
+      os << ',' << csv_field(rows[i].folder);
       for (const auto& c : cols) {
         os << ',';
         auto it = std::find_if(flat[i].begin(), flat[i].end(), [&](const auto& kv) { return kv.first == c; });

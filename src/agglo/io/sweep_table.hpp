@@ -1,6 +1,7 @@
 #pragma once
 // sweep.csv: index, one column per swept key, case folder, then the union of the numeric and boolean
-// scalars of the case summaries (nested objects flattened to "a.b.c"), in first-seen order.
+// scalars of the case summaries (nested objects flattened to "a.b.c"), in first-seen order;
+// fields quoted as RFC 4180 asks.
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,6 +11,9 @@
 #include "agglo/io/output_dir.hpp"
 
 namespace agglo::io {
+
+// One CSV field (RFC 4180): quoted, with '"' doubled, only when it holds a comma, quote or line break.
+std::string csv_field(const std::string& text);
 
 // Flattens numbers/booleans of a JSON object ("a.b.c" keys for nested objects).
 void flatten_scalars(const nlohmann::json& j, const std::string& prefix,

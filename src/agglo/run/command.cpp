@@ -42,8 +42,16 @@ CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::pa
                       const nlohmann::json& extra) {
   const auto start = std::chrono::steady_clock::now();
   cmd.parse(cfg);
+  std::error_code ec;
+  const bool existed = std::filesystem::exists(out_dir, ec);
   const OutputDir out(out_dir);
-  CommandResult res = cmd.run(cfg, out, ctx);
+  CommandResult res;
+  try {
+    res = cmd.run(cfg, out, ctx);
+  } catch (const ConfigError&) {  // input found invalid only by the engine: leave no new empty folder
+    if (!existed && std::filesystem::is_empty(out_dir, ec)) std::filesystem::remove(out_dir, ec);
+    throw;
+  }
   nlohmann::json details = res.details;
   if (!extra.is_null())
     for (auto it = extra.begin(); it != extra.end(); ++it) details[it.key()] = it.value();

@@ -52,7 +52,8 @@ const Command& find_command(std::string_view name);
 std::vector<std::string> command_names();
 
 // parse -> output folder -> run -> config.resolved.toml + run.json. `extra` is merged into run.json's
-// details. The folder is created only after the case has been validated.
+// details. The folder is created only after the case has been validated (and removed again, if new and
+// still empty, when the engine rejects the input with a ConfigError).
 CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
                       const nlohmann::json& extra = {});
 

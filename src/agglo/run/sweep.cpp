@@ -1,7 +1,7 @@
 #include "agglo/run/sweep.hpp"
 
+#include <algorithm>
 #include <cctype>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -12,15 +12,15 @@ namespace agglo::run {
 
 std::vector<std::string> split_values(const std::string& list) {
   std::vector<std::string> v;
-  std::string cur;
-  std::istringstream is(list);
-  while (std::getline(is, cur, ',')) {
-    const auto b = cur.find_first_not_of(" \t"), e = cur.find_last_not_of(" \t");
-    if (b == std::string::npos) throw ConfigError(fmt::format("--values '{}': empty entry", list));
-    v.push_back(cur.substr(b, e - b + 1));
+  for (std::size_t b = 0;;) {
+    const auto comma = list.find(',', b);
+    const std::string cur = list.substr(b, comma == std::string::npos ? std::string::npos : comma - b);
+    const auto first = cur.find_first_not_of(" \t"), last = cur.find_last_not_of(" \t");
+    if (first == std::string::npos) throw ConfigError(fmt::format("--values '{}': empty entry", list));
+    v.push_back(cur.substr(first, last - first + 1));
+    if (comma == std::string::npos) return v;
+    b = comma + 1;
   }
-  if (v.empty()) throw ConfigError("--values: at least one value is required");
-  return v;
 }
 
 namespace {
@@ -38,7 +38,7 @@ std::vector<SweepCase> sweep_grid(const std::vector<SweepAxis>& axes) {
   if (axes.empty()) throw ConfigError("--param: a config key is required (e.g. population.1.diameter)");
   std::size_t n = 1;
   for (const auto& a : axes) {
-    if (a.key.find_first_not_of(" \t") == std::string::npos)
+    if (std::all_of(a.key.begin(), a.key.end(), [](unsigned char c) { return std::isspace(c) != 0; }))
       throw ConfigError("--param: a config key is required (e.g. population.1.diameter)");
     if (a.values.empty()) throw ConfigError(fmt::format("--values for '{}': at least one value is required", a.key));
     n *= a.values.size();
@@ -74,21 +74,25 @@ std::string joined(const std::vector<std::string>& v) {
 }
 }  // namespace
 
-SweepResult run_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes, const OutputDir& out,
-                      const RunContext& ctx) {
+SweepPlan plan_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes) {
+  SweepPlan plan;
+  plan.cases = sweep_grid(axes);
+  for (const auto& c : plan.cases) plan.configs.push_back(case_config(cmd, base, c));
+  plan.journal_key = hash_hex(std::string(cmd.name()) + "\n" + base.resolved_toml());
+  return plan;
+}
+
+SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out, const RunContext& ctx) {
   SweepResult res;
-  res.cases = sweep_grid(axes);
-  std::vector<Config> cfgs;
-  for (const auto& c : res.cases) cfgs.push_back(case_config(cmd, base, c));
+  res.cases = plan.cases;
   std::vector<Job> jobs;
   for (std::size_t i = 0; i < res.cases.size(); ++i)
     jobs.push_back({joined(res.cases[i].assignments), [&, i](const JobContext& jc) {
                       RunContext sub{nullptr, jc.cancel, jc.threads, ctx.resume};
                       nlohmann::json extra = {{"sweep_assignment", joined(res.cases[i].assignments)}};
-                      return execute(cmd, cfgs[i], out.path() / res.cases[i].folder, sub, extra).summary;
+                      return execute(cmd, plan.configs[i], out.path() / res.cases[i].folder, sub, extra).summary;
                     }});
-  Journal journal(out.file("journal.jsonl"), hash_hex(std::string(cmd.name()) + "\n" + base.resolved_toml()),
-                  ctx.resume);
+  Journal journal(out.file("journal.jsonl"), plan.journal_key, ctx.resume);
   const auto outcomes = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), "sweep"});
   rethrow_first_error(outcomes, &jobs);
   for (const auto& o : outcomes) res.summaries.push_back(o.result);

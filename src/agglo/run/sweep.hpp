@@ -36,9 +36,17 @@ struct SweepResult {
   std::vector<nlohmann::json> summaries;  // by case index
 };
 
-// Runs `cmd` for every case of the grid under `out`. Throws the first failure (in case order)
+// The validated cases of a sweep: every case is the base case with its assignments applied and
+// parsed by `cmd` (ConfigError naming the first bad case), before any folder or file is made.
+struct SweepPlan {
+  std::vector<SweepCase> cases;
+  std::vector<Config> configs;  // by case index, not yet parsed (execute parses them)
+  std::string journal_key;      // identifies the base case and command in journal.jsonl
+};
+SweepPlan plan_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes);
+
+// Runs `cmd` for every case of the plan under `out`. Throws the first failure (in case order)
 // after every case has run.
-SweepResult run_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes, const OutputDir& out,
-                      const RunContext& ctx);
+SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out, const RunContext& ctx);
 
 }  // namespace agglo::run
