@@ -28,6 +28,18 @@ std::vector<agglo::run::SweepAxis> axes(const SweepArgs& a) {
   return ax;
 }
 
+// The base case with every default filled in, for the sweep folder's config.resolved.toml. A base that
+// is valid only with the swept values (e.g. a required key given by --param) is kept as written.
+agglo::Config resolved_base(const agglo::run::Command& cmd, const agglo::Config& base) {
+  agglo::Config r = base.clone();
+  try {
+    cmd.parse(r);
+    return r;
+  } catch (const agglo::ConfigError&) {
+    return base.clone();
+  }
+}
+
 void run(const SweepArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   const auto& cmd = agglo::run::find_command(a.command);
@@ -35,6 +47,13 @@ void run(const SweepArgs& a) {
   const auto ax = axes(a);
   const auto path = agglo::cli::output_path(a.common, "sweep");
   auto plan = agglo::run::plan_sweep(cmd, base, ax);  // every case validated before the folder is made
+  const agglo::Config resolved = resolved_base(cmd, base);
+  long long seed = 0;  // of the base case; of the first case when the base alone is not valid
+  try {
+    seed = cmd.seed(base);
+  } catch (const agglo::ConfigError&) {
+    seed = cmd.seed(plan.configs.front());
+  }
   agglo::OutputDir out(path);
   const auto res = agglo::run::run_sweep(cmd, plan, out, agglo::cli::context(a.common));
   std::vector<agglo::io::SweepRow> rows;
@@ -47,7 +66,7 @@ void run(const SweepArgs& a) {
                             {"values", ax.size() == 1 ? nlohmann::json(ax[0].values) : nlohmann::json(a.values)},
                             {"command", a.command}};
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  agglo::run::write_run_files(out, base, "sweep", cmd.seed(base), wall, details);
+  agglo::run::write_run_files(out, resolved, "sweep", seed, wall, details);
   std::vector<std::string> plot_args = keys;
   agglo::cli::run_plot_script("plot_sweep.py", path, plot_args);
 }

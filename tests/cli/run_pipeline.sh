@@ -34,6 +34,9 @@ $A -q --no-plots sweep cases/seed002_integrator_check.toml --command acoustic --
 [ "$(wc -l < "$T/s5/sweep.csv")" -eq 5 ] || fail "grid of 2 x 2 must give 4 rows"
 head -1 "$T/s5/sweep.csv" | grep -q "^index,seed,time.collision_dt,case," || fail "grid header"
 [ -d "$T/s5/case_03_2_5e-4" ] || fail "grid folder name: $(ls "$T/s5")"
+# the sweep folder's config.resolved.toml is the fully resolved base case (as many keys as a case's)
+[ "$(grep -c ' = ' "$T/s5/config.resolved.toml")" -eq "$(grep -c ' = ' "$T/s5/case_00_1_1e-3/config.resolved.toml")" ] \
+  || fail "sweep config.resolved.toml not fully resolved"
 # mismatched --param/--values is bad input
 $A -q sweep $NT --param a.b --values 1 --param c.d --out "$T/bad" > /dev/null 2> "$T/err"
 [ $? -eq 2 ] || fail "mismatched --param/--values must exit 2"
