@@ -71,8 +71,14 @@ run::CancelToken& interrupt_token() {
   static run::CancelToken t;
   return t;
 }
-extern "C" void on_interrupt(int) { interrupt_token().cancel(); }
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void on_interrupt(int sig) {
+  g_signal = sig;
+  interrupt_token().cancel();
+}
 }  // namespace
+
+int interrupt_exit_code() { return 128 + (g_signal != 0 ? static_cast<int>(g_signal) : SIGINT); }
 
 run::RunContext context(const CommonArgs& args) {
   static run::TerminalReporter reporter(quiet());

@@ -34,6 +34,9 @@ std::filesystem::path output_path(const CommonArgs& args, const std::string& com
 // The run context of the CLI: terminal reporter (quiet with -q), Ctrl-C cancels.
 run::RunContext context(const CommonArgs& args);
 
+// Exit code after an interruption: 128 + the signal (130 for SIGINT / Ctrl-C, 143 for SIGTERM).
+int interrupt_exit_code();
+
 // Global switches (-q, --no-plots).
 bool& quiet();
 bool& plots_enabled();

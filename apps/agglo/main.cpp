@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   } catch (const agglo::InterruptedError& e) {
     std::fprintf(stderr, "agglo: %s; finished jobs are kept in the output folder's journal.jsonl, rerun with --resume "
                  "to continue\n", agglo::one_line(e.what()).c_str());
-    return 130;
+    return agglo::cli::interrupt_exit_code();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "agglo: internal error: %s\n", agglo::one_line(e.what()).c_str());
     return 1;

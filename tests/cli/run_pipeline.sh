@@ -65,6 +65,12 @@ kill -INT $pid; wait $pid; rc=$?
 n=$(wc -l < "$T/v/journal.jsonl")
 [ "$n" -lt 120 ] || fail "the interruption came too late to test anything"
 [ "$n" -ge 1 ] || fail "journal empty after interruption"
+# SIGTERM (a batch scheduler's stop) likewise, with exit 143
+$A -q --no-plots vcrit $NT "${VC[@]}" --out "$T/v" --resume > /dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1 100); do [ "$(wc -l < "$T/v/journal.jsonl")" -gt "$n" ] && break; sleep 0.1; done
+kill -TERM $pid; wait $pid; rc=$?
+[ $rc -eq 143 ] || fail "SIGTERM must give exit 143, got $rc"
 $A -q --no-plots vcrit $NT "${VC[@]}" --out "$T/v" --resume > /dev/null 2>&1 || fail "resume vcrit"
 $A -q --no-plots vcrit $NT "${VC[@]}" --out "$T/v2" > /dev/null 2>&1 || fail "plain vcrit"
 cmp -s "$T/v/vcrit.json" "$T/v2/vcrit.json" || fail "resumed vcrit.json differs from an uninterrupted run"
