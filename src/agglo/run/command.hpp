@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "agglo/core/config.hpp"
+#include "agglo/core/settings.hpp"
 #include "agglo/io/output_dir.hpp"
 #include "agglo/run/reporter.hpp"
 
@@ -34,6 +35,12 @@ struct CommandResult {
   std::vector<std::string> plot_args;
 };
 
+// A command-line shortcut for one config key, e.g. `collide --speed V` for projectile.speed.
+struct Shortcut {
+  std::string flags;               // CLI11 flag names, e.g. "-v,--speed"
+  const settings::Setting* key;    // the key it overrides
+};
+
 class Command {
  public:
   virtual ~Command() = default;
@@ -41,6 +48,8 @@ class Command {
   virtual std::string_view help() const = 0;
   // Parses and validates the whole case, unknown keys included; writes defaults into cfg.
   virtual void parse(Config& cfg) const = 0;
+  // Command-line shortcuts for config keys (none by default).
+  virtual std::vector<Shortcut> shortcuts() const { return {}; }
   // The random seed a case runs with (recorded in run.json); 0 for deterministic commands.
   virtual long long seed(const Config& cfg) const;
   // Runs a parsed case and writes the command's own files into `out`.

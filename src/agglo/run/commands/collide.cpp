@@ -1,6 +1,7 @@
 // agglo collide: one particle-agglomerate impact with time series, VTK snapshots and result.json.
 #include <fmt/format.h>
 
+#include "agglo/core/settings_impact.hpp"
 #include "agglo/impact/experiment.hpp"
 #include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
@@ -13,6 +14,9 @@ namespace {
 class Collide final : public ImpactCommand {
  public:
   std::string_view name() const override { return "collide"; }
+  std::vector<Shortcut> shortcuts() const override {
+    return {{"-v,--speed", &settings::impact_settings().projectile.speed}};
+  }
   std::string_view help() const override { return "One particle-agglomerate collision (DEM, optional electrostatics)"; }
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
