@@ -13,7 +13,7 @@ REPS=${REPS:-1}
 mkdir -p "$OUT"
 for r in $(seq 1 "$REPS"); do
   t0=$(date +%s.%N)
-  "$AGGLO" -q --no-plots acoustic "$SRC/cases/seed002_baseline.toml" --out "$OUT/run_$r" "$@"
+  "$AGGLO" -q --no-plots acoustic "$SRC/cases/seed002_baseline.toml" --overwrite --out "$OUT/run_$r" "$@"
   t1=$(date +%s.%N)
   sim=$(/usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(f\"{d['wall_time_s']:.1f} s, fine efficiency {d['fine_efficiency']:.4f}\")" "$OUT/run_$r/summary.json")
   echo "run $r: simulation $sim; process $(/usr/bin/python3 -c "print(f'{$t1-$t0:.1f}')") s"

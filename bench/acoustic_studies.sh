@@ -14,27 +14,27 @@ read -r -a big <<<"${BIG-}"
 mkdir -p "$OUT"
 if [ "$PART" = integrator ] || [ "$PART" = all ]; then
   for s in 1 2 3 4; do
-    "$AGGLO" -q acoustic "$C/seed002_integrator_check.toml" --out "$OUT/int_exact_1e-5_s$s" --set seed=$s -j 1
+    "$AGGLO" -q acoustic "$C/seed002_integrator_check.toml" --overwrite --out "$OUT/int_exact_1e-5_s$s" --set seed=$s -j 1
     for dt in 5e-5 1e-4; do
-      "$AGGLO" -q acoustic "$C/seed002_integrator_check.toml" --out "$OUT/int_exact_${dt}_s$s" --set seed=$s -j 1 \
+      "$AGGLO" -q acoustic "$C/seed002_integrator_check.toml" --overwrite --out "$OUT/int_exact_${dt}_s$s" --set seed=$s -j 1 \
         --set time.collision_dt=$dt --set time.motion_dt=$dt
     done
-    "$AGGLO" -q acoustic "$C/seed002_integrator_check.toml" --out "$OUT/int_explicit_1e-7_s$s" --set seed=$s -j 1 \
+    "$AGGLO" -q acoustic "$C/seed002_integrator_check.toml" --overwrite --out "$OUT/int_explicit_1e-7_s$s" --set seed=$s -j 1 \
       --set 'time.integrator="explicit"' --set time.motion_dt=1e-7
   done
 fi
 if [ "$PART" = diameter ] || [ "$PART" = all ]; then
   "$AGGLO" -q sweep "$C/seed002_droplet_diameter.toml" --param population.1.diameter \
-    --values 0,10e-6,20e-6,30e-6,40e-6,50e-6 --out "$OUT/droplet_diameter" "${big[@]}" -j "${JOBS:-1}"
+    --values 0,10e-6,20e-6,30e-6,40e-6,50e-6 --overwrite --out "$OUT/droplet_diameter" "${big[@]}" -j "${JOBS:-1}"
 fi
 if [ "$PART" = concentration ] || [ "$PART" = all ]; then
   "$AGGLO" -q sweep "$C/seed002_droplet_concentration.toml" --param population.1.number_concentration \
-    --values 0,1e8,5e8,1e9,2e9,3e9,5e9 --out "$OUT/droplet_concentration" "${big[@]}" -j "${JOBS:-1}"
+    --values 0,1e8,5e8,1e9,2e9,3e9,5e9 --overwrite --out "$OUT/droplet_concentration" "${big[@]}" -j "${JOBS:-1}"
 fi
 if [ "$PART" = validation ] || [ "$PART" = all ]; then
   "$AGGLO" -q sweep "$C/seed002_validation.toml" --param population.1.number_concentration --values 0,1e9 \
-    --out "$OUT/validation" "${big[@]}" -j "${JOBS:-1}"
+    --overwrite --out "$OUT/validation" "${big[@]}" -j "${JOBS:-1}"
 fi
 if [ "$PART" = baseline ] || [ "$PART" = all ]; then
-  "$AGGLO" -q acoustic "$C/seed002_baseline.toml" --out "$OUT/baseline" -j "${JOBS:-1}"
+  "$AGGLO" -q acoustic "$C/seed002_baseline.toml" --overwrite --out "$OUT/baseline" -j "${JOBS:-1}"
 fi

@@ -60,7 +60,7 @@ $PY "$SRC/bench/lammps/check_jkr_lammps.py" "$OUT/lammps_jkr_check" | tee "$OUT/
 # 5. v_crit in both codes.
 echo "== agglo vcrit"
 t0=$(date +%s.%N)
-"$AGGLO" -q vcrit "$CASE" "${SETARGS[@]}" --out "$OUT/agglo_vcrit" -j 2 2>/dev/null | tail -3
+"$AGGLO" -q vcrit "$CASE" "${SETARGS[@]}" --overwrite --out "$OUT/agglo_vcrit" -j 2 2>/dev/null | tail -3
 t1=$(date +%s.%N)
 echo "== LAMMPS vcrit (same scan + bisection, 2 lmp processes at a time)"
 $PY "$SRC/bench/lammps/vcrit_lammps.py" "$CASE" "${SETARGS[@]}" --workdir "$OUT/lammps_vcrit" \
@@ -69,7 +69,7 @@ t2=$(date +%s.%N)
 
 # 6. One trajectory in both (v = projectile.speed of the case): kinetic energy history.
 V=$($PY -c "import tomllib,sys; print(tomllib.load(open(sys.argv[1],'rb')).get('projectile',{}).get('speed',0.18))" "$CASE")
-"$AGGLO" collide "$CASE" "${SETARGS[@]}" --speed "$V" --out "$OUT/agglo_collide" -j 1 >/dev/null 2>&1
+"$AGGLO" collide "$CASE" "${SETARGS[@]}" --speed "$V" --overwrite --out "$OUT/agglo_collide" -j 1 >/dev/null 2>&1
 mkdir -p "$OUT/lammps_collide"
 $PY "$SRC/bench/lammps/lmp_case.py" "$CASE" "${SETARGS[@]}" --speed "$V" --workdir "$OUT/lammps_collide" \
     --thermo-every 1 > "$OUT/lammps_collide/result.json"

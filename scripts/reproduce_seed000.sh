@@ -15,15 +15,15 @@ pids=()
 for k in neutral k1 k2p5 k15; do
   if [ $k = neutral ]; then c=cases/seed000_neutral_tetrahedron.toml; else c=cases/seed000_charged_tetrahedron_$k.toml; fi
   echo "== v_crit $k"
-  $A -q --no-plots vcrit "$c" --out "$OUT/vcrit_$k" "$@" &
+  $A -q --no-plots vcrit "$c" --overwrite --out "$OUT/vcrit_$k" "$@" &
   pids+=($!)
 done
 for p in "${pids[@]}"; do wait "$p"; done
 end=$(date +%s)
 echo "== Table 2 wall time: $((end - start)) s"
 echo "== histories (seed Figs. 3d, 4d, 5)"
-$A -q --no-plots collide cases/seed000_neutral_tetrahedron.toml --speed 0.175 --out "$OUT/hist_neutral_0.175" "$@"
+$A -q --no-plots collide cases/seed000_neutral_tetrahedron.toml --speed 0.175 --overwrite --out "$OUT/hist_neutral_0.175" "$@"
 for k in k1 k15; do
-  $A -q --no-plots collide cases/seed000_charged_tetrahedron_$k.toml --speed 0.18 --out "$OUT/hist_${k}_0.18" "$@"
+  $A -q --no-plots collide cases/seed000_charged_tetrahedron_$k.toml --speed 0.18 --overwrite --out "$OUT/hist_${k}_0.18" "$@"
 done
 /usr/bin/python3 scripts/plot_seed000.py "$OUT" "$((end - start))"

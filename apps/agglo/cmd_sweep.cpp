@@ -54,8 +54,20 @@ void run(const SweepArgs& a) {
   } catch (const agglo::ConfigError&) {
     seed = cmd.seed(plan.configs.front());
   }
+  const auto ctx = agglo::cli::context(a.common);
+  agglo::claim_output_folder(path, agglo::run::folder_policy(ctx), "sweep");
   agglo::OutputDir out(path);
-  const auto res = agglo::run::run_sweep(cmd, plan, out, agglo::cli::context(a.common));
+  agglo::run::write_run_started(out, "sweep", base.file());
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  agglo::run::SweepResult res;
+  try {
+    res = agglo::run::run_sweep(cmd, plan, out, ctx);
+  } catch (const std::exception& e) {  // the journal keeps the finished cases; run.json says why it stopped
+    const bool stopped = dynamic_cast<const agglo::InterruptedError*>(&e) != nullptr;
+    agglo::run::write_run_files(out, resolved, "sweep", seed, seconds(), {{stopped ? "interrupted" : "error", e.what()}},
+                                stopped ? "incomplete" : "failed");
+    throw;
+  }
   std::vector<agglo::io::SweepRow> rows;
   for (std::size_t i = 0; i < res.cases.size(); ++i)
     rows.push_back({res.cases[i].values, res.cases[i].folder, res.summaries[i]});
@@ -65,8 +77,7 @@ void run(const SweepArgs& a) {
   nlohmann::json details = {{"param", a.params.size() == 1 ? nlohmann::json(a.params[0]) : nlohmann::json(a.params)},
                             {"values", ax.size() == 1 ? nlohmann::json(ax[0].values) : nlohmann::json(a.values)},
                             {"command", a.command}};
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  agglo::run::write_run_files(out, resolved, "sweep", seed, wall, details);
+  agglo::run::write_run_files(out, resolved, "sweep", seed, seconds(), details);
   std::vector<std::string> plot_args = keys;
   agglo::cli::run_plot_script("plot_sweep.py", path, plot_args);
 }

@@ -51,8 +51,11 @@ void add_common_options(CLI::App& sub, CommonArgs& args) {
   sub.add_option("-s,--set", args.sets, "Override a config key: --set section.key=value (repeatable)")
       ->take_all();
   sub.add_option("-j,--threads", args.threads, "OpenMP threads (default: all cores)")->check(thread_count());
-  sub.add_flag("--resume", args.resume,
-               "Reuse the finished jobs recorded in the output folder's journal.jsonl (vcrit, breakup, sweep)");
+  auto* resume = sub.add_flag("--resume", args.resume,
+                              "Continue the run in the output folder: ensembles (vcrit, breakup, sweep) reuse the "
+                              "finished jobs of its journal.jsonl; single runs start again");
+  sub.add_flag("--overwrite", args.overwrite, "Replace the earlier agglo run in the output folder (clears it)")
+      ->excludes(resume);
 }
 
 Config load_case(const CommonArgs& args) {
@@ -84,7 +87,7 @@ run::RunContext context(const CommonArgs& args) {
   static run::TerminalReporter reporter(quiet());
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
-  return run::RunContext{&reporter, &interrupt_token(), args.threads, args.resume};
+  return run::RunContext{&reporter, &interrupt_token(), args.threads, args.resume, args.overwrite};
 }
 
 void run_plot_script(const std::string& script, const std::filesystem::path& out, const std::vector<std::string>& args) {

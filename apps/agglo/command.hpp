@@ -20,9 +20,10 @@ struct CommonArgs {
   std::vector<std::string> sets;
   int threads = 0;
   bool resume = false;
+  bool overwrite = false;
 };
 
-// Adds CASE.toml, --out, --set, --threads and --resume to a subcommand.
+// Adds CASE.toml, --out, --set, --threads, --resume and --overwrite to a subcommand.
 void add_common_options(CLI::App& sub, CommonArgs& args);
 
 // Loads the case and applies --set overrides (ConfigError on any problem); sets the OpenMP threads.

@@ -1,5 +1,5 @@
 // agglo command-line front end. Exit codes: 0 ok, 1 internal error, 2 bad input, 3 numerical failure,
-// 130 interrupted (Ctrl-C).
+// 130 interrupted by SIGINT (Ctrl-C), 143 by SIGTERM.
 #include <cstdio>
 #include <exception>
 
@@ -33,8 +33,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "agglo: numerical failure: %s\n", agglo::one_line(e.what()).c_str());
     return 3;
   } catch (const agglo::InterruptedError& e) {
-    std::fprintf(stderr, "agglo: %s; finished jobs are kept in the output folder's journal.jsonl, rerun with --resume "
-                 "to continue\n", agglo::one_line(e.what()).c_str());
+    std::fprintf(stderr, "agglo: %s; the results so far are in the output folder, marked incomplete in run.json "
+                 "(ensembles keep their finished jobs in journal.jsonl); rerun with --resume to continue\n",
+                 agglo::one_line(e.what()).c_str());
     return agglo::cli::interrupt_exit_code();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "agglo: internal error: %s\n", agglo::one_line(e.what()).c_str());

@@ -4,4 +4,4 @@
 set -euo pipefail
 A=build/agglo
 echo "== 5. Acoustic agglomeration with droplets: 4 s baseline (efficiency, size distributions, snapshots)"
-$A -q acoustic cases/seed002_baseline.toml --out results/acoustic_baseline
+$A -q acoustic cases/seed002_baseline.toml --overwrite --out results/acoustic_baseline

@@ -81,23 +81,23 @@ sed -n 2p "$T/s/sweep.csv" | grep -q '^0,"""coulomb""",case_00__coulomb_,' || fa
 sed -n 3p "$T/s/sweep.csv" | grep -q '^1,spectral,case_01_spectral,' || fail "plain field: $(sed -n 3p "$T/s/sweep.csv")"
 
 # Item 9: orphaned temporary files of a killed run are removed by the next run into the folder (a
-# live process's are kept); a re-run of collide does not keep the earlier run's snapshots.
+# live process's are kept); a re-run of collide (--overwrite) does not keep the earlier run's snapshots.
 SHORT=(--set time.after_contact=2e-4)
-mkdir -p "$T/c/snapshots"
+mkdir -p "$T/c"
 sleep 60 & LIVE=$!
 DEAD=$(bash -c 'echo $$')
-touch "$T/c/result.json.tmp-$DEAD" "$T/c/snapshots/particles_0000.vtp.tmp-$DEAD" "$T/c/run.json.tmp-$LIVE"
+touch "$T/c/result.json.tmp-$DEAD" "$T/c/run.json.tmp-$LIVE"
 $A -q --no-plots collide "$DEM" --out "$T/c" "${SHORT[@]}" --set output.snapshot_interval=1e-5 > /dev/null 2>&1 \
   || fail "collide with snapshots"
 kill $LIVE
 [ -e "$T/c/result.json.tmp-$DEAD" ] && fail "orphaned tmp file kept"
-[ -e "$T/c/snapshots/particles_0000.vtp.tmp-$DEAD" ] && fail "orphaned tmp file in snapshots/ kept"
 [ -e "$T/c/run.json.tmp-$LIVE" ] || fail "tmp file of a live process removed"
 rm -f "$T/c/run.json.tmp-$LIVE"
+touch "$T/c/snapshots/particles_0000.vtp.tmp-$DEAD"
 n1=$(ls "$T/c/snapshots" | wc -l)
 [ "$n1" -gt 2 ] && [ -s "$T/c/particles.pvd" ] || fail "first run wrote no snapshots"
-$A -q --no-plots collide "$DEM" --out "$T/c" "${SHORT[@]}" --set output.snapshot_interval=0 > /dev/null 2>&1 \
-  || fail "collide re-run"
+$A -q --no-plots collide "$DEM" --out "$T/c" "${SHORT[@]}" --set output.snapshot_interval=0 --overwrite \
+  > /dev/null 2>&1 || fail "collide re-run"
 [ -z "$(ls -A "$T/c/snapshots" 2>/dev/null)" ] || fail "stale snapshots kept: $(ls "$T/c/snapshots" | head -3)"
 [ -e "$T/c/particles.pvd" ] && fail "stale particles.pvd kept"
 [ -s "$T/c/result.json" ] || fail "re-run lacks result.json"

@@ -28,11 +28,13 @@ expect() {
 # Item 3: the time step above T0/10 is refused before the run (dt = 1e-6 s is about one contact period).
 expect 2 "time.dt" collide "$TET" --set time.dt=1e-6
 expect 2 "time.dt" collide "$TET" --set time.dt=1e300
+# Values outside the physically plausible range are refused naming their own key (item 12).
+expect 2 "material.density' = 1e+300" collide "$TET" --set material.density=1e300
+expect 2 "projectile.radius' = 1e+300" collide "$TET" --set projectile.radius=1e300
 # Blow-ups are detected before anything non-finite is recorded; the message names step, particle
-# and the likely input cause.
-expect 3 "particle" collide "$TET" --set material.density=1e300
-expect 3 "time.dt" collide "$TET" --set material.density=1e300
-expect 3 "particle" collide "$TET" --set projectile.radius=1e300
+# and the likely input cause (1000 m/s moves the projectile more than its radius per step).
+expect 3 "particle 4" collide "$TET" --set projectile.speed=1000
+expect 3 "time.dt" collide "$TET" --set projectile.speed=1000
 # A time step just below the limit still runs and stays finite (no false alarm of the watchdog).
 rm -rf "$T/ok"
 "$A" -q collide "$TET" --out "$T/ok" --set time.steps_per_period=10 --set time.after_contact=2e-4 \
@@ -61,4 +63,15 @@ short=(--set time.end=0.001 --set "output.psd_times=[0.0,0.001]" --set "output.s
 expect 2 "domain.cells_z" acoustic "$ACO" "${short[@]}" --set domain.cells_y=65536 --set domain.cells_z=65536
 expect 2 "1000000000000 cells" acoustic "$ACO" "${short[@]}" --set domain.cells_y=100000 --set domain.cells_z=100000
 expect 2 "214748828100" acoustic "$ACO" "${short[@]}" --set domain.cells_y=46341 --set domain.cells_z=46341
+# Item 12: errors name the real key. Out-of-range inputs are refused at their own key; a collision step
+# the sampled state cannot meet names time.collision_dt and the population that needs the sub-cycles; a
+# particle larger than the cells names its population.
+expect 2 "population.1.density' = 1e+300" acoustic "$ACO" "${short[@]}" --set population.1.density=1e300
+expect 2 "population.1.number_concentration' = 1e+300" acoustic "$ACO" "${short[@]}" \
+  --set population.1.number_concentration=1e300
+expect 2 "population.1.diameter' = 1e+300" acoustic "$ACO" "${short[@]}" --set population.1.diameter=1e300
+expect 2 "time.collision_dt' = 1e+300" acoustic "$ACO" "${short[@]}" --set time.collision_dt=1e300 --set time.end=1e300
+expect 2 "time.collision_dt' = 5e-05: the Nanbu bound P_ij <= 1/N needs" acoustic "$ACO" "${short[@]}" \
+  --set time.collision_dt=5e-5 --set time.motion_dt=5e-5 --set population.1.number_concentration=1e19
+expect 2 "population 'droplets'" acoustic "$ACO" "${short[@]}" --set population.1.diameter=9e-3
 echo "all hardening checks passed"

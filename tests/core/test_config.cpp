@@ -48,7 +48,7 @@ TEST(Config, WrongType) {
 }
 
 TEST(Config, OutOfRangeAndNonFinite) {
-  expect_has(error_of("[agglomerate]\nradius = -1e-6\n"), {"agglomerate.radius", "-1e-06", "(0, inf) m"});
+  expect_has(error_of("[agglomerate]\nradius = -1e-6\n"), {"agglomerate.radius", "-1e-06", "(0, 0.1] m"});
   expect_has(error_of("[material]\nrestitution = 1.5\n"), {"material.restitution", "1.5", "(0, 1]"});
   expect_has(error_of("[material]\nrestitution = 0.0\n"), {"material.restitution", "(0, 1]"});
   expect_has(error_of("[material]\nyoungs_modulus = nan\n"), {"material.youngs_modulus", "nan", "finite"});

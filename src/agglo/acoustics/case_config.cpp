@@ -111,6 +111,16 @@ void parse_time(const ConfigSection& root, EngineSettings& e) {
   e.max_subcycles = static_cast<std::uint64_t>(k.max_subcycles.read(ti));
 }
 
+// Largest diameter a population can hold at the start [m] (lognormal: d_g sigma_g^3.5).
+double largest_diameter(const PopulationSpec& p) {
+  double d = 0.0;
+  if (p.distribution == Distribution::monodisperse) d = p.diameter;
+  if (p.distribution == Distribution::lognormal) d = p.geometric_mean_diameter * std::pow(p.geometric_std, 3.5);
+  if (p.distribution == Distribution::table)
+    for (double x : p.table_diameters) d = std::max(d, x);
+  return d;
+}
+
 // [[population]]; returns the largest particle diameter [m].
 double parse_populations(const ConfigSection& root, EngineSettings& e) {
   const auto& table = keys().population.t;
@@ -122,11 +132,7 @@ double parse_populations(const ConfigSection& root, EngineSettings& e) {
     const bool empty = p.number_concentration == 0.0 ||
                        (p.distribution == Distribution::monodisperse && p.diameter == 0.0);
     if (empty) continue;  // a population with no particles (e.g. the "0 um" / "0 cm^-3" sweep point)
-    if (p.distribution == Distribution::monodisperse) dmax = std::max(dmax, p.diameter);
-    if (p.distribution == Distribution::lognormal)
-      dmax = std::max(dmax, p.geometric_mean_diameter * std::pow(p.geometric_std, 3.5));
-    if (p.distribution == Distribution::table)
-      for (double d : p.table_diameters) dmax = std::max(dmax, d);
+    dmax = std::max(dmax, largest_diameter(p));
     e.populations.push_back(p);
   }
   return dmax;
@@ -142,9 +148,13 @@ void check_cells(const settings::AcousticSettings::Domain& k, const ConfigSectio
   const settings::Integer* ck[3] = {&k.cells_x, &k.cells_y, &k.cells_z};
   for (int i = 0; i < 3; ++i) {
     const double edge = e.motion.domain.L[i] / e.motion.domain.cells[i];
-    if (edge <= dmax)
-      ck[i]->reject(dm, fmt::format("gives cell edge {:.4g} m, not larger than the largest particle ({:.4g} m): "
-                                    "the cells do not fit", edge, dmax));
+    if (edge > dmax) continue;
+    std::string who;
+    for (const auto& p : e.populations)
+      if (largest_diameter(p) == dmax) who = p.name;
+    ck[i]->reject(dm, fmt::format("gives cell edge {:.4g} m, not larger than the largest particle (d = {:.4g} m in "
+                                  "population '{}'): the cells do not fit; use fewer cells or check that "
+                                  "population's diameter", edge, dmax, who));
   }
   std::int64_t total_samples = 0;
   for (const auto& p : e.populations) total_samples += p.samples;

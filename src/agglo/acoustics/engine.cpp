@@ -101,7 +101,7 @@ void Engine::sort_cells() {
   for (std::size_t i = 0; i < n; ++i) order_[fill_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
 }
 
-double Engine::max_guard_pn() const {
+double Engine::max_guard_pn(std::size_t* argmax) const {
   const Domain& D = s_.motion.domain;
   double m = 0.0;
   for (int c = 0; c < D.num_cells(); ++c) {
@@ -109,8 +109,11 @@ double Engine::max_guard_pn() const {
     const std::size_t n = start_[c + 1] - start_[c];
     if (n < 2) continue;
     const CellBounds cb = cell_bounds(p_, idx, n, kernel_, s_.motion.gas);
-    for (std::size_t a = 0; a < n; ++a)
-      m = std::max(m, guard_pn(p_, idx[a], n, cb, kernel_, s_.collision_dt, D.cell_volume()));
+    for (std::size_t a = 0; a < n; ++a) {
+      const double pn = guard_pn(p_, idx[a], n, cb, kernel_, s_.collision_dt, D.cell_volume());
+      if (pn > m && argmax) *argmax = idx[a];
+      m = std::max(m, pn);
+    }
   }
   return m;
 }

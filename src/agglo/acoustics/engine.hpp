@@ -52,8 +52,9 @@ class Engine {
   const NanbuStats& stats() const { return stats_; }
   const Kernel& kernel() const { return kernel_; }
 
-  // Largest N * P_bound(dt_c) over the samples of the current state (guard check at start-up).
-  double max_guard_pn() const;
+  // Largest N * P_bound(dt_c) over the samples of the current state (guard check at start-up); the
+  // sample attaining it in `argmax` when given.
+  double max_guard_pn(std::size_t* argmax = nullptr) const;
   // Checks every sample for finite state and position inside the box.
   void check_state() const;
   // Recomputes caches and velocities after external edits (tests).

@@ -111,6 +111,7 @@ std::string closing_log(const AcousticObservations& o) {
   const Counts &c0 = o.initial, &c1 = o.final;
   const EfficiencyRow& last = o.efficiency.back();
   std::string log = guard_report(o.stats);
+  if (!o.interrupted.empty()) log += "incomplete: " + o.interrupted + "\n";
   log += fmt::format("conservation: solid volume fraction {:.17g} -> {:.17g} (rel. {:.3g}); liquid {:.17g} -> {:.17g} "
                      "(rel. {:.3g}); mass {:.17g} -> {:.17g}\n",
                      c0.solid_volume, c1.solid_volume, rel_change(c0.solid_volume, c1.solid_volume), c0.liquid_volume,
@@ -173,6 +174,25 @@ class Observer {
 
 }  // namespace
 
+namespace {
+// The start-up state needs more Nanbu sub-cycles than time.max_subcycles: names the collision step (the
+// key to change) and the population of the sample that needs the most, with the inputs that drive it.
+std::string subcycle_message(const AcousticCase& c, const Engine& e, std::size_t worst, double pn) {
+  const auto& K = settings::acoustic_settings().time;
+  const auto& s = e.settings();
+  const SampleSet& p = e.particles();
+  const int pop = p.pop[worst];
+  const auto& spec = s.populations[static_cast<std::size_t>(pop)];
+  return fmt::format("{}: key '{}' = {:g}: the Nanbu bound P_ij <= 1/N needs {:.4g} sub-cycles per collision step "
+                     "at the start (limit {} = {}), for a sample of population {} '{}' (d = {:.4g} m, rho = {:.4g} "
+                     "kg/m^3, number concentration {:.4g} 1/m^3, weight {:.4g}); reduce {} or that population's "
+                     "concentration or size",
+                     c.file, K.collision_dt.dotted(), s.collision_dt, std::ceil(pn), K.max_subcycles.dotted(),
+                     s.max_subcycles, pop, spec.name, p.d[worst], p.rho[worst], spec.number_concentration,
+                     p.w[worst], K.collision_dt.dotted());
+}
+}  // namespace
+
 void check_startup(const AcousticCase& c, const Engine& e) {
   const auto& K = settings::acoustic_settings().time;
   const auto& s = c.engine;
@@ -191,16 +211,15 @@ void check_startup(const AcousticCase& c, const Engine& e) {
                                     "(use integrator = \"exact\" or a smaller step)",
                                     c.file, K.motion_dt.dotted(), s.motion_dt, p.id[imin], p.d[imin], tmin));
   }
-  const double pn = e.max_guard_pn();
+  std::size_t worst = 0;
+  const double pn = e.max_guard_pn(&worst);
   if (s.strict_guard && pn > 1.0)
     throw ConfigError(fmt::format("{}: key '{}' = {:g}: the Nanbu bound P_ij <= 1/N cannot be met "
                                   "(initial N P_bound = {:.4g}) and {} = \"strict\"; reduce collision_dt "
                                   "by {:.3g}x or use nanbu_guard = \"subcycle\"",
                                   c.file, K.collision_dt.dotted(), s.collision_dt, pn, K.nanbu_guard.dotted(), pn));
   if (std::ceil(pn) > static_cast<double>(s.max_subcycles))
-    throw ConfigError(fmt::format("{}: key '{}' = {}: the Nanbu bound P_ij <= 1/N cannot be met: "
-                                  "the initial state needs {:.4g} sub-cycles per collision step",
-                                  c.file, K.max_subcycles.dotted(), s.max_subcycles, std::ceil(pn)));
+    throw ConfigError(subcycle_message(c, e, worst, pn));
 }
 
 AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) {
@@ -217,12 +236,15 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
     observer.observe(s);
     if ((s & 63) != 0) continue;
     if (hooks.progress) hooks.progress(static_cast<double>(s) / static_cast<double>(nsteps), eng.time());
-    if (hooks.cancelled && hooks.cancelled())
-      throw InterruptedError(fmt::format("interrupted at t = {:.6g} s (step {} of {})", eng.time(), s, nsteps));
+    if (hooks.cancelled && hooks.cancelled()) {
+      obs.interrupted = fmt::format("interrupted at t = {:.6g} s (step {} of {})", eng.time(), s, nsteps);
+      obs.steps = s;
+      break;
+    }
   }
   obs.final = count(eng.particles(), eng.settings().motion.domain.volume());
   obs.samples = eng.particles().size();
-  obs.steps = nsteps;
+  if (obs.interrupted.empty()) obs.steps = nsteps;
   obs.u_amp = eng.settings().motion.sound.u_amp;
   obs.stats = eng.stats();
   obs.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

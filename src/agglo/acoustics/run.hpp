@@ -49,6 +49,7 @@ struct AcousticObservations {
   NanbuStats stats;
   std::string log;                             // run.log without its last line (see io)
   double wall_time_s = 0.0;
+  std::string interrupted;                     // non-empty: cancelled there; the rows so far are kept
 };
 
 struct RunHooks {
@@ -58,7 +59,8 @@ struct RunHooks {
 };
 
 // Runs the case; throws ConfigError for start-up conditions the settings cannot meet (explicit
-// stability, Nanbu bound), NumericalError on a blow-up, InterruptedError when cancelled.
+// stability, Nanbu bound), NumericalError on a blow-up. When cancelled it stops and returns the
+// observations so far with `interrupted` saying where (the caller flushes them, marked incomplete).
 AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks = {});
 
 // Start-up checks that need the sampled state (explicit stability, Nanbu bound). Throws ConfigError.

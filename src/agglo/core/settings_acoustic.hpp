@@ -17,20 +17,20 @@ struct AcousticSettings {
 
   struct Gas {
     Table t{"gas", kAcousticCommands, "carrier gas (air)"};
-    Real temperature{t, {"gas.temperature", "K", "gas temperature"}, 298.15, Range::positive()};
-    Real pressure{t, {"gas.pressure", "Pa", "gas pressure"}, 101325.0, Range::positive()};
+    Real temperature{t, {"gas.temperature", "K", "gas temperature"}, 298.15, Range::open_closed(0.0, 1e4)};
+    Real pressure{t, {"gas.pressure", "Pa", "gas pressure"}, 101325.0, Range::open_closed(0.0, 1e9)};
     Bool gravity{t, {"gas.gravity", "", "gravitational settling"}, true};
     Real viscosity{t, {"gas.viscosity", "Pa s", "dynamic viscosity", "Sutherland's law at the temperature"},
-                   std::nullopt, Range::positive()};
+                   std::nullopt, Range::open_closed(0.0, 1.0)};
     Real mean_free_path{t, {"gas.mean_free_path", "m", "mean free path", "from viscosity, density and mean speed"},
-                        std::nullopt, Range::positive()};
+                        std::nullopt, Range::open_closed(0.0, 1.0)};
   } gas;
 
   struct Sound {
     Table t{"sound", kAcousticCommands, "travelling sound wave"};
     Bool enabled{t, {"sound.enabled", "", "sound field on"}, true};
     Real level_db{t, {"sound.level_db", "dB", "sound pressure level L"}, 140.0, Range::any()};
-    Real frequency_hz{t, {"sound.frequency_hz", "Hz", "frequency f"}, 2000.0, Range::positive()};
+    Real frequency_hz{t, {"sound.frequency_hz", "Hz", "frequency f"}, 2000.0, Range::open_closed(0.0, 1e9)};
   } sound;
 
   struct Time {
@@ -56,22 +56,22 @@ struct AcousticSettings {
     Choice distribution{t, {"population.distribution", "", "size distribution"}, std::nullopt,
                         {"lognormal", "monodisperse", "exponential", "table"}};
     Real number_concentration{t, {"population.number_concentration", "1/m^3", "number concentration N_tot"},
-                              std::nullopt, Range::nonnegative()};
+                              std::nullopt, Range::closed(0.0, 1e22)};
     Real density{t, {"population.density", "kg/m^3", "particle density", "2500 (solid), 1000 (liquid)"},
-                 std::nullopt, Range::positive()};
+                 std::nullopt, Range::open_closed(0.0, 1e5)};
     Integer samples{t, {"population.samples", "", "computational samples"}, std::nullopt, 1, 100000000};
     Choice weight_rounding{t, {"population.weight_rounding", "", "integer weights: round each, or conserve the sum"},
                            "nearest", {"nearest", "conserving"}};
     Real geometric_mean_diameter{t, {"population.geometric_mean_diameter", "m", "lognormal: d_g"}, std::nullopt,
-                                 Range::positive()};
+                                 Range::open_closed(0.0, 1e-2)};
     Real geometric_std{t, {"population.geometric_std", "", "lognormal: sigma_g"}, std::nullopt,
                        Range::closed(1.0, 1e3)};
     Integer bins{t, {"population.bins", "", "lognormal: size bins"}, 40, 1, 100000};
-    Real diameter{t, {"population.diameter", "m", "monodisperse: diameter"}, std::nullopt, Range::nonnegative()};
+    Real diameter{t, {"population.diameter", "m", "monodisperse: diameter"}, std::nullopt, Range::closed(0.0, 1e-2)};
     Real mean_volume{t, {"population.mean_volume", "m^3", "exponential: mean volume v0"}, std::nullopt,
-                     Range::positive()};
+                     Range::open_closed(0.0, 1e-6)};
     Reals table_diameters{t, {"population.table_diameters", "m", "table: diameters"}, std::nullopt,
-                          Range::positive()};
+                          Range::open_closed(0.0, 1e-2)};
     Reals table_fractions{t, {"population.table_fractions", "", "table: number fractions"}, std::nullopt,
                           Range::nonnegative()};
   } population;
@@ -79,9 +79,9 @@ struct AcousticSettings {
   struct Domain {
     Table t{"domain", kAcousticCommands, "periodic box and cells"};
     Real length_x{t, {"domain.length_x", "m", "length along the wave", "one wavelength c/f (required without sound)"},
-                  std::nullopt, Range::positive()};
-    Real length_y{t, {"domain.length_y", "m", "transverse length"}, 0.01, Range::positive()};
-    Real length_z{t, {"domain.length_z", "m", "transverse length"}, 0.01, Range::positive()};
+                  std::nullopt, Range::open_closed(0.0, 1e3)};
+    Real length_y{t, {"domain.length_y", "m", "transverse length"}, 0.01, Range::open_closed(0.0, 1e3)};
+    Real length_z{t, {"domain.length_z", "m", "transverse length"}, 0.01, Range::open_closed(0.0, 1e3)};
     Integer cells_x{t, {"domain.cells_x", "", "cells along x"}, 100, 1, 100000000};
     Integer cells_y{t, {"domain.cells_y", "", "cells along y"}, 1, 1, 100000000};
     Integer cells_z{t, {"domain.cells_z", "", "cells along z"}, 1, 1, 100000000};
@@ -113,18 +113,18 @@ struct AcousticSettings {
   struct Outcomes {
     Table t{"outcomes", kAcousticCommands, "collision outcomes (coalescence or rebound)"};
     Bool always_coalesce{t, {"outcomes.always_coalesce", "", "every collision coalesces (kernel tests)"}, false};
-    Real hamaker{t, {"outcomes.hamaker", "J", "Hamaker constant A"}, 1e-19, Range::positive()};
+    Real hamaker{t, {"outcomes.hamaker", "J", "Hamaker constant A"}, 1e-19, Range::open_closed(0.0, 1e-16)};
     Real contact_distance{t, {"outcomes.contact_distance", "m", "minimum contact distance z0"}, 4e-10,
-                          Range::positive()};
-    Real contact_pressure{t, {"outcomes.contact_pressure", "Pa", "contact pressure p_c"}, 3e8, Range::positive()};
+                          Range::open_closed(0.0, 1e-6)};
+    Real contact_pressure{t, {"outcomes.contact_pressure", "Pa", "contact pressure p_c"}, 3e8, Range::open_closed(0.0, 1e12)};
     Real restitution{t, {"outcomes.restitution", "", "restitution coefficient e"}, 0.6, Range::open_closed(0.0, 1.0)};
-    Real friction{t, {"outcomes.friction", "", "friction coefficient f_p"}, 0.2, Range::nonnegative()};
+    Real friction{t, {"outcomes.friction", "", "friction coefficient f_p"}, 0.2, Range::closed(0.0, 10.0)};
     Real liquid_viscosity{t, {"outcomes.liquid_viscosity", "Pa s", "liquid viscosity mu_l"}, 8.9e-4,
-                          Range::positive()};
+                          Range::open_closed(0.0, 1e3)};
     Real film_roughness_ratio{t, {"outcomes.film_roughness_ratio", "", "liquid film to roughness ratio delta/h_a"},
                               10.0, Range::open(1.0, 1e300)};
     Real solid_density{t, {"outcomes.solid_density", "kg/m^3", "rho_s of the wet outcome model"}, 2500.0,
-                       Range::positive()};
+                       Range::open_closed(0.0, 1e5)};
     Bool energy_compensation{t, {"outcomes.energy_compensation", "", "kinetic energy compensation of merges"}, true};
   } outcomes;
 

@@ -46,10 +46,10 @@ struct ElectrostaticsSettings {
   struct Particles {
     Table t{"particles", "electrostatics, collide, vcrit, breakup",
             "explicit spheres (impact cases: agglomerate shape list)", true};
-    Vector3 position{t, {"particles.position", "m", "centre"}, std::nullopt, Range::any()};
-    Real radius{t, {"particles.radius", "m", "radius"}, std::nullopt, Range::positive()};
-    Real charge{t, {"particles.charge", "C", "charge"}, 0.0, Range::any()};
-    Real permittivity{t, {"particles.permittivity", "", "relative permittivity kappa_p"}, 1.0, Range::positive()};
+    Vector3 position{t, {"particles.position", "m", "centre"}, std::nullopt, Range::closed(-1e3, 1e3)};
+    Real radius{t, {"particles.radius", "m", "radius"}, std::nullopt, Range::open_closed(0.0, 0.1)};
+    Real charge{t, {"particles.charge", "C", "charge"}, 0.0, Range::closed(-1e-3, 1e-3)};
+    Real permittivity{t, {"particles.permittivity", "", "relative permittivity kappa_p"}, 1.0, Range::open_closed(0.0, 1e6)};
   } particles;
 
   std::vector<const Table*> tables() const { return {&solver.t, &particles.t}; }

@@ -18,20 +18,20 @@ struct ImpactSettings {
 
   struct Material {
     Table t{"material", kImpactCommands, "material of every particle (contact model)"};
-    Real density{t, {"material.density", "kg/m^3", "particle density rho_p"}, 2500.0, Range::positive()};
+    Real density{t, {"material.density", "kg/m^3", "particle density rho_p"}, 2500.0, Range::open_closed(0.0, 1e5)};
     Real youngs_modulus{t, {"material.youngs_modulus", "Pa", "Young's modulus E of the contact model"}, 1.0e9,
-                        Range::positive()};
+                        Range::open_closed(0.0, 1e13)};
     Real poisson_ratio{t, {"material.poisson_ratio", "", "Poisson ratio nu"}, 0.33, Range::open(-1.0, 0.5)};
     Real surface_energy{t, {"material.surface_energy", "J/m^2", "surface energy gamma of the JKR adhesion"}, 0.01,
-                        Range::positive()};
+                        Range::open_closed(0.0, 100.0)};
     Real restitution{t, {"material.restitution", "", "normal coefficient of restitution e"}, 0.7,
                      Range::open_closed(0.0, 1.0)};
-    Real friction{t, {"material.friction", "", "sliding friction coefficient mu_F"}, 0.3, Range::nonnegative()};
+    Real friction{t, {"material.friction", "", "sliding friction coefficient mu_F"}, 0.3, Range::closed(0.0, 10.0)};
     Real real_youngs_modulus{t,
                              {"material.real_youngs_modulus", "Pa",
                               "real Young's modulus; electrostatic forces are scaled by (E/E_real)^(2/5)", {},
                               "0 = same as youngs_modulus"},
-                             0.0, Range::nonnegative()};
+                             0.0, Range::closed(0.0, 1e13)};
   } material;
 
   struct Contact {
@@ -72,23 +72,23 @@ struct ImpactSettings {
     Choice shape{t, {"agglomerate.shape", "", "built-in shape, or list = the [[particles]] entries"},
                  "tetrahedron", {"tetrahedron", "square", "list"}};
     Real radius{t, {"agglomerate.radius", "m", "particle radius r_p of the built-in shapes"}, 10e-6,
-                Range::positive()};
+                Range::open_closed(0.0, 0.1)};
     Bool charged{t, {"agglomerate.charged", "", "alternate +/- charge_density on the built-in shapes"}, false};
     Real charge_density{t, {"agglomerate.charge_density", "C/m^2", "surface charge density |sigma_f|"}, 10e-6,
-                        Range::nonnegative()};
+                        Range::closed(0.0, 1e-2)};
     Real permittivity{t, {"agglomerate.permittivity", "", "relative permittivity kappa_p of the built-in shapes"},
-                      1.0, Range::positive()};
+                      1.0, Range::open_closed(0.0, 1e6)};
   } agglomerate;
 
   struct Projectile {
     Table t{"projectile", kImpactCommands, "the incoming particle"};
-    Real speed{t, {"projectile.speed", "m/s", "impact speed v_in"}, 0.18, Range::nonnegative()};
+    Real speed{t, {"projectile.speed", "m/s", "impact speed v_in"}, 0.18, Range::closed(0.0, 1e3)};
     Real offset_radii{t, {"projectile.offset_radii", "r_p", "lateral offset along y"}, 0.05, Range::any()};
     Real gap_radii{t, {"projectile.gap_radii", "r_p", "initial surface gap"}, 1.0, Range::positive()};
     Real radius{t, {"projectile.radius", "m", "projectile radius", "the agglomerate radius"}, std::nullopt,
-                Range::positive()};
-    Real charge{t, {"projectile.charge", "C", "projectile charge"}, 0.0, Range::any()};
-    Real permittivity{t, {"projectile.permittivity", "", "relative permittivity kappa_p"}, 1.0, Range::positive()};
+                Range::open_closed(0.0, 0.1)};
+    Real charge{t, {"projectile.charge", "C", "projectile charge"}, 0.0, Range::closed(-1e-3, 1e-3)};
+    Real permittivity{t, {"projectile.permittivity", "", "relative permittivity kappa_p"}, 1.0, Range::open_closed(0.0, 1e6)};
   } projectile;
 
   struct Output {

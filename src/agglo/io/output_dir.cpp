@@ -40,15 +40,20 @@ void write_file_atomic(const std::filesystem::path& path, const std::function<vo
 }
 
 namespace {
-// True for "<name>.tmp-<pid>" written by a process that no longer runs.
-bool orphaned_tmp(const std::filesystem::path& p) {
+// The writer's pid of a temporary file "<name>.tmp-<pid>"; 0 for any other name.
+long tmp_owner(const std::filesystem::path& p) {
   const std::string name = p.filename().string();
   const auto at = name.rfind(".tmp-");
-  if (at == std::string::npos || at + 5 == name.size()) return false;
+  if (at == std::string::npos || at + 5 == name.size()) return 0;
   const std::string digits = name.substr(at + 5);
-  if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) return false;
-  const long pid = std::stol(digits);
-  if (pid == static_cast<long>(::getpid())) return false;
+  if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) return 0;
+  return std::stol(digits);
+}
+
+// True for "<name>.tmp-<pid>" written by a process that no longer runs.
+bool orphaned_tmp(const std::filesystem::path& p) {
+  const long pid = tmp_owner(p);
+  if (pid == 0 || pid == static_cast<long>(::getpid())) return false;
   return ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
 }
 
@@ -77,6 +82,63 @@ void check_writable(const std::filesystem::path& dir) {
   std::filesystem::remove(probe, ec);
 }
 }  // namespace
+
+namespace {
+// The files that mark a folder as an agglo output folder.
+bool is_run_marker(const std::string& name) {
+  return name == "run.json" || name == "config.resolved.toml" || name == "journal.jsonl";
+}
+
+// The folder's run.json (an empty object when it is missing or unreadable).
+nlohmann::json run_record(const std::filesystem::path& dir) {
+  std::ifstream in(dir / "run.json");
+  auto j = nlohmann::json::parse(in, nullptr, false);
+  return j.is_object() ? j : nlohmann::json::object();
+}
+
+std::string text_field(const nlohmann::json& j, const char* key) {
+  return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string("unknown");
+}
+
+// Removes every entry of `dir` (the folder itself stays).
+void clear_folder(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    fs::remove_all(e.path(), ec);
+    if (ec) throw ConfigError(fmt::format("output folder {}: --overwrite cannot remove {}: {}", dir.string(),
+                                          e.path().filename().string(), ec.message()));
+  }
+}
+}  // namespace
+
+void claim_output_folder(const std::filesystem::path& dir, FolderPolicy policy, std::string_view command) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return;  // missing (created later) or not a folder (OutputDir reports it)
+  bool marked = false, other = false;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (is_run_marker(name)) marked = true;
+    else if (tmp_owner(e.path()) == 0) other = true;  // temporary files alone do not make a run
+  }
+  if (!marked && !other) return;
+  if (!marked)
+    throw ConfigError(fmt::format("output folder {}: holds files that are not an agglo run; choose a new or empty "
+                                  "folder with --out", dir.string()));
+  if (policy == FolderPolicy::overwrite) {
+    clear_folder(dir);
+    return;
+  }
+  const auto rec = run_record(dir);
+  const std::string held = text_field(rec, "command"), status = text_field(rec, "status");
+  if (policy == FolderPolicy::resume && held == command) return;
+  if (policy == FolderPolicy::resume)
+    throw ConfigError(fmt::format("output folder {}: --resume continues only a '{}' run, the folder holds a '{}' run; "
+                                  "choose another --out", dir.string(), command, held));
+  throw ConfigError(fmt::format("output folder {}: already holds a '{}' run (status {}); pass --overwrite to replace "
+                                "it or --resume to continue it", dir.string(), held, status));
+}
 
 OutputDir::OutputDir(std::filesystem::path dir) : dir_(std::move(dir)) {
   std::error_code ec;

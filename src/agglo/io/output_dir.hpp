@@ -30,6 +30,21 @@ class OutputDir {
   std::filesystem::path dir_;
 };
 
+// What a run may do with an output folder that already holds files (docs/limits.md, "Output folders").
+enum class FolderPolicy {
+  fresh,      // refuse a folder holding another run's files
+  overwrite,  // clear a folder holding an agglo run, then start afresh (--overwrite)
+  resume,     // keep it: an ensemble continues from its journal.jsonl (--resume)
+};
+
+// The output-folder contract, checked before a run creates or writes anything: a missing or empty
+// folder is taken; one holding an agglo run (run.json, config.resolved.toml or journal.jsonl) is refused
+// under `fresh` (ConfigError naming the run's command and status and both flags), cleared under
+// `overwrite` and kept under `resume` if its run.json names the same `command`; a folder holding files
+// but no agglo run is always refused, so --overwrite never deletes anything agglo did not write.
+// Temporary "*.tmp-<pid>" files do not count.
+void claim_output_folder(const std::filesystem::path& dir, FolderPolicy policy, std::string_view command);
+
 // Atomic write to an arbitrary path.
 void write_file_atomic(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body);
 

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
@@ -30,10 +32,24 @@ std::vector<std::string> command_names() {
   return names;
 }
 
+FolderPolicy folder_policy(const RunContext& ctx) {
+  if (ctx.resume) return FolderPolicy::resume;
+  return ctx.overwrite ? FolderPolicy::overwrite : FolderPolicy::fresh;
+}
+
+void write_run_started(const OutputDir& out, std::string_view command, const std::string& case_file) {
+  out.write_json("run.json", {{"program", "agglo"},
+                              {"command", command},
+                              {"case", case_file},
+                              {"status", "running"},
+                              {"pid", static_cast<long>(::getpid())}});
+}
+
 void write_run_files(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
-                     double wall_time_s, const nlohmann::json& details) {
+                     double wall_time_s, const nlohmann::json& details, std::string_view status) {
   out.write_text("config.resolved.toml", cfg.resolved_toml());
   auto meta = run_metadata(std::string(command), cfg.file(), seed, wall_time_s);
+  meta["status"] = status;
   if (!details.is_null() && !details.empty()) meta["details"] = details;
   out.write_json("run.json", meta);
 }
@@ -44,19 +60,33 @@ CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::pa
   cmd.parse(cfg);
   std::error_code ec;
   const bool existed = std::filesystem::exists(out_dir, ec);
+  const bool restart = ctx.resume && !cmd.resumable();  // no checkpoint yet: a single run starts again
+  claim_output_folder(out_dir, folder_policy(ctx), cmd.name());
+  if (restart) claim_output_folder(out_dir, FolderPolicy::overwrite, cmd.name());
   const OutputDir out(out_dir);
+  write_run_started(out, cmd.name(), cfg.file());
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  auto merged = [&](nlohmann::json details) {
+    if (!extra.is_null())
+      for (auto it = extra.begin(); it != extra.end(); ++it) details[it.key()] = it.value();
+    return details;
+  };
   CommandResult res;
   try {
     res = cmd.run(cfg, out, ctx);
-  } catch (const ConfigError&) {  // input found invalid only by the engine: leave no new empty folder
-    if (!existed && std::filesystem::is_empty(out_dir, ec)) std::filesystem::remove(out_dir, ec);
+  } catch (const ConfigError& e) {  // input found invalid only by the engine: leave no new folder behind
+    if (!existed) std::filesystem::remove_all(out_dir, ec);
+    else write_run_files(out, cfg, cmd.name(), cmd.seed(cfg), seconds(), merged({{"error", e.what()}}), "failed");
+    throw;
+  } catch (const InterruptedError& e) {
+    write_run_files(out, cfg, cmd.name(), cmd.seed(cfg), seconds(), merged({{"interrupted", e.what()}}),
+                    "incomplete");
+    throw;
+  } catch (const std::exception& e) {
+    write_run_files(out, cfg, cmd.name(), cmd.seed(cfg), seconds(), merged({{"error", e.what()}}), "failed");
     throw;
   }
-  nlohmann::json details = res.details;
-  if (!extra.is_null())
-    for (auto it = extra.begin(); it != extra.end(); ++it) details[it.key()] = it.value();
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_run_files(out, cfg, cmd.name(), res.seed, wall, details);
+  write_run_files(out, cfg, cmd.name(), res.seed, seconds(), merged(res.details));
   return res;
 }
 

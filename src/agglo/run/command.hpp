@@ -24,6 +24,7 @@ struct RunContext {
   const CancelToken* cancel = nullptr;   // null = not cancellable
   int threads = 0;                       // 0 = all cores
   bool resume = false;                   // reuse the journal of finished jobs in the output folder
+  bool overwrite = false;                // clear an output folder holding an earlier run
   Reporter& report() const;
 };
 
@@ -52,6 +53,8 @@ class Command {
   virtual std::vector<Shortcut> shortcuts() const { return {}; }
   // The random seed a case runs with (recorded in run.json); 0 for deterministic commands.
   virtual long long seed(const Config& cfg) const;
+  // True for ensembles that continue from their journal under --resume; a single run restarts instead.
+  virtual bool resumable() const { return false; }
   // Runs a parsed case and writes the command's own files into `out`.
   virtual CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const = 0;
 };
@@ -61,13 +64,23 @@ const Command& find_command(std::string_view name);
 std::vector<std::string> command_names();
 
 // parse -> output folder -> run -> config.resolved.toml + run.json. `extra` is merged into run.json's
-// details. The folder is created only after the case has been validated (and removed again, if new and
-// still empty, when the engine rejects the input with a ConfigError).
+// details. The folder is claimed (io::claim_output_folder: --overwrite / --resume) and created only after
+// the case has been validated, and removed again, if new, when the engine rejects the input with a
+// ConfigError. run.json says "status": "running" while the run goes on, "complete" at the end,
+// "incomplete" after an interruption (the command flushes what it has) and "failed" after an error;
+// the exception is rethrown.
 CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
                       const nlohmann::json& extra = {});
 
-// config.resolved.toml and run.json of a finished run (also used by sweep for its own folder).
+// The folder policy a run context asks for (resume wins over overwrite; the CLI forbids both).
+FolderPolicy folder_policy(const RunContext& ctx);
+
+// run.json of a run that has started: command, case, "status": "running", pid.
+void write_run_started(const OutputDir& out, std::string_view command, const std::string& case_file);
+
+// config.resolved.toml and run.json of a finished ("complete") or interrupted ("incomplete") run (also
+// used by sweep for its own folder).
 void write_run_files(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
-                     double wall_time_s, const nlohmann::json& details);
+                     double wall_time_s, const nlohmann::json& details, std::string_view status = "complete");
 
 }  // namespace agglo::run

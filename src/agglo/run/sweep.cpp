@@ -88,7 +88,7 @@ SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out,
   std::vector<Job> jobs;
   for (std::size_t i = 0; i < res.cases.size(); ++i)
     jobs.push_back({joined(res.cases[i].assignments), [&, i](const JobContext& jc) {
-                      RunContext sub{nullptr, jc.cancel, jc.threads, ctx.resume};
+                      RunContext sub{nullptr, jc.cancel, jc.threads, ctx.resume, true};  // the sweep owns its case folders
                       nlohmann::json extra = {{"sweep_assignment", joined(res.cases[i].assignments)}};
                       return execute(cmd, plan.configs[i], out.path() / res.cases[i].folder, sub, extra).summary;
                     }});

@@ -1,5 +1,6 @@
 // agglo acoustic: DSMC acoustic agglomeration of fine particles with droplets (docs/model.md Part C).
 #include "agglo/acoustics/run.hpp"
+#include "agglo/core/error.hpp"
 #include "agglo/io/acoustic_writers.hpp"
 #include "agglo/run/commands.hpp"
 
@@ -32,6 +33,7 @@ class Acoustic final : public Command {
     hooks.cancelled = [&] { return ctx.cancel && ctx.cancel->cancelled(); };
     const auto obs = acoustics::run_acoustic(c, hooks);
     io::write_acoustic(out, obs);
+    if (!obs.interrupted.empty()) throw InterruptedError(obs.interrupted);  // partial results flushed
     CommandResult r;
     r.summary = io::acoustic_summary(obs);
     r.details = r.summary;

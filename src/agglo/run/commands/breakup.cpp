@@ -21,6 +21,8 @@ class Breakup final : public ImpactCommand {
            "offset_spread)";
   }
 
+  bool resumable() const override { return true; }
+
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const auto c = impact_case(cfg);
     const auto relaxed = impact::relaxed_agglomerate(c);  // independent of the projectile offset

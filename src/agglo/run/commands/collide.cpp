@@ -1,6 +1,7 @@
 // agglo collide: one particle-agglomerate impact with time series, VTK snapshots and result.json.
 #include <fmt/format.h>
 
+#include "agglo/core/error.hpp"
 #include "agglo/core/settings_impact.hpp"
 #include "agglo/impact/experiment.hpp"
 #include "agglo/io/impact_writers.hpp"
@@ -26,7 +27,14 @@ class Collide final : public ImpactCommand {
       throw_if_cancelled(ctx.cancel);
       ctx.report().progress("collide", f, t);
     };
-    const auto res = impact::run_impact(c, c.projectile.speed, &rec, progress);
+    impact::ImpactOutcome res;
+    try {
+      res = impact::run_impact(c, c.projectile.speed, &rec, progress);
+    } catch (const InterruptedError&) {  // flush the history so far; run.json marks the run incomplete
+      io::write_timeseries(out, rec);
+      io::write_snapshots(out, rec);
+      throw;
+    }
     io::write_timeseries(out, rec);
     io::write_snapshots(out, rec);
     CommandResult r;

@@ -15,6 +15,8 @@ class Vcrit final : public ImpactCommand {
   std::string_view name() const override { return "vcrit"; }
   std::string_view help() const override { return "Critical break-up velocity of an agglomerate (bisection on speed)"; }
 
+  bool resumable() const override { return true; }
+
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const auto c = impact_case(cfg);
     const auto relaxed = impact::relaxed_agglomerate(c);  // one relaxation for every speed
