@@ -47,6 +47,10 @@ void run(const SweepArgs& a) {
   const auto ax = axes(a);
   const auto path = agglo::cli::output_path(a.common, "sweep");
   auto plan = agglo::run::plan_sweep(cmd, base, ax);  // every case validated before the folder is made
+  const auto ctx = agglo::cli::context(a.common);
+  const auto cost = agglo::run::sweep_estimate(cmd, plan, ctx);
+  if (a.common.dry_run) return agglo::cli::dry_run(base.file(), cost, ctx);
+  agglo::run::check_budgets(cost, agglo::run::budgets_of(ctx), base.file());
   const agglo::Config resolved = resolved_base(cmd, base);
   long long seed = 0;  // of the base case; of the first case when the base alone is not valid
   try {
@@ -55,7 +59,7 @@ void run(const SweepArgs& a) {
     seed = cmd.seed(plan.configs.front());
   }
   agglo::OutputDir out(path);
-  const auto res = agglo::run::run_sweep(cmd, plan, out, agglo::cli::context(a.common));
+  const auto res = agglo::run::run_sweep(cmd, plan, out, ctx);
   std::vector<agglo::io::SweepRow> rows;
   for (std::size_t i = 0; i < res.cases.size(); ++i)
     rows.push_back({res.cases[i].values, res.cases[i].folder, res.summaries[i]});
