@@ -130,9 +130,11 @@ Estimate collide_estimate(const ImpactCase& c) {
   const double n = particles(c), steps = run_steps_bound(c, c.projectile.speed);
   Estimate e;
   add_steps(e.steps, steps * n + relax_steps(c), run_time_terms(c, c.projectile.speed, speed_key), c);
-  const double t_run = steps * time_step(c);
-  const double rows = t_run / c.output.timeseries_interval + 2.0;
-  const double snaps = c.output.snapshot_interval > 0.0 ? t_run / c.output.snapshot_interval + 2.0 : 0.0;
+  // At most one row and one snapshot per step, and one per output interval of the run time.
+  const double t_run = approach_bound(c, c.projectile.speed) + c.time.after_contact +
+                       c.time.max_extensions * c.time.extension + (c.time.max_extensions + 2.0) * time_step(c);
+  const double rows = std::min(steps, t_run / c.output.timeseries_interval) + 2.0;
+  const double snaps = c.output.snapshot_interval > 0.0 ? std::min(steps, t_run / c.output.snapshot_interval) + 2.0 : 0.0;
   const std::vector<std::string> out_keys{std::string(k.output.timeseries_interval.dotted()),
                                           std::string(k.output.snapshot_interval.dotted()),
                                           std::string(k.time.after_contact.dotted())};

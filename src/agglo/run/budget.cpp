@@ -149,7 +149,8 @@ void check_one(const EstimateItem& item, double budget, std::string_view what, s
   if (item.value <= budget) return;
   throw ConfigError(fmt::format("{}: the estimated {} {} (driven by {}) exceeds the {} budget {}; check those keys, "
                                 "or raise the budget with {} or {}",
-                                what, quantity, est, key_list(item), quantity, bud, option, env));
+                                what, quantity, est, key_list(item), quantity == "steps" ? "step" : quantity, bud,
+                                option, env));
 }
 }  // namespace
 

@@ -25,8 +25,8 @@ namespace agglo::run {
 inline constexpr double kDefaultMaxSteps = 2e11;
 // Share of the usable memory (cgroup limit or RAM) one process may plan to use.
 inline constexpr double kMemoryFraction = 0.8;
-// 1 GiB: several hundred times the largest output of a shipped case (the 4 s acoustic baseline,
-// estimated 2.2 MiB; the charged collide histories 0.6 MiB).
+// 1 GiB: about 270x the largest estimated output of a shipped case (3.7 MiB, the surface.vtu of
+// electrostatics_tetrahedron; the 4 s acoustic baseline 1.9 MiB).
 inline constexpr double kDefaultMaxOutputBytes = 1024.0 * 1024.0 * 1024.0;
 
 struct Budgets {
