@@ -20,8 +20,9 @@
 namespace agglo::run {
 
 // 2e11 steps: 150x the largest shipped case (the 4 s acoustic baseline, 1.3e9 sample-steps; a default
-// breakup of 12 speeds x 16 offsets is bounded by 2.9e8 particle-steps), hours of work on one core;
-// a time step or run length off by many orders of magnitude is far above it.
+// breakup of 12 speeds x 16 offsets is bounded by 2.9e8 particle-steps) and 21x the largest study
+// sweep of bench/acoustic_studies.sh (9.4e9); hours of work on one core. A time step or run length
+// off by many orders of magnitude is far above it.
 inline constexpr double kDefaultMaxSteps = 2e11;
 // Share of the usable memory (cgroup limit or RAM) one process may plan to use.
 inline constexpr double kMemoryFraction = 0.8;
