@@ -27,7 +27,9 @@ void add_subcommand(CLI::App& app, const agglo::run::Command& cmd) {
     for (std::size_t k = 0; k < shortcuts.size(); ++k)
       if (!(*values)[k].empty()) cfg.apply_override(fmt::format("{}={}", shortcuts[k].key->dotted(), (*values)[k]));
     const auto out = agglo::cli::output_path(*args, std::string(cmd.name()));
-    const auto res = agglo::run::execute(cmd, cfg, out, agglo::cli::context(*args));
+    const auto ctx = agglo::cli::context(*args);
+    if (args->dry_run) return agglo::cli::dry_run(cfg.file(), agglo::run::plan(cmd, cfg, ctx), ctx);
+    const auto res = agglo::run::execute(cmd, cfg, out, ctx);
     agglo::cli::run_plot_script(res.plot_script, out, res.plot_args);
   });
 }

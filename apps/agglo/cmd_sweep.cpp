@@ -47,6 +47,10 @@ void run(const SweepArgs& a) {
   const auto ax = axes(a);
   const auto path = agglo::cli::output_path(a.common, "sweep");
   auto plan = agglo::run::plan_sweep(cmd, base, ax);  // every case validated before the folder is made
+  const auto ctx = agglo::cli::context(a.common);
+  const auto cost = agglo::run::sweep_estimate(cmd, plan, ctx);
+  if (a.common.dry_run) return agglo::cli::dry_run(base.file(), cost, ctx);
+  agglo::run::check_budgets(cost, agglo::run::budgets_of(ctx), base.file());
   const agglo::Config resolved = resolved_base(cmd, base);
   long long seed = 0;  // of the base case; of the first case when the base alone is not valid
   try {
@@ -54,7 +58,6 @@ void run(const SweepArgs& a) {
   } catch (const agglo::ConfigError&) {
     seed = cmd.seed(plan.configs.front());
   }
-  const auto ctx = agglo::cli::context(a.common);
   agglo::claim_output_folder(path, agglo::run::folder_policy(ctx), "sweep");
   agglo::OutputDir out(path);
   agglo::run::write_run_started(out, "sweep", base.file());

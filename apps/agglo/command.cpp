@@ -1,11 +1,13 @@
 #include "command.hpp"
 
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 
 #include <fmt/format.h>
 #include <omp.h>
 
+#include "agglo/core/error.hpp"
 #include "agglo/io/output_dir.hpp"
 
 namespace agglo::cli {
@@ -56,6 +58,10 @@ void add_common_options(CLI::App& sub, CommonArgs& args) {
                               "finished jobs of its journal.jsonl; single runs start again");
   sub.add_flag("--overwrite", args.overwrite, "Replace the earlier agglo run in the output folder (clears it)")
       ->excludes(resume);
+  sub.add_option("--max-steps", args.budget.max_steps, "Step budget in particle-steps (default: AGGLO_MAX_STEPS or 2e11)");
+  sub.add_option("--max-memory", args.budget.max_memory, "Memory budget, e.g. 8G (default: AGGLO_MAX_MEMORY or 0.8 x RAM)");
+  sub.add_option("--max-output", args.budget.max_output, "Output size budget, e.g. 2G (default: AGGLO_MAX_OUTPUT or 1G)");
+  sub.add_flag("--dry-run", args.dry_run, "Validate and print the estimated steps, memory and output; run nothing");
 }
 
 Config load_case(const CommonArgs& args) {
@@ -87,7 +93,17 @@ run::RunContext context(const CommonArgs& args) {
   static run::TerminalReporter reporter(quiet());
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
-  return run::RunContext{&reporter, &interrupt_token(), args.threads, args.resume, args.overwrite};
+  static run::Budgets budgets;
+  budgets = run::resolve_budgets(args.budget);
+  return run::RunContext{&reporter, &interrupt_token(), args.threads, args.resume, args.overwrite, &budgets};
+}
+
+void dry_run(const std::string& what, const Estimate& e, const run::RunContext& ctx) {
+  const auto b = run::budgets_of(ctx);
+  std::printf("%s: valid; estimated cost (dry run: nothing run or written)\n%s", one_line(what).c_str(),
+              run::describe(e, b).c_str());
+  std::fflush(stdout);
+  run::check_budgets(e, b, what);
 }
 
 void run_plot_script(const std::string& script, const std::filesystem::path& out, const std::vector<std::string>& args) {

@@ -21,9 +21,11 @@ struct CommonArgs {
   int threads = 0;
   bool resume = false;
   bool overwrite = false;
+  run::BudgetArgs budget;  // --max-steps, --max-memory, --max-output
+  bool dry_run = false;    // --dry-run
 };
 
-// Adds CASE.toml, --out, --set, --threads, --resume and --overwrite to a subcommand.
+// Adds CASE.toml, --out, --set, --threads, --resume, --overwrite, the budgets and --dry-run to a subcommand.
 void add_common_options(CLI::App& sub, CommonArgs& args);
 
 // Loads the case and applies --set overrides (ConfigError on any problem); sets the OpenMP threads.
@@ -32,8 +34,13 @@ Config load_case(const CommonArgs& args);
 // Output folder from --out or the default results/<case>-<command>.
 std::filesystem::path output_path(const CommonArgs& args, const std::string& command);
 
-// The run context of the CLI: terminal reporter (quiet with -q), Ctrl-C cancels.
+// The run context of the CLI: terminal reporter (quiet with -q), Ctrl-C cancels, the budgets
+// (command line, environment, defaults).
 run::RunContext context(const CommonArgs& args);
+
+// --dry-run: prints the estimates of `what` (a validated case) against the budgets on stdout; a
+// ConfigError if one is exceeded (exit 2), else returns (exit 0). Nothing is created.
+void dry_run(const std::string& what, const Estimate& e, const run::RunContext& ctx);
 
 // Exit code after an interruption: 128 + the signal (130 for SIGINT / Ctrl-C, 143 for SIGTERM).
 int interrupt_exit_code();

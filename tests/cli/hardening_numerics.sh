@@ -70,7 +70,8 @@ expect 2 "population.1.density' = 1e+300" acoustic "$ACO" "${short[@]}" --set po
 expect 2 "population.1.number_concentration' = 1e+300" acoustic "$ACO" "${short[@]}" \
   --set population.1.number_concentration=1e300
 expect 2 "population.1.diameter' = 1e+300" acoustic "$ACO" "${short[@]}" --set population.1.diameter=1e300
-expect 2 "time.collision_dt' = 1e+300" acoustic "$ACO" "${short[@]}" --set time.collision_dt=1e300 --set time.end=1e300
+expect 2 "time.collision_dt' = 1e+300" acoustic "$ACO" "${short[@]}" --set time.collision_dt=1e300 --set time.end=1e300 \
+  --set time.motion_dt=1e300
 expect 2 "time.collision_dt' = 5e-05: the Nanbu bound P_ij <= 1/N needs" acoustic "$ACO" "${short[@]}" \
   --set time.collision_dt=5e-5 --set time.motion_dt=5e-5 --set population.1.number_concentration=1e19
 expect 2 "population 'droplets'" acoustic "$ACO" "${short[@]}" --set population.1.diameter=9e-3

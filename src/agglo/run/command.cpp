@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include <omp.h>
+
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -16,7 +18,23 @@ Reporter& RunContext::report() const {
   return reporter ? *reporter : silent;
 }
 
+int RunContext::thread_count() const { return threads > 0 ? threads : omp_get_max_threads(); }
+
 long long Command::seed(const Config&) const { return 0; }
+
+Estimate Command::estimate(Config&, const RunContext&) const { return {}; }
+
+Estimate Command::lower_bound(Config&) const { return {}; }
+
+Estimate plan(const Command& cmd, Config& cfg, const RunContext& ctx) {
+  check_budgets(cmd.lower_bound(cfg), budgets_of(ctx), cfg.file());
+  cmd.parse(cfg);
+  Estimate e = cmd.estimate(cfg, ctx);
+  e.memory.value += kProcessBaseBytes;
+  return e;
+}
+
+Budgets budgets_of(const RunContext& ctx) { return ctx.budgets ? *ctx.budgets : resolve_budgets({}); }
 
 const Command& find_command(std::string_view name) {
   for (const Command* c : all_commands())
@@ -57,7 +75,7 @@ void write_run_files(const OutputDir& out, const Config& cfg, std::string_view c
 CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
                       const nlohmann::json& extra) {
   const auto start = std::chrono::steady_clock::now();
-  cmd.parse(cfg);
+  check_budgets(plan(cmd, cfg, ctx), budgets_of(ctx), cfg.file());
   std::error_code ec;
   const bool existed = std::filesystem::exists(out_dir, ec);
   const bool restart = ctx.resume && !cmd.resumable();  // no checkpoint yet: a single run starts again

@@ -5,6 +5,8 @@
 // writers in io/). `execute` adds what every output folder gets: config.resolved.toml (the case
 // with every default filled in) and run.json (version, git hash, command, seed, threads, wall time).
 // Commands are looked up by name, so `sweep` (and later calibrate, MPI) runs any of them.
+// Before the output folder is created, `execute` compares the command's Estimate (steps, memory,
+// output) with the budgets (run/budget.hpp) and refuses a case that exceeds one (docs/limits.md).
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -13,8 +15,10 @@
 #include <nlohmann/json.hpp>
 
 #include "agglo/core/config.hpp"
+#include "agglo/core/estimate.hpp"
 #include "agglo/core/settings.hpp"
 #include "agglo/io/output_dir.hpp"
+#include "agglo/run/budget.hpp"
 #include "agglo/run/reporter.hpp"
 
 namespace agglo::run {
@@ -25,7 +29,9 @@ struct RunContext {
   int threads = 0;                       // 0 = all cores
   bool resume = false;                   // reuse the journal of finished jobs in the output folder
   bool overwrite = false;                // clear an output folder holding an earlier run
+  const Budgets* budgets = nullptr;      // null = resolve_budgets({}): environment, then defaults
   Reporter& report() const;
+  int thread_count() const;              // threads, or all cores when 0
 };
 
 struct CommandResult {
@@ -51,6 +57,12 @@ class Command {
   virtual void parse(Config& cfg) const = 0;
   // Command-line shortcuts for config keys (none by default).
   virtual std::vector<Shortcut> shortcuts() const { return {}; }
+  // What a parsed case (cfg has passed parse()) will cost, from the case alone (no large allocation);
+  // an ensemble's estimate covers all its runs, `ctx.threads` of them at a time. None by default.
+  virtual Estimate estimate(Config& cfg, const RunContext& ctx) const;
+  // A lower bound of estimate() from the sizes in the case alone, checked before parse() so that a
+  // huge case is refused before a slow (e.g. O(N^2)) validation. None by default.
+  virtual Estimate lower_bound(Config& cfg) const;
   // The random seed a case runs with (recorded in run.json); 0 for deterministic commands.
   virtual long long seed(const Config& cfg) const;
   // True for ensembles that continue from their journal under --resume; a single run restarts instead.
@@ -63,12 +75,22 @@ class Command {
 const Command& find_command(std::string_view name);
 std::vector<std::string> command_names();
 
-// parse -> output folder -> run -> config.resolved.toml + run.json. `extra` is merged into run.json's
-// details. The folder is claimed (io::claim_output_folder: --overwrite / --resume) and created only after
-// the case has been validated, and removed again, if new, when the engine rejects the input with a
-// ConfigError. run.json says "status": "running" while the run goes on, "complete" at the end,
-// "incomplete" after an interruption (the command flushes what it has) and "failed" after an error;
-// the exception is rethrown.
+// Resident memory of the process before a command allocates anything (program, libraries, OpenMP
+// runtime), added to every memory estimate.
+inline constexpr double kProcessBaseBytes = 16.0 * 1024.0 * 1024.0;
+
+// lower bound within the budgets (ConfigError otherwise) -> parse -> estimate (cmd.estimate plus
+// kProcessBaseBytes); cfg gets its defaults written in.
+Estimate plan(const Command& cmd, Config& cfg, const RunContext& ctx);
+// The budgets of a context (ctx.budgets, else resolve_budgets({})).
+Budgets budgets_of(const RunContext& ctx);
+
+// parse -> estimate within the budgets -> output folder -> run -> config.resolved.toml + run.json. `extra`
+// is merged into run.json's details. The folder is claimed (io::claim_output_folder: --overwrite /
+// --resume) and created only after the case has been validated and found within the budgets, and removed
+// again, if new, when the engine rejects the input with a ConfigError. run.json says "status": "running"
+// while the run goes on, "complete" at the end, "incomplete" after an interruption (the command flushes
+// what it has) and "failed" after an error; the exception is rethrown.
 CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
                       const nlohmann::json& extra = {});
 

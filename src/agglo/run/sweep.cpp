@@ -82,13 +82,33 @@ SweepPlan plan_sweep(const Command& cmd, const Config& base, const std::vector<S
   return plan;
 }
 
+Estimate sweep_estimate(const Command& cmd, const SweepPlan& plan, const RunContext& ctx) {
+  Estimate total;
+  std::vector<double> memory;
+  const RunContext one{nullptr, nullptr, 1, false, false, ctx.budgets};
+  for (const auto& c : plan.configs) {
+    Config cfg = c.clone();
+    cmd.parse(cfg);
+    const Estimate e = cmd.estimate(cfg, one);
+    add_to(total.steps, e.steps.value, e.steps.keys);
+    add_to(total.output, e.output.value, e.output.keys);
+    add_to(total.memory, 0.0, e.memory.keys);
+    memory.push_back(e.memory.value);
+  }
+  std::sort(memory.rbegin(), memory.rend());
+  memory.resize(std::min(memory.size(), static_cast<std::size_t>(std::max(1, ctx.thread_count()))));
+  for (double m : memory) total.memory.value += m;
+  total.memory.value += kProcessBaseBytes;
+  return total;
+}
+
 SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out, const RunContext& ctx) {
   SweepResult res;
   res.cases = plan.cases;
   std::vector<Job> jobs;
   for (std::size_t i = 0; i < res.cases.size(); ++i)
     jobs.push_back({joined(res.cases[i].assignments), [&, i](const JobContext& jc) {
-                      RunContext sub{nullptr, jc.cancel, jc.threads, ctx.resume, true};  // the sweep owns its case folders
+                      RunContext sub{nullptr, jc.cancel, jc.threads, ctx.resume, true, ctx.budgets};  // owns its case folders
                       nlohmann::json extra = {{"sweep_assignment", joined(res.cases[i].assignments)}};
                       return execute(cmd, plan.configs[i], out.path() / res.cases[i].folder, sub, extra).summary;
                     }});

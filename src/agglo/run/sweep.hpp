@@ -45,6 +45,10 @@ struct SweepPlan {
 };
 SweepPlan plan_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes);
 
+// The cost of a whole sweep: steps and output summed over its cases; memory of the cases that run at
+// the same time (the largest min(threads, cases) case estimates) plus run::kProcessBaseBytes once.
+Estimate sweep_estimate(const Command& cmd, const SweepPlan& plan, const RunContext& ctx);
+
 // Runs `cmd` for every case of the plan under `out`. Throws the first failure (in case order)
 // after every case has run.
 SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out, const RunContext& ctx);

@@ -1,4 +1,5 @@
 // agglo acoustic: DSMC acoustic agglomeration of fine particles with droplets (docs/model.md Part C).
+#include "agglo/acoustics/estimate.hpp"
 #include "agglo/acoustics/run.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/io/acoustic_writers.hpp"
@@ -18,6 +19,10 @@ class Acoustic final : public Command {
   void parse(Config& cfg) const override {
     (void)acoustics::parse_acoustic_case(cfg);
     cfg.check_unknown_keys();
+  }
+
+  Estimate estimate(Config& cfg, const RunContext&) const override {
+    return acoustics::acoustic_estimate(acoustics::parse_acoustic_case(cfg));
   }
 
   long long seed(const Config& cfg) const override {

@@ -1,6 +1,7 @@
 // agglo breakup: break-up probability vs speed over an ensemble of impact offsets.
 #include <fmt/format.h>
 
+#include "agglo/impact/estimate.hpp"
 #include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/run/commands/impact_command.hpp"
@@ -22,6 +23,10 @@ class Breakup final : public ImpactCommand {
   }
 
   bool resumable() const override { return true; }
+
+  Estimate estimate(Config& cfg, const RunContext& ctx) const override {
+    return impact::breakup_estimate(impact_case(cfg), ctx.thread_count());
+  }
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const auto c = impact_case(cfg);

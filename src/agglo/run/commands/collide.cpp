@@ -3,6 +3,7 @@
 
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_impact.hpp"
+#include "agglo/impact/estimate.hpp"
 #include "agglo/impact/experiment.hpp"
 #include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
@@ -19,6 +20,10 @@ class Collide final : public ImpactCommand {
     return {{"-v,--speed", &settings::impact_settings().projectile.speed}};
   }
   std::string_view help() const override { return "One particle-agglomerate collision (DEM, optional electrostatics)"; }
+
+  Estimate estimate(Config& cfg, const RunContext&) const override {
+    return impact::collide_estimate(impact_case(cfg));
+  }
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const auto c = impact_case(cfg);

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "agglo/electrostatics/config.hpp"
+#include "agglo/electrostatics/estimate.hpp"
 #include "agglo/io/electrostatics_writers.hpp"
 #include "agglo/run/commands.hpp"
 
@@ -19,6 +20,18 @@ class Electrostatics final : public Command {
   }
 
   void parse(Config& cfg) const override { (void)es::parse_electrostatics_case(cfg); }
+
+  Estimate estimate(Config& cfg, const RunContext&) const override {
+    const es::EsCase sc = es::parse_electrostatics_case(cfg);
+    return es::static_solve_estimate(sc.settings.options, sc.problem);
+  }
+
+  Estimate lower_bound(Config& cfg) const override {
+    const auto& keys = settings::electrostatics_settings();
+    auto root = cfg.root();
+    const es::EsConfig ec = es::parse_electrostatics(keys.solver.t.open(root));
+    return es::static_solve_lower_bound(ec.options, static_cast<double>(keys.particles.t.elements(root).size()));
+  }
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const es::EsCase sc = es::parse_electrostatics_case(cfg);

@@ -1,6 +1,7 @@
 // agglo vcrit: critical break-up velocity by a scan and bisection rounds of impacts.
 #include <fmt/format.h>
 
+#include "agglo/impact/estimate.hpp"
 #include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/run/commands/impact_command.hpp"
@@ -16,6 +17,10 @@ class Vcrit final : public ImpactCommand {
   std::string_view help() const override { return "Critical break-up velocity of an agglomerate (bisection on speed)"; }
 
   bool resumable() const override { return true; }
+
+  Estimate estimate(Config& cfg, const RunContext& ctx) const override {
+    return impact::vcrit_estimate(impact_case(cfg), ctx.thread_count());
+  }
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const auto c = impact_case(cfg);
