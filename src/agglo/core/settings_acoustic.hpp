@@ -92,7 +92,7 @@ struct AcousticSettings {
   struct Kernels {
     Table t{"kernels", kAcousticCommands, "collision kernels"};
     Choice model{t, {"kernels.model", "", "kernel model"}, "acoustic",
-                 {"acoustic", "constant", "additive", "brownian_fuchs"}};
+                 {"acoustic", "constant", "additive", "brownian_fuchs", "brownian_partmc"}};
     Bool orthokinetic{t, {"kernels.orthokinetic", "", "orthokinetic (relative acoustic motion) collisions"}, true};
     Bool acoustic_wake{t, {"kernels.acoustic_wake", "", "acoustic wake effect"}, true};
     Bool radiation_pressure{t, {"kernels.radiation_pressure", "", "mutual radiation pressure"}, true};
