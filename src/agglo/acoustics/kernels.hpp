@@ -6,6 +6,7 @@
 //   mutual radiation pressure               kernels/radiation_pressure.hpp  (eq. 10)
 //   Brownian, continuum + slip (or Fuchs)   kernels/brownian.hpp            (eq. 11)
 //   Brownian, Fuchs transition regime       kernels/brownian_fuchs.hpp      (model option)
+//   Brownian, PartMC's form (comparisons)   kernels/brownian_partmc.hpp     (model option)
 //   test kernels: constant K0, additive B (v_i + v_j)   kernels/constant.hpp, kernels/additive.hpp
 // The registry (kernels/registry.hpp) lists them in summation order. `bound*` give upper bounds of
 // the kernel over the partners of a cell (majorant of the Nanbu guard, docs/model.md §C.4).

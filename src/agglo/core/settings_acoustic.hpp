@@ -7,7 +7,7 @@
 
 namespace agglo::settings {
 
-inline constexpr std::string_view kAcousticCommands = "acoustic, sweep";
+inline constexpr std::string_view kAcousticCommands = "acoustic, sectional, sweep";
 
 struct AcousticSettings {
   struct Top {
@@ -92,7 +92,7 @@ struct AcousticSettings {
   struct Kernels {
     Table t{"kernels", kAcousticCommands, "collision kernels"};
     Choice model{t, {"kernels.model", "", "kernel model"}, "acoustic",
-                 {"acoustic", "constant", "additive", "brownian_fuchs"}};
+                 {"acoustic", "constant", "additive", "brownian_fuchs", "brownian_partmc"}};
     Bool orthokinetic{t, {"kernels.orthokinetic", "", "orthokinetic (relative acoustic motion) collisions"}, true};
     Bool acoustic_wake{t, {"kernels.acoustic_wake", "", "acoustic wake effect"}, true};
     Bool radiation_pressure{t, {"kernels.radiation_pressure", "", "mutual radiation pressure"}, true};
@@ -143,6 +143,15 @@ struct AcousticSettings {
                              0.25, Range::open_closed(0.0, 1.0)};
     Bool plots{t, {"output.plots", "", "make PNG plots"}, true};
   } output;
+
+  struct Sectional {
+    Table t{"sectional", "sectional", "deterministic sectional solver (fixed pivot); read by agglo sectional only"};
+    Integer bins_per_decade{t, {"sectional.bins_per_decade", "", "pivots per decade of diameter"}, 40, 4, 10000};
+    Real d_min{t, {"sectional.d_min", "m", "diameter of the smallest pivot"}, 1e-9, Range::positive()};
+    Real d_max{t, {"sectional.d_max", "m", "diameter of the largest pivot"}, 1e-3, Range::positive()};
+    Real tolerance{t, {"sectional.tolerance", "", "local error per time step, relative to N and to the volume"}, 1e-6,
+                   Range::open_closed(0.0, 0.1)};
+  } sectional;
 
   std::vector<const Table*> tables() const;
 };

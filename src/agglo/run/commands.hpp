@@ -12,6 +12,7 @@ const Command& vcrit_command();
 const Command& breakup_command();
 const Command& electrostatics_command();
 const Command& acoustic_command();
+const Command& sectional_command();
 
 // Every command, in the order of `agglo --help`.
 const std::vector<const Command*>& all_commands();

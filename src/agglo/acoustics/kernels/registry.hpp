@@ -5,6 +5,7 @@
 #include "agglo/acoustics/kernels/additive.hpp"
 #include "agglo/acoustics/kernels/brownian.hpp"
 #include "agglo/acoustics/kernels/brownian_fuchs.hpp"
+#include "agglo/acoustics/kernels/brownian_partmc.hpp"
 #include "agglo/acoustics/kernels/constant.hpp"
 #include "agglo/acoustics/kernels/mechanism_set.hpp"
 #include "agglo/acoustics/kernels/orthokinetic.hpp"
@@ -19,6 +20,7 @@ using KernelMechanisms = MechanismSet<
     Brownian,
     BrownianFuchs,
     ConstantKernel,
-    AdditiveKernel>;
+    AdditiveKernel,
+    BrownianPartmc>;
 
 }  // namespace agglo::acoustics

@@ -9,7 +9,8 @@ KernelModel kernel_model_from_name(const std::string& n) {
   if (n == "constant") return KernelModel::constant;
   if (n == "additive") return KernelModel::additive;
   if (n == "brownian_fuchs") return KernelModel::brownian_fuchs;
-  throw ConfigError("unknown kernel model '" + n + "' (acoustic, constant, additive, brownian_fuchs)");
+  if (n == "brownian_partmc") return KernelModel::brownian_partmc;
+  throw ConfigError("unknown kernel model '" + n + "' (acoustic, constant, additive, brownian_fuchs, brownian_partmc)");
 }
 
 const char* kernel_model_name(KernelModel m) {
@@ -18,6 +19,7 @@ const char* kernel_model_name(KernelModel m) {
     case KernelModel::constant: return "constant";
     case KernelModel::additive: return "additive";
     case KernelModel::brownian_fuchs: return "brownian_fuchs";
+    case KernelModel::brownian_partmc: return "brownian_partmc";
   }
   return "?";
 }

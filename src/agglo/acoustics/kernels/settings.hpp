@@ -6,7 +6,7 @@
 
 namespace agglo::acoustics {
 
-enum class KernelModel { acoustic, constant, additive, brownian_fuchs };
+enum class KernelModel { acoustic, constant, additive, brownian_fuchs, brownian_partmc };
 enum class BrownianForm { continuum_slip, fuchs };
 KernelModel kernel_model_from_name(const std::string& name);
 const char* kernel_model_name(KernelModel m);
@@ -26,7 +26,7 @@ struct KernelSettings {
 
 // Names of the registered mechanisms (kernels/registry.hpp) the settings switch on:
 // acoustic -> the enabled ones of orthokinetic, acoustic_wake, radiation_pressure, brownian;
-// constant, additive, brownian_fuchs -> that one mechanism.
+// constant, additive, brownian_fuchs, brownian_partmc -> that one mechanism.
 std::vector<std::string> mechanism_names(const KernelSettings& s);
 
 }  // namespace agglo::acoustics

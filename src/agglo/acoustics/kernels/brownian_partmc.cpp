@@ -1,0 +1,55 @@
+#include "agglo/acoustics/kernels/brownian_partmc.hpp"
+
+#include <cmath>
+
+#include "agglo/core/constants.hpp"
+
+namespace agglo::acoustics {
+
+namespace {
+// PartMC 2.9.0's constants (header of brownian_partmc.hpp).
+constexpr double kBoltzmann = 1.3806505e-23;  // [J/K]
+constexpr double kAvogadro = 6.02214179e23;   // [1/mol]
+constexpr double kGasConstant = 8.314472;     // [J/(mol K)]
+constexpr double kAirMolarMass = 2.89644e-2;  // [kg/mol]
+using constants::pi;
+
+struct PartmcParticle {
+  double r, D, c2, delta;  // radius, diffusivity, squared thermal speed, delta of the header formula
+};
+
+PartmcParticle partmc_particle(const PartmcGas& g, double d, double rho) {
+  PartmcParticle s;
+  s.r = 0.5 * d;
+  const double kn = g.mean_free_path / s.r;
+  const double cc = 1.0 + kn * (1.249 + 0.42 * std::exp(-0.87 / kn));
+  const double kT = kBoltzmann * g.temperature;
+  s.D = kT * cc / (6.0 * pi * g.viscosity * s.r);
+  const double mass = rho * 4.0 / 3.0 * pi * s.r * s.r * s.r;
+  s.c2 = 8.0 * kT / (pi * mass);
+  const double l = 8.0 * s.D / (pi * std::sqrt(s.c2));
+  s.delta = (std::pow(2.0 * s.r + l, 3) - std::pow(4.0 * s.r * s.r + l * l, 1.5)) / (6.0 * s.r * l) - 2.0 * s.r;
+  return s;
+}
+}  // namespace
+
+PartmcGas PartmcGas::air(double temperature, double pressure) {
+  PartmcGas g;
+  g.temperature = temperature;
+  const double rho_air = pressure * kAirMolarMass / (kGasConstant * temperature);
+  g.viscosity = 1.8325e-5 * (416.16 / (temperature + 120.0)) * std::pow(temperature / 296.16, 1.5);
+  const double c_air = std::sqrt(8.0 * kBoltzmann * temperature * kAvogadro / (pi * kAirMolarMass));
+  g.mean_free_path = 2.0 * (g.viscosity / rho_air) / c_air;
+  return g;
+}
+
+double beta_brownian_partmc(const PartmcGas& gas, double di, double dj, double rhoi, double rhoj) {
+  const PartmcParticle a = partmc_particle(gas, di, rhoi), b = partmc_particle(gas, dj, rhoj);
+  const double rs = a.r + b.r, Ds = a.D + b.D;
+  const double ds = std::sqrt(a.delta * a.delta + b.delta * b.delta), cs = std::sqrt(a.c2 + b.c2);
+  return 4.0 * pi * rs * Ds / (rs / (rs + ds) + 4.0 * Ds / (rs * cs));
+}
+
+double partmc_thermal_speed_ratio() { return std::sqrt(kBoltzmann / constants::k_B); }
+
+}  // namespace agglo::acoustics
