@@ -37,10 +37,12 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 
 # ---------------------------------------------------------------------------------------------
-# Base runs: the command each shipped case is meant for, shortened like run_cases.sh (and a bit
-# more for the acoustic cases, so that one execution stays around a second).
-SHORT_DEM = ["time.after_contact=2e-4", "output.snapshot_interval=5e-5"]
-SHORT_CHARGED = ["time.after_contact=1e-5", "output.snapshot_interval=1e-5", "projectile.gap_radii=0.1"]
+# Base runs: the command each shipped case is meant for, shortened like run_cases.sh and further
+# (charged runs, acoustic samples), so that one unmutated execution takes at most a few seconds.
+# Every DEM run also relaxes a charged agglomerate for at most 1e-5 s and extends an undecided run once.
+DEM_CHEAP = ["time.relax_time=1e-5", "time.max_extensions=1", "time.extension=2e-5"]
+SHORT_DEM = ["time.after_contact=2e-4", "output.snapshot_interval=5e-5"] + DEM_CHEAP
+SHORT_CHARGED = ["time.after_contact=1e-5", "output.snapshot_interval=1e-5", "projectile.gap_radii=0.1"] + DEM_CHEAP
 VCRIT = ["vcrit.scan_points=4", "vcrit.v_min=0.05", "vcrit.v_max=0.8", "vcrit.tolerance=0.03"]
 BREAKUP = ["breakup.speeds=[0.12,0.4]", "breakup.samples=2"]
 SHORT_ACOUSTIC = ["time.end=0.005", "output.snapshot_times=[0.0]", "output.psd_times=[0.0,0.005]",
@@ -584,7 +586,23 @@ def started_engine(work):
     return False
 
 
+RUNNING = set()  # process groups of the executions in flight, killed when the harness is stopped
+STOPPED = []
+
+
+def stop_children(signum, _frame):
+    STOPPED.append(signum)
+    for pgid in list(RUNNING):
+        try:
+            os.killpg(pgid, signal.SIGKILL)
+        except OSError:
+            pass
+    sys.exit(128 + signum)
+
+
 def run_one(args, runs, schema, index, keep=None):
+    if STOPPED:
+        return None
     m = make_mutant(args.seed, index, runs, args.source, schema)
     work = tempfile.mkdtemp(prefix=f"agglo-fuzz-{index}-")
     try:
@@ -599,6 +617,7 @@ def run_one(args, runs, schema, index, keep=None):
         t0 = time.monotonic()
         proc = subprocess.Popen(limited(cmd), cwd=work, env=env, stdout=subprocess.DEVNULL,
                                 stderr=subprocess.PIPE, start_new_session=True)
+        RUNNING.add(proc.pid)
         try:
             _, err = proc.communicate(timeout=args.timeout)
             rc = proc.returncode
@@ -606,6 +625,8 @@ def run_one(args, runs, schema, index, keep=None):
             os.killpg(proc.pid, signal.SIGKILL)
             _, err = proc.communicate()
             rc = None
+        finally:
+            RUNNING.discard(proc.pid)
         wall = time.monotonic() - t0
         msg = err.decode("utf-8", "replace")
         finding = None
@@ -677,6 +698,8 @@ def main():
     if not os.access(args.agglo, os.X_OK):
         print(f"fuzz_cli: {args.agglo} is not an executable", file=sys.stderr)
         return 2
+    signal.signal(signal.SIGTERM, stop_children)
+    signal.signal(signal.SIGINT, stop_children)
     runs, schema = base_runs(), load_schema(args.source)
     indices = [args.only] if args.only is not None else range(args.execs)
     t0 = time.monotonic()
