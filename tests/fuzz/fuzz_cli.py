@@ -459,6 +459,7 @@ def make_mutant(seed, index, runs, source_dir, schema):
     if rng.random() < 0.03:  # a case given to a command it is not meant for
         m.command = rng.choice(["collide", "vcrit", "breakup", "electrostatics", "acoustic"])
         m.extra = []
+        m.sets += {"vcrit": VCRIT, "breakup": BREAKUP}.get(m.command, [])  # that command's shortening
         m.notes.append(f"cross {case.command}->{m.command}")
     ops, weights = zip(*OPERATORS)
     if acoustic(m):  # the acoustic cell grid is the largest allocation a case controls
@@ -658,6 +659,19 @@ def run_one(args, runs, schema, index, keep=None):
         shutil.rmtree(work, ignore_errors=True)
 
 
+def signature(r):
+    """Findings of one kind (crash by signal, exit code, non-finite column, long message, hang) from
+    the same kinds of mutation are reported together."""
+    f = r["finding"]
+    m = re.match(r"crash: killed by signal \w+|crash: exit \d+|hang|exit \d+ with a message", f)
+    if m:
+        kind = m.group(0)
+    else:  # exit 0 with a non-finite output: FOLDER/FILE: line N column 'C' = V
+        m = re.match(r"exit 0 with a non-finite output: (?:.*/)?([^/:]+):(?:.*(column '[^']*'))?", f)
+        kind = f"exit 0 non-finite {m.group(1)} {m.group(2) or ''}".strip() if m else f
+    return kind + " | " + ", ".join(sorted({n.split()[0] for n in r["notes"]}))
+
+
 def first_line(msg):
     return msg.splitlines()[0][:200] if msg else "(no message)"
 
@@ -713,10 +727,7 @@ def main():
                 if r["diff"]:
                     print("    " + r["diff"].replace("\n", "\n    "), flush=True)
             if r["finding"]:
-                sig = re.sub(r"\S*/\S*", "PATH", r["finding"])[:100] + " | " + " ".join(
-                    sorted({" ".join(n.split()[:2]) for n in r["notes"]}))  # same failure, same kind of mutation
-                sig = re.sub(r"\d+(\.\d+)?(e[+-]?\d+)?", "N", sig)
-                findings.setdefault(sig, []).append(r)
+                findings.setdefault(signature(r), []).append(r)
     n = len(results)
     engine = sum(r["engine"] for r in results)
     codes = {}
@@ -729,7 +740,7 @@ def main():
     print(f"fuzz_cli: {nf} findings ({len(findings)} distinct)")
     for sig, rs in findings.items():
         r = rs[0]
-        print(f"\n== {r['finding']}\n   {len(rs)} mutant(s): {' '.join(str(x['index']) for x in rs[:20])}"
+        print(f"\n== {sig}\n   {r['finding'][:300]}\n   {len(rs)} mutant(s): {' '.join(str(x['index']) for x in rs[:20])}"
               f"{' ...' if len(rs) > 20 else ''}\n   mutations: {'; '.join(r['notes'])}\n   reproduce: "
               f"{sys.argv[0]} AGGLO SOURCE --seed {args.seed} --only {r['index']} --keep DIR\n   command: {r['cmd']}")
         if r["diff"]:
