@@ -58,7 +58,7 @@ void add_common_options(CLI::App& sub, CommonArgs& args) {
                               "finished jobs of its journal.jsonl; single runs start again");
   sub.add_flag("--overwrite", args.overwrite, "Replace the earlier agglo run in the output folder (clears it)")
       ->excludes(resume);
-  sub.add_option("--max-steps", args.budget.max_steps, "Step budget in particle-steps (default: AGGLO_MAX_STEPS or 2e11)");
+  sub.add_option("--max-steps", args.budget.max_steps, "Step budget in particle-steps (default: AGGLO_MAX_STEPS or 1e12)");
   sub.add_option("--max-memory", args.budget.max_memory, "Memory budget, e.g. 8G (default: AGGLO_MAX_MEMORY or 0.8 x RAM)");
   sub.add_option("--max-output", args.budget.max_output, "Output size budget, e.g. 2G (default: AGGLO_MAX_OUTPUT or 1G)");
   sub.add_flag("--dry-run", args.dry_run, "Validate and print the estimated steps, memory and output; run nothing");

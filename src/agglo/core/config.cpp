@@ -95,9 +95,14 @@ Config Config::from_string(std::string_view text, std::string name) {
 Config Config::load(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw ConfigError(fmt::format("{}: cannot open case file", file.string()));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  // Read at most kMaxCaseFileBytes + 1 bytes, so that /dev/zero or a huge file cannot exhaust memory.
+  std::string text;
+  char chunk[65536];
+  while (text.size() <= kMaxCaseFileBytes && in.read(chunk, sizeof chunk).gcount() > 0)
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxCaseFileBytes)
+    throw ConfigError(fmt::format("{}: case file larger than {} MiB (is it a case file?)", file.string(),
+                                  kMaxCaseFileBytes >> 20));
   if (text.empty())  // a 0-byte file is a mistake, not "all defaults" (a comment or newline is enough)
     throw ConfigError(fmt::format("{}: empty case file", file.string()));
   return from_string(text, file.string());

@@ -82,6 +82,9 @@ class ConfigSection {
   std::string path_;
 };
 
+// Largest case file read (a list of 1e6 [[particles]] is about 60 MiB).
+inline constexpr std::size_t kMaxCaseFileBytes = std::size_t{256} << 20;
+
 class Config {
  public:
   Config();

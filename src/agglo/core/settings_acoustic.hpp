@@ -133,8 +133,8 @@ struct AcousticSettings {
     Reals psd_times{t, {"output.psd_times", "s", "times of psd.csv, within the run", "0, t/4, t/2, 3t/4, t (t = run end)"},
                     std::nullopt, Range::nonnegative()};
     Integer psd_bins{t, {"output.psd_bins", "", "size bins of psd.csv"}, 60, 1, 100000};
-    Real psd_d_min{t, {"output.psd_d_min", "m", "smallest diameter of psd.csv"}, 1e-8, Range::positive()};
-    Real psd_d_max{t, {"output.psd_d_max", "m", "largest diameter of psd.csv"}, 1e-4, Range::positive()};
+    Real psd_d_min{t, {"output.psd_d_min", "m", "smallest diameter of psd.csv"}, 1e-8, Range::open_closed(0.0, 1.0)};
+    Real psd_d_max{t, {"output.psd_d_max", "m", "largest diameter of psd.csv"}, 1e-4, Range::open_closed(0.0, 1.0)};
     Real efficiency_interval{t, {"output.efficiency_interval", "s", "interval of efficiency.csv rows", "run end / 200"},
                              std::nullopt, Range::positive()};
     Reals snapshot_times{t, {"output.snapshot_times", "s", "times of snapshots.csv, within the run", "0, t/8, t/4, t/2 (t = run end)"},

@@ -83,8 +83,8 @@ struct ImpactSettings {
   struct Projectile {
     Table t{"projectile", kImpactCommands, "the incoming particle"};
     Real speed{t, {"projectile.speed", "m/s", "impact speed v_in"}, 0.18, Range::closed(0.0, 1e3)};
-    Real offset_radii{t, {"projectile.offset_radii", "r_p", "lateral offset along y"}, 0.05, Range::any()};
-    Real gap_radii{t, {"projectile.gap_radii", "r_p", "initial surface gap"}, 1.0, Range::positive()};
+    Real offset_radii{t, {"projectile.offset_radii", "r_p", "lateral offset along y"}, 0.05, Range::closed(-10.0, 10.0)};
+    Real gap_radii{t, {"projectile.gap_radii", "r_p", "initial surface gap"}, 1.0, Range::open_closed(0.0, 1e3)};
     Real radius{t, {"projectile.radius", "m", "projectile radius", "the agglomerate radius"}, std::nullopt,
                 Range::open_closed(0.0, 0.1)};
     Real charge{t, {"projectile.charge", "C", "projectile charge"}, 0.0, Range::closed(-1e-3, 1e-3)};
@@ -101,8 +101,8 @@ struct ImpactSettings {
 
   struct Vcrit {
     Table t{"vcrit", "vcrit, breakup", "critical break-up speed search"};
-    Real v_min{t, {"vcrit.v_min", "m/s", "lowest speed of the scan"}, 0.02, Range::positive()};
-    Real v_max{t, {"vcrit.v_max", "m/s", "highest speed of the scan"}, 0.6, Range::positive()};
+    Real v_min{t, {"vcrit.v_min", "m/s", "lowest speed of the scan"}, 0.02, Range::open_closed(0.0, 1e3)};
+    Real v_max{t, {"vcrit.v_max", "m/s", "highest speed of the scan"}, 0.6, Range::open_closed(0.0, 1e3)};
     Integer scan_points{t, {"vcrit.scan_points", "", "speeds of the coarse linear scan"}, 12, 3, 1000};
     Real tolerance{t, {"vcrit.tolerance", "m/s", "bisection tolerance, at least 1e-9 v_max"}, 5e-4, Range::positive()};
     Integer points_per_round{t,
@@ -115,10 +115,10 @@ struct ImpactSettings {
   struct Breakup {
     Table t{"breakup", "breakup", "break-up probability against speed"};
     Reals speeds{t, {"breakup.speeds", "m/s", "impact speeds", "the vcrit scan grid (scan_points from v_min to v_max)"},
-                 std::nullopt, Range::positive()};
+                 std::nullopt, Range::open_closed(0.0, 1e3)};
     Integer samples{t, {"breakup.samples", "", "runs per speed (offsets spread evenly)"}, 16, 1, 100000};
     Real offset_spread{t, {"breakup.offset_spread", "r_p", "half-width of the offset range"}, 0.05,
-                       Range::nonnegative()};
+                       Range::closed(0.0, 10.0)};
   } breakup;
 
   std::vector<const Table*> tables() const;

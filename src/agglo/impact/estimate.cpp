@@ -61,12 +61,30 @@ std::vector<Term> run_time_terms(const ImpactCase& c, double speed, const std::s
   return t;
 }
 
-// Keys of the largest term first, then those of the time step, then the others.
+// True when the run solves for induced charges (a solver other than coulomb and a permittivity that
+// differs from the medium's); with kappa = kappa_0 every solver reduces to point charges.
+bool induced_charges(const ImpactCase& c) {
+  if (!c.electrostatics || c.coupling.es.options.solver == "coulomb") return false;
+  bool differs = c.projectile.permittivity != c.medium_permittivity;
+  if (c.agglomerate.shape == "list")
+    for (const auto& p : c.agglomerate.particles) differs = differs || p.permittivity != c.medium_permittivity;
+  else
+    differs = differs || c.agglomerate.permittivity != c.medium_permittivity;
+  return differs;
+}
+
+// Keys of the largest term first, then those of the time step, then the others. A DEM step with
+// induced charges counts kInducedChargeStepWeight particle-steps (docs/limits.md).
 void add_steps(EstimateItem& item, double value, std::vector<Term> terms, const ImpactCase& c) {
   std::sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.value > b.value; });
-  item.value += value;
+  const bool induced = induced_charges(c);
+  item.value += induced ? value * kInducedChargeStepWeight : value;
   add_to(item, 0.0, terms.front().keys);
   add_to(item, 0.0, dt_keys(c));
+  if (induced) {
+    const auto& es = es::es_keys();
+    add_to(item, 0.0, {std::string(es.solver.dotted()), std::string(impact_keys().agglomerate.permittivity.dotted())});
+  }
 }
 
 double relax_steps(const ImpactCase& c) {

@@ -11,7 +11,9 @@
 //               of points_per_round runs (s = scan spacing; each round shrinks the bracket by that
 //               factor); bisection speeds lie above v_min, so T_a(v_min) bounds their approach
 //   breakup     speeds x samples runs
-// Steps are particle-steps: time steps x particles summed over every run. Memory: the particles, a
+// Steps are particle-steps: time steps x particles summed over every run; with induced charges (a
+// spectral or bem solver and a permittivity unlike the medium's) a step counts kInducedChargeStepWeight
+// particle-steps, the measured CPU-time ratio of such a step to a neutral one (docs/limits.md). Memory: the particles, a
 // neighbour list of at most kNeighboursPerParticle pairs per particle and the electrostatic solver
 // of every concurrent run (`threads` of them in an ensemble), plus for collide the time series and
 // snapshots it records in memory (vector capacity up to twice their size). Output: CSV rows, VTK
@@ -20,6 +22,10 @@
 #include "agglo/impact/impact_case.hpp"
 
 namespace agglo::impact {
+
+// Particle-steps one DEM step with induced charges counts in the step budget (measured: the seed-000
+// tetrahedron with kappa_p = 2.5 and 15 costs about 1e3 times the CPU time of the neutral one per step).
+inline constexpr double kInducedChargeStepWeight = 1000.0;
 
 // The DEM time step of the runs [s].
 double time_step(const ImpactCase& c);

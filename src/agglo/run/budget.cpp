@@ -59,7 +59,7 @@ double parse_size(std::string_view value, std::string_view source) {
 double parse_steps(std::string_view value, std::string_view source) {
   const auto v = plain_number(trimmed(value));
   if (!v || *v < 1.0)
-    throw ConfigError(fmt::format("{} = '{}': not a step count; give a number >= 1 of particle-steps, e.g. 2e11",
+    throw ConfigError(fmt::format("{} = '{}': not a step count; give a number >= 1 of particle-steps, e.g. 1e12",
                                   source, one_line(value)));
   return std::floor(*v);
 }

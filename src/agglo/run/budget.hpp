@@ -19,11 +19,12 @@
 
 namespace agglo::run {
 
-// 2e11 steps: 150x the largest shipped case (the 4 s acoustic baseline, 1.3e9 sample-steps; a default
-// breakup of 12 speeds x 16 offsets is bounded by 2.9e8 particle-steps) and 21x the largest study
-// sweep of bench/acoustic_studies.sh (9.4e9); hours of work on one core. A time step or run length
-// off by many orders of magnitude is far above it.
-inline constexpr double kDefaultMaxSteps = 2e11;
+// 1e12 steps: 3.5x the largest shipped case (a default breakup of a charged seed-000 case, 12 speeds x
+// 16 offsets with induced charges, 2.9e11 weighted particle-steps, about an hour on 2 cores), 750x the
+// 4 s acoustic baseline (1.3e9 sample-steps) and 100x the largest study sweep of
+// bench/acoustic_studies.sh (9.4e9); hours of work. A time step or run length off by many orders of
+// magnitude is far above it.
+inline constexpr double kDefaultMaxSteps = 1e12;
 // Share of the usable memory (cgroup limit or RAM) one process may plan to use.
 inline constexpr double kMemoryFraction = 0.8;
 // 1 GiB: about 270x the largest estimated output of a shipped case (3.7 MiB, the surface.vtu of
