@@ -1,5 +1,6 @@
 #pragma once
 // Shared helpers of the acoustics tests: build an engine from an inline TOML case.
+#include <cmath>
 #include <string>
 
 #include "agglo/acoustics/case_config.hpp"
@@ -14,5 +15,14 @@ inline AcousticCase parse_case(const std::string& toml) {
 }
 
 inline Engine make_engine(const std::string& toml) { return Engine(parse_case(toml).engine); }
+
+// docs/model.md §C.7.3: mean orthokinetic kernel of fine sample f and droplet sample d in the wave [m^3/s],
+//   <beta> = (pi/4)(d_d+d_f)^2 (2/pi) u_amp w |tau_d - tau_f| / sqrt((1 + w^2 tau_d^2)(1 + w^2 tau_f^2)).
+inline double mean_orthokinetic_kernel(const Engine& e, std::size_t f, std::size_t d) {
+  const SampleSet& p = e.particles();
+  const double w = e.settings().motion.sound.omega, ua = e.settings().motion.sound.u_amp;
+  const double tf = p.tau[f], td = p.tau[d], s = p.d[f] + p.d[d];
+  return 0.25 * s * s * 2.0 * ua * w * std::abs(td - tf) / std::sqrt((1 + w * w * td * td) * (1 + w * w * tf * tf));
+}
 
 }  // namespace agglo::acoustics::test

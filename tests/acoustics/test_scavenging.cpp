@@ -13,7 +13,6 @@
 #include <gtest/gtest.h>
 
 #include "agglo/acoustics/diagnostics.hpp"
-#include "agglo/core/constants.hpp"
 #include "helpers.hpp"
 
 using namespace agglo::acoustics;
@@ -61,10 +60,7 @@ always_coalesce = true
   const std::size_t f = 0, d = p0.size() - 1;  // a fine and a droplet sample
   ASSERT_EQ(p0.phase(f), Phase::solid);
   ASSERT_EQ(p0.phase(d), Phase::liquid);
-  const double w = e.settings().motion.sound.omega, ua = e.settings().motion.sound.u_amp;
-  const double tf = p0.tau[f], td = p0.tau[d], df = p0.d[f], dd = p0.d[d];
-  const double beta = agglo::constants::pi / 4 * (dd + df) * (dd + df) * (2 / agglo::constants::pi) * ua * w *
-                      std::abs(td - tf) / std::sqrt((1 + w * w * td * td) * (1 + w * w * tf * tf));
+  const double beta = test::mean_orthokinetic_kernel(e, f, d);
   const Counts c0 = count(p0, V);
   const double nd = c0.n_phase[1];  // droplet-carrying particles: constant (w_d > w_f)
   ASSERT_GT(p0.w[d], p0.w[f]);

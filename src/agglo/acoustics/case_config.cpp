@@ -188,6 +188,19 @@ void parse_domain(const ConfigSection& root, bool sound_on, double dmax, EngineS
   check_cells(k, dm, e, dmax);
 }
 
+// [sampling]; after the domain and populations (the clone factor depends on the cell count).
+void parse_sampling(const ConfigSection& root, AcousticCase& c) {
+  const auto& k = keys().sampling;
+  ConfigSection s = k.t.open(root);
+  SamplingSettings& ss = c.engine.sampling;
+  ss.placement = k.placement.read(s) == "random" ? Placement::random : Placement::stratified;
+  ss.min_samples_per_cell = k.min_samples_per_cell.read(s);
+  const std::size_t n = sample_count_after_cloning(c);
+  if (n > static_cast<std::size_t>(kMaxSamplesAfterCloning))
+    k.min_samples_per_cell.reject(s, fmt::format("gives {} samples after cloning in {} cells, more than the limit of {}",
+                                                 n, c.engine.motion.domain.num_cells(), kMaxSamplesAfterCloning));
+}
+
 void parse_kernels(const ConfigSection& root, EngineSettings& e) {
   const auto& k = keys().kernels;
   ConfigSection s = k.t.open(root);
@@ -248,6 +261,7 @@ AcousticCase parse_acoustic_case(Config& cfg) {
   parse_time(root, e);
   const double dmax = parse_populations(root, e);
   parse_domain(root, sound_on, dmax, e);
+  parse_sampling(root, c);
   parse_kernels(root, e);
   parse_outcomes(root, e.outcomes);
   parse_output(root, e.t_end, c.output);

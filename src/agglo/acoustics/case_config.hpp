@@ -1,6 +1,6 @@
 #pragma once
 // Parsing and validation of an acoustic case file (sections [gas], [sound], [domain], [time],
-// [[population]], [kernels], [outcomes], [output], key `seed`). Every default is written back
+// [[population]], [sampling], [kernels], [outcomes], [output], key `seed`). Every default is written back
 // into the config so that Config::resolved_toml() is the complete case. See docs/acoustics.md;
 // the keys, defaults and ranges are declared in agglo/core/settings_acoustic.hpp (docs/config.md).
 #include <vector>

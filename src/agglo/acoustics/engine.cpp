@@ -25,7 +25,7 @@ Engine::Engine(EngineSettings s)
   substeps_ = std::max(1, static_cast<int>(std::lround(s_.collision_dt / s_.motion_dt)));
   for (std::size_t k = 0; k < s_.populations.size(); ++k)
     sampled_.push_back(sample_population(s_.populations[k], static_cast<int>(k), s_.motion.domain, s_.seed,
-                                         s_.motion.gas, s_.motion.sound, p_));
+                                         s_.motion.gas, s_.motion.sound, p_, s_.sampling));
   for (std::size_t i = 0; i < p_.size(); ++i) {
     switch (s_.initial_velocity) {
       case InitialVelocity::steady:

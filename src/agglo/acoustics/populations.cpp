@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "agglo/core/constants.hpp"
-#include "agglo/core/rng.hpp"
 
 namespace agglo::acoustics {
 
@@ -20,18 +19,9 @@ double normal_quantile(double q) {
 }
 
 namespace {
-struct Draft {
-  double d = 0.0;    // diameter (or volume if by_volume)
-  double w = 0.0;    // real number represented (before rounding)
-};
-}  // namespace
-
-SampledPopulation sample_population(const PopulationSpec& s, int index, const Domain& dom, std::uint64_t seed,
-                                    const Gas& gas, const Sound& sound, SampleSet& p) {
+// Diameter and real number (before rounding) of every sample of the population, in size order.
+void draft(const PopulationSpec& s, double Ntot, std::vector<double>& diam, std::vector<double>& num) {
   using constants::pi;
-  const double V = dom.volume();
-  const double Ntot = s.number_concentration * V;
-  std::vector<double> diam, num;  // diameter and real number per sample
   const long n = s.samples;
   switch (s.distribution) {
     case Distribution::monodisperse:
@@ -78,14 +68,21 @@ SampledPopulation sample_population(const PopulationSpec& s, int index, const Do
       break;
     }
   }
+}
+}  // namespace
+
+SampledPopulation sample_population(const PopulationSpec& s, int index, const Domain& dom, std::uint64_t seed,
+                                    const Gas& gas, const Sound& sound, SampleSet& p, const SamplingSettings& sampling) {
+  const double Ntot = s.number_concentration * dom.volume();
+  std::vector<double> diam, num;  // diameter and real number per sample
+  draft(s, Ntot, diam, num);
   SampledPopulation out;
   out.first = p.size();
   out.real_number = Ntot;
+  out.requested = diam.size();
   double cum = 0.0, cum_rounded = 0.0;  // running real number and its rounding (conserving rounding)
   for (std::size_t m = 0; m < diam.size(); ++m) {
-    CounterRng rng(seed, 0x9000000000ULL + static_cast<std::uint64_t>(index), m);
-    const double x = rng.uniform() * dom.L[0], y = rng.uniform() * dom.L[1], z = rng.uniform() * dom.L[2];
-    const double vol = pi * diam[m] * diam[m] * diam[m] / 6.0;
+    const double vol = constants::pi * diam[m] * diam[m] * diam[m] / 6.0;
     double w;
     if (s.conserving_rounding) {
       cum += num[m];
@@ -95,11 +92,13 @@ SampledPopulation sample_population(const PopulationSpec& s, int index, const Do
       w = std::max(1.0, std::round(num[m]));
     }
     const bool solid = s.phase == Phase::solid;
-    const std::size_t i = p.add(x, y, z, solid ? vol : 0.0, solid ? 0.0 : vol, s.density * vol, w, index, gas, sound);
-    p.id[i] = i;
+    p.add(0.0, 0.0, 0.0, solid ? vol : 0.0, solid ? 0.0 : vol, s.density * vol, w, index, gas, sound);
     out.weight_sum += w;
   }
-  out.count = diam.size();
+  out.clone_factor = clone_factor(static_cast<std::int64_t>(diam.size()), dom.num_cells(), sampling.min_samples_per_cell);
+  out.count = split_into_clones(p, out.first, diam.size(), out.clone_factor);
+  place_samples(p, out.first, out.count, sampling.placement, dom, seed, index);
+  for (std::size_t i = out.first; i < out.first + out.count; ++i) p.id[i] = i;
   return out;
 }
 

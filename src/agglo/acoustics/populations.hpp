@@ -9,13 +9,15 @@
 // each sample's real number (default; the total can be off by up to 0.5 per sample, e.g. -7.5 % for
 // 3200 samples of 5.41 droplets each), "conserving" rounds the running sum so that the weights add
 // up to N_tot V within 0.5 (samples then differ by one in weight).
-// Positions are uniform in the periodic box (counter-based RNG keyed by population and sample).
+// The samples are then split into clones and placed over the cells as set by [sampling]
+// (sampling.hpp: stratified or uniform in the box; counter-based RNG keyed by population and sample).
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "agglo/acoustics/drag.hpp"
 #include "agglo/acoustics/samples.hpp"
+#include "agglo/acoustics/sampling.hpp"
 #include "agglo/core/settings_acoustic.hpp"
 
 namespace agglo::acoustics {
@@ -44,13 +46,16 @@ struct PopulationSpec {
 };
 
 struct SampledPopulation {
-  std::size_t first = 0, count = 0;
+  std::size_t first = 0, count = 0;  // samples [first, first + count) of the SampleSet, clones included
+  std::size_t requested = 0;         // population.samples (before cloning)
+  std::int64_t clone_factor = 1;     // k of sampling.hpp
   double real_number = 0.0;    // N_tot V requested
   double weight_sum = 0.0;     // after integer rounding
 };
 
 SampledPopulation sample_population(const PopulationSpec& spec, int index, const Domain& dom, std::uint64_t seed,
-                                    const Gas& gas, const Sound& sound, SampleSet& p);
+                                    const Gas& gas, const Sound& sound, SampleSet& p,
+                                    const SamplingSettings& sampling = {});
 
 double normal_cdf(double z);
 double normal_quantile(double q);

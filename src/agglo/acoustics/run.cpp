@@ -70,6 +70,18 @@ std::string step_warning(const EngineSettings& S) {
       S.motion_dt, per, 1.0 / (M.sound.frequency * std::max(2.0, even)));
 }
 
+// Samples per cell and clone factor of population k ([sampling], sampling.hpp).
+std::string placement_log(std::size_t k, const SampledPopulation& sp, const EngineSettings& S) {
+  const auto cells = static_cast<std::size_t>(S.motion.domain.num_cells());
+  const bool strat = S.sampling.placement == Placement::stratified;
+  return fmt::format("population {} sampling: placement={} samples per cell={:.6g} ({}) clone factor={} ({} samples "
+                     "requested, min_samples_per_cell={})\n",
+                     k, strat ? "stratified" : "random", static_cast<double>(sp.count) / static_cast<double>(cells),
+                     strat ? fmt::format("each cell {} or {}", sp.count / cells, (sp.count + cells - 1) / cells)
+                           : std::string("on average"),
+                     sp.clone_factor, sp.requested, S.sampling.min_samples_per_cell);
+}
+
 // Sampling of each population; warns when integer weights miss the requested number by > 1 %.
 std::string sampling_log(const Engine& eng, const RunHooks& hooks) {
   const auto& S = eng.settings();
@@ -80,6 +92,7 @@ std::string sampling_log(const Engine& eng, const RunHooks& hooks) {
     log += fmt::format("population {} '{}': {} samples, requested N V = {:.6g}, sum of integer weights = {:.6g} "
                        "(rel. diff {:.3g})\n",
                        k, S.populations[k].name, sp.count, sp.real_number, sp.weight_sum, rel);
+    log += placement_log(k, sp, S);
     if (sp.real_number > 0 && std::abs(rel) > 0.01) {
       const std::string w = fmt::format(
           "population {} '{}': the integer sample weights represent {:.4g} particles instead of {:.4g} "

@@ -76,6 +76,18 @@ struct AcousticSettings {
                           Range::nonnegative()};
   } population;
 
+  struct Sampling {
+    Table t{"sampling", kAcousticCommands, "how the samples are spread over the cells at t = 0"};
+    Choice placement{t, {"sampling.placement", "",
+                         "stratified: every population's samples spread evenly over the cells; random: uniform "
+                         "in the box (the seed's method)"},
+                     "stratified", {"stratified", "random"}};
+    Integer min_samples_per_cell{t, {"sampling.min_samples_per_cell", "",
+                                     "a population with fewer samples per cell is split into clones of lower "
+                                     "weight at t = 0 (0 = never; the seed's method)"},
+                                 16, 0, 1000000};
+  } sampling;
+
   struct Domain {
     Table t{"domain", kAcousticCommands, "periodic box and cells"};
     Real length_x{t, {"domain.length_x", "m", "length along the wave", "one wavelength c/f (required without sound)"},

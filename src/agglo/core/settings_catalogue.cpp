@@ -32,7 +32,8 @@ std::vector<const Table*> ImpactSettings::tables() const {
 }
 
 std::vector<const Table*> AcousticSettings::tables() const {
-  return {&top.t, &gas.t, &sound.t, &time.t, &population.t, &domain.t, &kernels.t, &outcomes.t, &output.t, &sectional.t};
+  return {&top.t,      &gas.t,    &sound.t,   &time.t,     &population.t, &sampling.t,
+          &domain.t,   &kernels.t, &outcomes.t, &output.t,   &sectional.t};
 }
 
 std::vector<const Table*> all_tables() {
