@@ -79,7 +79,11 @@ TEST(SphereTriangulation, CachedPerPatchCountAndFast) {
   const auto t0 = std::chrono::steady_clock::now();
   const auto tri = bem::sphere_convex_hull(bem::fibonacci_sphere(2000));
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+#ifndef __SANITIZE_ADDRESS__  // AddressSanitizer makes the hull several times slower: no time bound there
   EXPECT_LT(s, 0.1) << "hull of 2000 points took " << s << " s";
+#else
+  static_cast<void>(s);
+#endif
   const auto& a = bem::fibonacci_sphere_triangles(2000);
   const auto& b = bem::fibonacci_sphere_triangles(2000);
   EXPECT_EQ(&a, &b);

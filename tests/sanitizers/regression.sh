@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Output regression in the sanitizer build (AGGLO_SANITIZE): tests/regression/check.sh, i.e. every
+# shipped case must run (any sanitizer report makes its run fail) and every output must match the
+# stored checksums, except the files listed in regression_allowed_diffs.txt, which explains why they
+# may differ there. Those files must still be written.
+# Usage: regression.sh AGGLO_EXECUTABLE SOURCE_DIR
+set -u
+A=$1; SRC=$2
+out=$(bash "$SRC/tests/regression/check.sh" "$A" "$SRC" 2>&1)
+rc=$?
+echo "$out"
+[ $rc -eq 0 ] && exit 0
+allowed=$(grep -v '^#' "$SRC/tests/sanitizers/regression_allowed_diffs.txt" | sed '/^$/d; s/^/differs: /')
+unexpected=$(printf '%s\n' "$out" | grep -E '^(differs|missing|new file|FAIL)' | grep -vxF -- "$allowed")
+if [ -n "$unexpected" ] || ! printf '%s\n' "$out" | grep -q ' files checked, '; then
+  echo "FAIL: differences not explained by tests/sanitizers/regression_allowed_diffs.txt:"
+  printf '%s\n' "$unexpected"
+  exit 1
+fi
+echo "ok: the only differences are the files of regression_allowed_diffs.txt"
