@@ -44,9 +44,9 @@ err "electrostatics.patches_per_sphere" electrostatics "$ES" --set electrostatic
 SNAP=$(/usr/bin/python3 -c "print('[' + ','.join('%g' % (i * 4e-4) for i in range(10000)) + ']')")
 err "output.snapshot_times" acoustic "$AC" --set "output.snapshot_times=$SNAP"
 err "--max-output or AGGLO_MAX_OUTPUT" acoustic "$AC" --set "output.snapshot_times=$SNAP"
-err "the memory budget" acoustic "$AC" --set time.end=1e-4 --set population.1.samples=100000000 \
+err "the memory budget" acoustic "$AC" --set time.end=1e-4 --set population.1.samples=99000000 \
   --set "output.psd_times=[0.0]" --set "output.snapshot_times=[0.0]"
-err "population.samples" acoustic "$AC" --set time.end=1e-4 --set population.1.samples=100000000 \
+err "population.samples" acoustic "$AC" --set time.end=1e-4 --set population.1.samples=99000000 \
   --set "output.psd_times=[0.0]" --set "output.snapshot_times=[0.0]"
 /usr/bin/python3 - "$T/many.toml" <<'PY'
 import sys

@@ -12,7 +12,7 @@ head -1 "$T/vcrit" | grep -q '^\[vcrit\] (vcrit, breakup)' || fail "header: $(he
 [ "$(grep -c '^  vcrit\.' "$T/vcrit")" -eq 5 ] || fail "vcrit must list 5 keys: $(cat "$T/vcrit")"
 grep -Eq '^  vcrit\.points_per_round +integer +- +2 +\[1, 64\] +speeds tried per bisection round' "$T/vcrit" \
   || fail "points_per_round line: $(grep points_per_round "$T/vcrit")"
-grep -Eq '^  vcrit\.v_min +real +m/s +0\.02 +\(0, inf\) ' "$T/vcrit" || fail "v_min line"
+grep -Eq '^  vcrit\.v_min +real +m/s +0\.02 +\(0, 1000\] ' "$T/vcrit" || fail "v_min line"
 
 $A config --list population | grep -q '^\[\[population\]\]' || fail "array sections print as [[name]]"
 $A config --list top | grep -q '^  seed ' || fail "top-level keys under 'top'"

@@ -196,6 +196,12 @@ void parse_sampling(const ConfigSection& root, AcousticCase& c) {
   ss.placement = k.placement.read(s) == "random" ? Placement::random : Placement::stratified;
   ss.min_samples_per_cell = k.min_samples_per_cell.read(s);
   const std::size_t n = sample_count_after_cloning(c);
+  double requested = 0.0;
+  for (const auto& p : c.engine.populations) requested += static_cast<double>(p.samples);
+  if (requested > kMaxSamplesAfterCloning)  // too many before any cloning: the samples are the cause
+    throw ConfigError(fmt::format("{}: key '{}': the populations request {:.0f} samples in all, more than the limit "
+                                  "of {}", c.file, keys().population.samples.dotted(), requested,
+                                  kMaxSamplesAfterCloning));
   if (n > static_cast<std::size_t>(kMaxSamplesAfterCloning))
     k.min_samples_per_cell.reject(s, fmt::format("gives {} samples after cloning in {} cells, more than the limit of {}",
                                                  n, c.engine.motion.domain.num_cells(), kMaxSamplesAfterCloning));

@@ -1,4 +1,5 @@
 #include "agglo/acoustics/estimate.hpp"
+#include "agglo/acoustics/sampling.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,8 +28,7 @@ std::string key(const settings::Setting& s) { return std::string(s.dotted()); }
 Estimate acoustic_estimate(const AcousticCase& c) {
   const auto& k = settings::acoustic_settings();
   const auto& s = c.engine;
-  double samples = 0.0;
-  for (const auto& p : s.populations) samples += static_cast<double>(p.samples);
+  const double samples = static_cast<double>(sample_count_after_cloning(c));  // [sampling] clones included
   const double steps = std::round(s.t_end / s.collision_dt);
   const double sub = s.motion.integrator == Integrator::none ? 0.0 : std::max(1.0, std::round(s.collision_dt / s.motion_dt));
   const auto& cells = s.motion.domain.cells;
@@ -43,7 +43,8 @@ Estimate acoustic_estimate(const AcousticCase& c) {
 
   Estimate e;
   add_to(e.steps, steps * samples * (1.0 + sub),
-         {key(k.time.end), key(k.time.collision_dt), key(k.population.samples), key(k.time.motion_dt)});
+         {key(k.time.end), key(k.time.collision_dt), key(k.population.samples), key(k.sampling.min_samples_per_cell),
+          key(k.time.motion_dt)});
   std::vector<std::string> mem_keys{key(k.population.samples), key(k.domain.cells_x), key(k.domain.cells_y),
                                     key(k.domain.cells_z)};
   if (snap_rows > samples) mem_keys.insert(mem_keys.begin(), key(k.output.snapshot_times));
