@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -75,15 +74,8 @@ TEST(SphereTriangulation, FibonacciHullIsClosedOutwardAndConverges) {
   EXPECT_LT(prev_err, 5e-3);  // n = 2000: relative area error ~ 2 pi / n
 }
 
-TEST(SphereTriangulation, CachedPerPatchCountAndFast) {
-  const auto t0 = std::chrono::steady_clock::now();
+TEST(SphereTriangulation, CachedPerPatchCount) {  // (its speed is a benchmark's business, not a test's)
   const auto tri = bem::sphere_convex_hull(bem::fibonacci_sphere(2000));
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-#ifndef __SANITIZE_ADDRESS__  // AddressSanitizer makes the hull several times slower: no time bound there
-  EXPECT_LT(s, 0.1) << "hull of 2000 points took " << s << " s";
-#else
-  static_cast<void>(s);
-#endif
   const auto& a = bem::fibonacci_sphere_triangles(2000);
   const auto& b = bem::fibonacci_sphere_triangles(2000);
   EXPECT_EQ(&a, &b);
