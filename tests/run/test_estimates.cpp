@@ -52,6 +52,14 @@ double resident_peak() {
 
 // One collision: the engine's time steps x particles never exceed the bound, and the bound is within
 // 10x of them (it assumes every extension and the automatic approach limit 5 (gap + r_p) / v).
+#ifdef __SANITIZE_ADDRESS__
+// AddressSanitizer's shadow memory and redzones inflate the resident memory: the memory comparisons
+// only hold for the real (uninstrumented) build, which CI tests as well.
+constexpr bool kResidentMemoryMeasurable = false;
+#else
+constexpr bool kResidentMemoryMeasurable = true;
+#endif
+
 TEST(Estimates, CollideStepsBoundTheRun) {
   for (const char* name : {"seed000_neutral_tetrahedron.toml", "seed000_charged_square_k1.toml"}) {
     Config cfg = shipped(name);
@@ -101,14 +109,17 @@ TEST(Estimates, AcousticStepsAndMemory) {
   const double grown = resident_peak() - before;
   const double sub = std::round(c.engine.collision_dt / c.engine.motion_dt);
   EXPECT_DOUBLE_EQ(e.steps.value, static_cast<double>(obs.steps) * static_cast<double>(obs.samples) * (1.0 + sub));
-  EXPECT_LE(grown, e.memory.value);
-  EXPECT_GE(2.0 * grown, e.memory.value) << "estimate " << e.memory.value << " B, measured " << grown << " B";
+  if (kResidentMemoryMeasurable) {
+    EXPECT_LE(grown, e.memory.value);
+    EXPECT_GE(2.0 * grown, e.memory.value) << "estimate " << e.memory.value << " B, measured " << grown << " B";
+  }
   std::printf("acoustic memory: estimate %.4g B, measured peak growth %.4g B\n", e.memory.value, grown);
 }
 
 // BEM: the memory estimate of two spheres with 4000 patches each bounds the measured growth and is
 // within 2x of it (most of it is the GMRES basis, 101 vectors of 8e3 doubles).
 TEST(Estimates, BemMemory) {
+  if (!kResidentMemoryMeasurable) GTEST_SKIP() << "resident memory is not measurable under AddressSanitizer";
   omp_set_num_threads(1);
   Config cfg = shipped("electrostatics_two_spheres.toml",
                        {"electrostatics.solver=\"bem\"", "electrostatics.patches_per_sphere=4000"});
