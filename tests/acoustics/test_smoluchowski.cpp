@@ -23,15 +23,7 @@ constexpr double kV0 = 1e-18;             // m^3
 std::string case_text(const std::string& kernel_lines, double end, double dt) {
   return fmt::format(R"(
 seed = 11
-[gas]
-gravity = false
-[sound]
-enabled = false
-[domain]
-length_x = 1.0
-length_y = 1.0
-length_z = 1.0
-cells_x = 1
+{}
 [time]
 end = {}
 collision_dt = {}
@@ -48,7 +40,7 @@ samples = 100000
 [outcomes]
 always_coalesce = true
 )",
-                     end, dt, kV0, kN0, kernel_lines);
+                     test::kCoagulationBox, end, dt, kV0, kN0, kernel_lines);
 }
 
 struct Errors {

@@ -107,6 +107,7 @@ void parse_time(const ConfigSection& root, EngineSettings& e) {
                                               : Integrator::none;
   const std::string iv = k.initial_velocity.read(ti);
   e.initial_velocity = iv == "steady" ? InitialVelocity::steady : iv == "gas" ? InitialVelocity::gas : InitialVelocity::rest;
+  e.selection = k.selection.read(ti) == "binned" ? Selection::binned : Selection::nanbu;
   e.strict_guard = k.nanbu_guard.read(ti) == "strict";
   e.max_subcycles = static_cast<std::uint64_t>(k.max_subcycles.read(ti));
 }

@@ -186,15 +186,20 @@ void Engine::step() {
   ctx.max_subcycles = s_.max_subcycles;
   const int nc = static_cast<int>(s_.motion.domain.num_cells());
   const std::uint64_t st = step_;
+  const bool binned = s_.selection == Selection::binned;
+  if (binned) local_of_.resize(n);
   // Exceptions must not leave an OpenMP region: keep the message of the lowest failing cell.
   std::vector<std::string> errors(static_cast<std::size_t>(nc));
 #pragma omp parallel for schedule(dynamic, 1) if (n >= kParallelMinSamples)
   for (int c = 0; c < nc; ++c) {
-    cell_stats_[c] = NanbuStats{};
+    cell_stats_[c] = CollisionStats{};
     const std::size_t b = start_[c], e = start_[c + 1];
     try {
-      if (e - b >= 2)
-        collide_cell(p_, order_.data() + b, e - b, static_cast<std::uint64_t>(c), st, ctx, cell_stats_[c]);
+      const auto cell = static_cast<std::uint64_t>(c);
+      if (e - b >= 2 && binned)
+        binned_collide_cell(p_, order_.data() + b, e - b, cell, st, ctx, cell_stats_[c], local_of_.data());
+      else if (e - b >= 2)
+        collide_cell(p_, order_.data() + b, e - b, cell, st, ctx, cell_stats_[c]);
     } catch (const std::exception& ex) {
       errors[static_cast<std::size_t>(c)] = ex.what();
     }

@@ -1,7 +1,7 @@
 #pragma once
 // DSMC acoustic agglomeration engine (docs/model.md Part C): sampled particles in a periodic box,
 // motion in the sound field (drag.hpp) over each collision step dt_c, then binning into cells
-// and one modified-Nanbu collision step per cell (nanbu.hpp). Cells run in parallel (OpenMP);
+// and one collision step per cell by the selected algorithm (nanbu.hpp, binned.hpp). Cells run in parallel (OpenMP);
 // every random draw comes from a counter-based stream keyed by (seed, cell, step) or
 // (seed, population, sample), so a run is bitwise reproducible whatever the thread count.
 #include <cstdint>
@@ -10,6 +10,7 @@
 
 #include "agglo/acoustics/drag.hpp"
 #include "agglo/acoustics/kernels.hpp"
+#include "agglo/acoustics/binned.hpp"
 #include "agglo/acoustics/nanbu.hpp"
 #include "agglo/acoustics/outcomes.hpp"
 #include "agglo/acoustics/samples.hpp"
@@ -30,6 +31,7 @@ struct EngineSettings {
   double collision_dt = 1e-5;         // dt_c [s]
   double motion_dt = 1e-5;            // [s]; collision_dt / motion_dt substeps per collision step
   InitialVelocity initial_velocity = InitialVelocity::steady;
+  Selection selection = Selection::nanbu;  // collision-pair selection (collision_step.hpp)
   bool strict_guard = false;
   std::uint64_t max_subcycles = 100000;
   std::uint64_t seed = 1;
@@ -51,7 +53,7 @@ class Engine {
   const SampleSet& particles() const { return p_; }
   SampleSet& particles() { return p_; }
   const std::vector<SampledPopulation>& sampled() const { return sampled_; }
-  const NanbuStats& stats() const { return stats_; }
+  const CollisionStats& stats() const { return stats_; }
   const Kernel& kernel() const { return kernel_; }
 
   // Largest N * P_bound(dt_c) over the samples of the current state (guard check at start-up); the
@@ -71,11 +73,12 @@ class Engine {
   SampleSet p_;
   Kernel kernel_;
   std::vector<SampledPopulation> sampled_;
-  NanbuStats stats_;
+  CollisionStats stats_;
   std::uint64_t step_ = 0;
   int substeps_ = 1;
   std::vector<std::uint32_t> cell_of_, order_, start_, fill_;
-  std::vector<NanbuStats> cell_stats_;
+  std::vector<CollisionStats> cell_stats_;
+  std::vector<std::uint32_t> local_of_;  // scratch of the binned selection
 };
 
 }  // namespace agglo::acoustics

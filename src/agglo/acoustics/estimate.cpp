@@ -14,7 +14,7 @@ namespace {
 // engine.hpp), with the slack of the arrays grown sample by sample while sampling.
 constexpr double kSampleBytes = 320.0;
 // Per cell: statistics, start and fill indices, an error string slot (engine.cpp).
-constexpr double kCellBytes = sizeof(NanbuStats) + 2.0 * sizeof(std::uint32_t) + 32.0;
+constexpr double kCellBytes = sizeof(CollisionStats) + 2.0 * sizeof(std::uint32_t) + 32.0;
 // Text bytes of one row of efficiency.csv, psd.csv and snapshots.csv; run.log, summary.json, plots.
 constexpr double kEfficiencyRowBytes = 180.0;
 constexpr double kPsdRowBytes = 110.0;

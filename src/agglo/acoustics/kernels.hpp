@@ -34,6 +34,15 @@ class Kernel {
   double bound(const SampleSet& p, std::size_t i, const CellBounds& cb) const;
   // Upper bound of beta over every pair of the cell.
   double bound_cell(const CellBounds& cb) const;
+  // Per mechanism (binned selection): how many are switched on, the k-th one's beta, and every one's
+  // upper bound over the pairs i in group a, j in group b (out[k], k < mechanism_count()).
+  std::size_t mechanism_count() const { return m_.active(); }
+  double mechanism_beta(std::size_t k, const SampleSet& p, std::size_t i, std::size_t j, double r) const {
+    return m_.beta_of(k, p, i, j, r);
+  }
+  void mechanism_bounds(const CellBounds& a, const CellBounds& b, double* out) const { m_.bound_pair_all(a, b, out); }
+  // Derived bound fields of a group after its includes (call before mechanism_bounds reads it).
+  void prepare(CellBounds& cb) const { m_.prepare(cb); }
   bool needs_distance() const { return m_.needs().distance; }
   bool needs_thermal_speed() const { return m_.needs().thermal_speed; }  // CellBounds::cbar_max
   bool needs_volume() const { return m_.needs().volume; }                // CellBounds::vol_max

@@ -5,33 +5,12 @@
 
 #include <fmt/format.h>
 
-#include "agglo/acoustics/merge.hpp"
-#include "agglo/core/constants.hpp"
+#include "agglo/acoustics/cell_events.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_acoustic.hpp"
 #include "agglo/core/rng.hpp"
 
 namespace agglo::acoustics {
-
-void NanbuStats::add(const NanbuStats& o) {
-  trials += o.trials;
-  kernel_evals += o.kernel_evals;
-  collisions += o.collisions;
-  for (int k = 0; k < 3; ++k) {
-    coalescences[k] += o.coalescences[k];
-    rebounds[k] += o.rebounds[k];
-  }
-  particle_steps += o.particle_steps;
-  subcycled += o.subcycled;
-  max_subcycles = std::max(max_subcycles, o.max_subcycles);
-  max_bound_pn = std::max(max_bound_pn, o.max_bound_pn);
-  max_pn = std::max(max_pn, o.max_pn);
-  violations += o.violations;
-  refills += o.refills;
-  dead += o.dead;
-  energy_lost += o.energy_lost;
-  energy_returned += o.energy_returned;
-}
 
 CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
                        const Gas& gas) {
@@ -87,40 +66,14 @@ double guard_pn(const SampleSet& p, std::size_t i, std::size_t N, const CellBoun
 
 namespace {
 
-PairType pair_type(Phase a, Phase b) {
-  if (a == Phase::liquid || b == Phase::liquid) return PairType::droplet;
-  if (a == Phase::solid && b == Phase::solid) return PairType::dry;
-  return PairType::wet;
-}
-
-// Unit normal from i to j at contact for a hard-sphere encounter with relative velocity G:
-// uniform impact parameter over the collision disk (b^2 uniform), uniform azimuth.
-Vec3 contact_normal(const Vec3& G, CounterRng& rng) {
-  const double u1 = rng.uniform(), u2 = rng.uniform();
-  const double g = norm(G);
-  Vec3 e = g > 0.0 ? G / g : Vec3{1.0, 0.0, 0.0};
-  // Orthonormal basis (a, b) perpendicular to e.
-  Vec3 ref = std::abs(e.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-  Vec3 a = cross(e, ref);
-  a /= norm(a);
-  const Vec3 b = cross(e, a);
-  const double cth = std::sqrt(1.0 - u1), sth = std::sqrt(u1);
-  const double ph = 2.0 * constants::pi * u2;
-  return cth * e + sth * (std::cos(ph) * a + std::sin(ph) * b);
-}
-
-double min_image(double d, double L) { return d - L * std::nearbyint(d / L); }
-
 // The collision step of one cell: state shared by the steps of its samples.
 class CellCollision {
  public:
   CellCollision(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
-                const CollisionContext& ctx, NanbuStats& st);
+                const CollisionContext& ctx, CollisionStats& st);
   void run();
 
  private:
-  void refill(std::size_t dead);
-  void compensate(std::size_t i, std::size_t j);
   void collide(std::size_t i, std::size_t j);
   bool evaluate(std::size_t i, std::size_t j, double h, double thr);
   bool trial(std::size_t i, double h, double pbound);
@@ -133,102 +86,29 @@ class CellCollision {
   const std::size_t n;
   const std::uint64_t cell, step;
   const CollisionContext& ctx;
-  NanbuStats& st;
+  CollisionStats& st;
   const Kernel& K;
-  const OutcomeParams& oc;
   const std::size_t N;  // dead samples stay candidates (they are refilled when possible): the draw is uniform over n
   const double Vc, invN;
   CellBounds cb;
   CounterRng rng;
+  CellEvents events;
   const bool need_r, excl;
-  std::vector<std::uint32_t> debtors;
   double pcell = 0.0;  // cell-wide majorant probability of a full step
 };
 
 CellCollision::CellCollision(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_, std::uint64_t cell_,
-                             std::uint64_t step_, const CollisionContext& ctx_, NanbuStats& st_)
-    : p(p_), idx(idx_), n(n_), cell(cell_), step(step_), ctx(ctx_), st(st_), K(*ctx_.kernel), oc(*ctx_.outcomes),
+                             std::uint64_t step_, const CollisionContext& ctx_, CollisionStats& st_)
+    : p(p_), idx(idx_), n(n_), cell(cell_), step(step_), ctx(ctx_), st(st_), K(*ctx_.kernel),
       N(n_), Vc(ctx_.domain.cell_volume()), invN(1.0 / static_cast<double>(n_)),
       cb(cell_bounds(p_, idx_, n_, K, *ctx_.gas)), rng(ctx_.seed, 0x100000000ULL + cell_, step_),
-      need_r(K.needs_distance()), excl(K.settings().exclude_same_population) {
-  if (oc.energy_compensation)
-    for (std::size_t a = 0; a < n; ++a)
-      if (p.debt[idx[a]] > 0.0) debtors.push_back(idx[a]);
-}
+      events(p_, idx_, n_, ctx_, st_, rng), need_r(K.needs_distance()), excl(K.settings().exclude_same_population) {}
 
-// A sample whose weight dropped to 0 takes half of the heaviest sample of the cell.
-void CellCollision::refill(std::size_t dead) {
-  std::size_t best = dead;
-  double wb = 1.0;
-  for (std::size_t a = 0; a < n; ++a)
-    if (p.w[idx[a]] > wb) {
-      wb = p.w[idx[a]];
-      best = idx[a];
-    }
-  if (best == dead) {
-    ++st.dead;
-    return;
-  }
-  const std::uint64_t keep_id = p.id[dead];
-  p.copy_sample(best, dead);
-  p.id[dead] = keep_id;
-  p.w[best] = std::ceil(0.5 * wb);
-  p.w[dead] = std::floor(0.5 * wb);
-  p.debt[dead] = 0.0;
-  p.debt_ref[dead] = 0.0;
-  ++st.refills;
-}
-
-// Gives the first fitting split-merge debt back to the pair (i, j) as relative kinetic energy.
-void CellCollision::compensate(std::size_t i, std::size_t j) {
-  if (!oc.energy_compensation) return;
-  for (std::size_t k = 0; k < debtors.size(); ++k) {
-    const std::size_t h = debtors[k];
-    if (!(p.debt[h] > 0.0)) continue;
-    const double Mref = p.debt_ref[h];
-    const double ri = p.w[i] * p.mass[i] / Mref, rj = p.w[j] * p.mass[j] / Mref;
-    if ((ri > 0.5 && ri < 2.0) || (rj > 0.5 && rj < 2.0)) {
-      if (add_relative_energy(p, i, j, p.debt[h])) {
-        st.energy_returned += p.debt[h];
-        p.debt[h] = 0.0;
-        cb.include(p, i, *ctx.gas);
-        cb.include(p, j, *ctx.gas);
-      }
-      return;
-    }
-  }
-}
-
-// Outcome of a collision of samples i and j: coalescence or rebound.
+// Outcome of a collision of samples i and j; the cell bounds take in every changed sample.
 void CellCollision::collide(std::size_t i, std::size_t j) {
-  ++st.collisions;
-  const PairType type = pair_type(p.phase(i), p.phase(j));
-  bool coalesce = oc.always_coalesce || type == PairType::droplet;
-  Vec3 nrm;
-  double gn = 0.0;
-  if (!coalesce) {
-    const Vec3 G{p.vx[i] - p.vx[j], p.vy[i] - p.vy[j], p.vz[i] - p.vz[j]};
-    nrm = contact_normal(G, rng);
-    gn = dot(G, nrm);
-    const double vcr = type == PairType::dry ? critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j])
-                                             : critical_velocity_wet(oc, p.d[i], p.d[j]);
-    coalesce = gn <= vcr;
-  }
-  if (coalesce) {
-    ++st.coalescences[static_cast<int>(type)];
-    coalesce_weighted(p, i, j, *ctx.gas, *ctx.sound);
-    if (p.w[i] <= 0.0) refill(i);
-    if (p.w[j] <= 0.0) refill(j);
-  } else {
-    ++st.rebounds[static_cast<int>(type)];
-    const double e = type == PairType::dry ? oc.restitution : wet_restitution(oc, p.d[i], p.d[j], gn);
-    const double dE = rebound_weighted(p, i, j, nrm, e, oc.friction);
-    st.energy_lost += dE;
-    if (dE > 0.0) debtors.push_back(static_cast<std::uint32_t>(p.w[i] > p.w[j] ? i : j));
-    compensate(i, j);
-  }
-  cb.include(p, i, *ctx.gas);
-  cb.include(p, j, *ctx.gas);
+  events.collide(i, j);
+  for (const std::uint32_t s : events.touched()) cb.include(p, s, *ctx.gas);
+  events.clear_touched();
 }
 
 // Kernel evaluation of a draw that passed the majorant: collide iff P_ij > thr. Returns true if i
@@ -236,13 +116,7 @@ void CellCollision::collide(std::size_t i, std::size_t j) {
 bool CellCollision::evaluate(std::size_t i, std::size_t j, double h, double thr) {
   if (excl && p.pop[i] == p.pop[j]) return false;
   ++st.kernel_evals;
-  double r = 0.0;
-  if (need_r) {
-    const double dx = min_image(p.x[i] - p.x[j], ctx.domain.L[0]);
-    const double dy = min_image(p.y[i] - p.y[j], ctx.domain.L[1]);
-    const double dz = min_image(p.z[i] - p.z[j], ctx.domain.L[2]);
-    r = std::sqrt(dx * dx + dy * dy + dz * dz);
-  }
+  const double r = need_r ? pair_distance(p, i, j, ctx.domain) : 0.0;
   const double beta = K.beta(p, i, j, r);
   const double P = beta * std::max(p.w[i], p.w[j]) * h / (2.0 * Vc);
   st.max_pn = std::max(st.max_pn, P * static_cast<double>(N));
@@ -371,7 +245,7 @@ void CellCollision::run() {
 }  // namespace
 
 void collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
-                  const CollisionContext& ctx, NanbuStats& st) {
+                  const CollisionContext& ctx, CollisionStats& st) {
   std::size_t live = 0;
   for (std::size_t a = 0; a < n; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
   if (live < 2) return;

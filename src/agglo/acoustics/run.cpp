@@ -15,7 +15,20 @@ namespace agglo::acoustics {
 
 namespace {
 
-std::string guard_report(const NanbuStats& s) {
+std::string binned_report(const CollisionStats& s) {
+  const double acc = s.trials ? 100.0 * static_cast<double>(s.collisions) / static_cast<double>(s.trials) : 0.0;
+  return fmt::format(
+      "binned: particle_steps={} candidates={} kernel_evals={} collisions={} ({:.3g}% of candidates) "
+      "coalescences(droplet,dry,wet)=({},{},{}) rebounds(droplet,dry,wet)=({},{},{})\n"
+      "binned majorants: group_pair_processes={} max beta/majorant={:.4g} violations(beta>majorant)={}\n"
+      "binned refills={} dead_samples={} split_merge_energy_lost={:.6g} J compensated={:.6g} J\n",
+      s.particle_steps, s.trials, s.kernel_evals, s.collisions, acc, s.coalescences[0], s.coalescences[1],
+      s.coalescences[2], s.rebounds[0], s.rebounds[1], s.rebounds[2], s.bin_pairs, s.max_pn, s.violations, s.refills,
+      s.dead, s.energy_lost, s.energy_returned);
+}
+
+std::string guard_report(const CollisionStats& s, Selection sel) {
+  if (sel == Selection::binned) return binned_report(s);
   return fmt::format(
       "nanbu: particle_steps={} trials={} kernel_evals={} collisions={} coalescences(droplet,dry,wet)=({},{},{}) "
       "rebounds(droplet,dry,wet)=({},{},{})\n"
@@ -113,8 +126,13 @@ std::string startup_log(const AcousticCase& c, const Engine& eng, const RunHooks
     if (hooks.warning) hooks.warning(w);
   }
   log += sampling_log(eng, hooks);
-  log += fmt::format("nanbu guard at start: max N*P_bound(dt_c) = {:.4g} ({})\n", eng.max_guard_pn(),
-                     eng.max_guard_pn() > 1.0 ? "sub-cycling needed" : "bound met without sub-cycling");
+  if (eng.settings().selection == Selection::binned)
+    log += fmt::format("selection: binned ({:g} size classes per decade, weight classes by powers of 2, one majorant "
+                       "per group pair and kernel mechanism)\n",
+                       kSizeClassesPerDecade);
+  else
+    log += fmt::format("nanbu guard at start: max N*P_bound(dt_c) = {:.4g} ({})\n", eng.max_guard_pn(),
+                       eng.max_guard_pn() > 1.0 ? "sub-cycling needed" : "bound met without sub-cycling");
   return log;
 }
 
@@ -123,7 +141,7 @@ double rel_change(double a, double b) { return a > 0 ? b / a - 1 : 0.0; }
 std::string closing_log(const AcousticObservations& o) {
   const Counts &c0 = o.initial, &c1 = o.final;
   const EfficiencyRow& last = o.efficiency.back();
-  std::string log = guard_report(o.stats);
+  std::string log = guard_report(o.stats, o.selection);
   if (!o.interrupted.empty()) log += "incomplete: " + o.interrupted + "\n";
   log += fmt::format("conservation: solid volume fraction {:.17g} -> {:.17g} (rel. {:.3g}); liquid {:.17g} -> {:.17g} "
                      "(rel. {:.3g}); mass {:.17g} -> {:.17g}\n",
@@ -224,6 +242,7 @@ void check_startup(const AcousticCase& c, const Engine& e) {
                                     "(use integrator = \"exact\" or a smaller step)",
                                     c.file, K.motion_dt.dotted(), s.motion_dt, p.id[imin], p.d[imin], tmin));
   }
+  if (s.selection != Selection::nanbu) return;  // the Nanbu bound concerns the Nanbu selection only
   std::size_t worst = 0;
   const double pn = e.max_guard_pn(&worst);
   if (s.strict_guard && pn > 1.0)
@@ -260,6 +279,7 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
   if (obs.interrupted.empty()) obs.steps = nsteps;
   obs.u_amp = eng.settings().motion.sound.u_amp;
   obs.stats = eng.stats();
+  obs.selection = eng.settings().selection;
   obs.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   obs.log += closing_log(obs);
   return obs;

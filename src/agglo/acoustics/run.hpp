@@ -46,7 +46,8 @@ struct AcousticObservations {
   std::size_t samples = 0;
   std::uint64_t steps = 0;
   double u_amp = 0.0;                          // [m/s]
-  NanbuStats stats;
+  CollisionStats stats;
+  Selection selection = Selection::nanbu;
   std::string log;                             // run.log without its last line (see io)
   double wall_time_s = 0.0;
   std::string interrupted;                     // non-empty: cancelled there; the rows so far are kept

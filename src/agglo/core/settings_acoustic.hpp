@@ -43,6 +43,8 @@ struct AcousticSettings {
     Choice integrator{t, {"time.integrator", "", "particle motion integrator"}, "exact", {"exact", "explicit", "none"}};
     Choice initial_velocity{t, {"time.initial_velocity", "", "initial particle velocity"}, "steady",
                             {"steady", "gas", "rest"}};
+    Choice selection{t, {"time.selection", "", "collision-pair selection: binned majorants, or the seed's modified Nanbu"},
+                     "nanbu", {"nanbu", "binned"}};
     Choice nanbu_guard{t, {"time.nanbu_guard", "", "when P_ij > 1/N: sub-cycle the cell, or stop"}, "subcycle",
                        {"subcycle", "strict"}};
     Integer max_subcycles{t, {"time.max_subcycles", "", "most sub-cycles of one cell and step"}, 100000, 1,

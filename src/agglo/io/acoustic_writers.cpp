@@ -10,7 +10,21 @@ namespace {
 constexpr double kPerCm3 = 1e-6;  // 1/m^3 -> 1/cm^3
 using acoustics::AcousticObservations;
 
-nlohmann::json stats_json(const acoustics::NanbuStats& s) {
+nlohmann::json stats_json(const acoustics::CollisionStats& s, acoustics::Selection sel) {
+  if (sel == acoustics::Selection::binned)
+    return {{"particle_steps", s.particle_steps},
+            {"candidates", s.trials},
+            {"kernel_evals", s.kernel_evals},
+            {"collisions", s.collisions},
+            {"coalescences", {{"droplet", s.coalescences[0]}, {"dry", s.coalescences[1]}, {"wet", s.coalescences[2]}}},
+            {"rebounds", {{"droplet", s.rebounds[0]}, {"dry", s.rebounds[1]}, {"wet", s.rebounds[2]}}},
+            {"group_pair_processes", s.bin_pairs},
+            {"max_beta_over_majorant", s.max_pn},
+            {"violations", s.violations},
+            {"refills", s.refills},
+            {"dead_samples", s.dead},
+            {"energy_lost_J", s.energy_lost},
+            {"energy_returned_J", s.energy_returned}};
   return {{"particle_steps", s.particle_steps},
           {"trials", s.trials},
           {"kernel_evals", s.kernel_evals},
@@ -77,7 +91,7 @@ nlohmann::json acoustic_summary(const AcousticObservations& o) {
           {"u_amp_m_s", o.u_amp},
           {"solid_volume_rel_change", rel_change(c0.solid_volume, c1.solid_volume)},
           {"liquid_volume_rel_change", rel_change(c0.liquid_volume, c1.liquid_volume)},
-          {"nanbu", stats_json(o.stats)},
+          {o.selection == acoustics::Selection::binned ? "binned" : "nanbu", stats_json(o.stats, o.selection)},
           {"wall_time_s", o.wall_time_s}};
 }
 

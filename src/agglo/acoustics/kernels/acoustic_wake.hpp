@@ -3,7 +3,8 @@
 //   beta = (3/16) (u_amp / r) (d_i + d_j)^2 (d_i l_i + d_j l_j)                 [m^3/s]
 // u_amp gas velocity amplitude [m/s], r centre distance [m] floored at contact (d_i + d_j)/2,
 // l = omega tau / sqrt(1 + (omega tau)^2) slip coefficient.
-// Bound over the cell: with r >= (d_i + d_j)/2, beta <= (3/8) u_amp (d_i + d_j)(d_i l_i + max d l).
+// Bound over the cell: with r >= (d_i + d_j)/2, beta <= (3/8) u_amp (d_i + d_j)(d_i l_i + max d l); over two
+// groups a, b: (3/8) u_amp (max_a d + max_b d)(max_a d l + max_b d l).
 #include <algorithm>
 #include <string_view>
 
@@ -32,6 +33,9 @@ struct AcousticWake {
     return 0.375 * u_amp * (p.d[i] + cb.d_max) * (p.dl[i] + cb.dl_max);
   }
   double bound_cell(const CellBounds& cb) const { return 0.375 * u_amp * (2.0 * cb.d_max) * 2.0 * cb.dl_max; }
+  double bound_pair(const CellBounds& a, const CellBounds& b) const {
+    return 0.375 * u_amp * (a.d_max + b.d_max) * (a.dl_max + b.dl_max);
+  }
 };
 
 }  // namespace agglo::acoustics

@@ -5,7 +5,8 @@
 // k_B T thermal energy [J], mu_g gas viscosity [Pa s], C_c Cunningham slip correction.
 // kernels.brownian_form = "fuchs" takes the Fuchs form of brownian_fuchs.hpp instead.
 // Bound over the cell: (2 k_B T / (3 mu_g)) (d_i + d_max)(C_c,i / d_i + max C_c / d); with the Fuchs
-// form the larger of that and the free-molecular bound of brownian_fuchs.hpp.
+// form the larger of that and the free-molecular bound of brownian_fuchs.hpp. Over two groups a, b:
+// (2 k_B T / (3 mu_g)) (max_a d + max_b d)(max_a C_c/d + max_b C_c/d), or transition_bound_pair.
 #include <algorithm>
 #include <string_view>
 
@@ -46,6 +47,13 @@ struct Brownian {
   double bound_cell(const CellBounds& cb) const {
     const double b = pref * (2.0 * cb.d_max) * 2.0 * cb.ccd_max;
     return fuchs ? std::max(b, fuchs_bound_cell(cb)) : b;
+  }
+  double bound_pair(const CellBounds& a, const CellBounds& b) const {
+    const double s = pref * (a.d_max + b.d_max) * (a.ccd_max + b.ccd_max);
+    return fuchs ? transition_bound_pair(a, b, 1.0) : s;
+  }
+  void prepare(CellBounds& cb) const {
+    if (fuchs) fuchs_prepare(gas, cb);
   }
 };
 

@@ -43,4 +43,18 @@ double fuchs_bound_cell(const CellBounds& cb) {
   return 0.25 * pi * sd * sd * std::sqrt(2.0) * cb.cbar_max;
 }
 
+double transition_bound_pair(const CellBounds& a, const CellBounds& b, double speed_scale) {
+  const double s = a.d_max + b.d_max;
+  const double c = speed_scale * std::sqrt(a.cbar_max * a.cbar_max + b.cbar_max * b.cbar_max);
+  const double beta_fm = 0.25 * pi * s * s * c;
+  const double beta_c = 2.0 * pi * (a.diff_max + b.diff_max) * (s + 2.0 * std::hypot(a.gap_max, b.gap_max));
+  return beta_c + beta_fm > 0.0 ? beta_c * beta_fm / (beta_c + beta_fm) : 0.0;
+}
+
+void fuchs_prepare(const Gas& gas, CellBounds& cb) {
+  if (!(cb.d_min > 0.0 && cb.mass_max > 0.0)) return;
+  cb.diff_max = k_B * gas.temperature * gas.slip_correction(cb.d_min) / (3.0 * pi * gas.viscosity * cb.d_min);
+  cb.gap_max = 8.0 * cb.diff_max / (pi * thermal_speed(gas, cb.mass_max));
+}
+
 }  // namespace agglo::acoustics

@@ -20,6 +20,14 @@ double beta_brownian_fuchs(const Gas& gas, double di, double dj, double rhoi, do
 // of the cell's largest samples, (pi/4) (2 d_max)^2 sqrt(2) c_max.
 double fuchs_bound(const Gas& gas, const SampleSet& p, std::size_t i, const CellBounds& cb);
 double fuchs_bound_cell(const CellBounds& cb);
+// Over two groups a, b. The kernel is 1 / (1/beta_c + 1/beta_fm) with beta_c = 2 pi (D_i + D_j)(s + 2 g_ij),
+// beta_fm = (pi/4) s^2 c_ij, s = d_i + d_j, increasing in each of D, s, g, c; and g <= l (checked to 1e-6
+// over d/l in [1e-6, 1e6]). With the groups' largest D (at their smallest diameter), l <= 8 D_max / (pi c_min)
+// (CellBounds::gap_max, set by fuchs_prepare) and c_max, the same expression bounds every pair of a x b.
+// speed_scale multiplies the thermal speeds (PartMC's k_B, brownian_partmc.hpp).
+double transition_bound_pair(const CellBounds& a, const CellBounds& b, double speed_scale);
+// Sets cb.diff_max and cb.gap_max for the Fuchs form from cb.d_min and cb.mass_max.
+void fuchs_prepare(const Gas& gas, CellBounds& cb);
 
 struct BrownianFuchs {
   static constexpr std::string_view name = "brownian_fuchs";
@@ -32,6 +40,8 @@ struct BrownianFuchs {
   }
   double bound(const SampleSet& p, std::size_t i, const CellBounds& cb) const { return fuchs_bound(gas, p, i, cb); }
   double bound_cell(const CellBounds& cb) const { return fuchs_bound_cell(cb); }
+  double bound_pair(const CellBounds& a, const CellBounds& b) const { return transition_bound_pair(a, b, 1.0); }
+  void prepare(CellBounds& cb) const { fuchs_prepare(gas, cb); }
 };
 
 }  // namespace agglo::acoustics

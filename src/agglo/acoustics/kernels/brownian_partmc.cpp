@@ -52,4 +52,12 @@ double beta_brownian_partmc(const PartmcGas& gas, double di, double dj, double r
 
 double partmc_thermal_speed_ratio() { return std::sqrt(kBoltzmann / constants::k_B); }
 
+void partmc_prepare(const PartmcGas& g, CellBounds& cb) {
+  if (!(cb.d_min > 0.0 && cb.mass_max > 0.0)) return;
+  const double r = 0.5 * cb.d_min, kn = g.mean_free_path / r;
+  const double kT = kBoltzmann * g.temperature;
+  cb.diff_max = kT * (1.0 + kn * (1.249 + 0.42 * std::exp(-0.87 / kn))) / (6.0 * pi * g.viscosity * r);
+  cb.gap_max = 8.0 * cb.diff_max / (pi * std::sqrt(8.0 * kT / (pi * cb.mass_max)));
+}
+
 }  // namespace agglo::acoustics

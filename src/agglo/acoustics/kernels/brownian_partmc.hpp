@@ -32,6 +32,9 @@ struct PartmcGas {
 double beta_brownian_partmc(const PartmcGas& gas, double di, double dj, double rhoi, double rhoj);
 // sqrt(k_B(PartMC) / k_B(agglo)): turns agglo's thermal speeds into PartMC's.
 double partmc_thermal_speed_ratio();
+// Sets cb.diff_max (PartMC's D at cb.d_min) and cb.gap_max (8 D_max / (pi c_min), c_min PartMC's thermal speed
+// at cb.mass_max) for transition_bound_pair (brownian_fuchs.hpp: the two forms are the same with r = d/2).
+void partmc_prepare(const PartmcGas& gas, CellBounds& cb);
 
 struct BrownianPartmc {
   static constexpr std::string_view name = "brownian_partmc";
@@ -49,6 +52,10 @@ struct BrownianPartmc {
     return speed_ratio * fuchs_bound(gas, p, i, cb);
   }
   double bound_cell(const CellBounds& cb) const { return speed_ratio * fuchs_bound_cell(cb); }
+  double bound_pair(const CellBounds& a, const CellBounds& b) const {
+    return transition_bound_pair(a, b, speed_ratio);
+  }
+  void prepare(CellBounds& cb) const { partmc_prepare(pgas, cb); }
 };
 
 }  // namespace agglo::acoustics

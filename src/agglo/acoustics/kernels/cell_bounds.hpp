@@ -25,7 +25,13 @@ struct CellBounds {
   double speed_dev_max = 0.0;// largest |v - v_ref| (valid after finalize())
   double speed_dev2_max = 0.0;// its square
   double w_max = 0.0;        // largest weight
-  double cbar_max = 0.0;     // largest thermal speed (Fuchs)
+  double cbar_max = 0.0;     // largest thermal speed (Fuchs), that of the lightest particle
+  double mass_min = 0.0;     // lightest particle mass [kg] (tracked with cbar_max; 0 = none yet)
+  double d_min = 0.0;        // smallest diameter (0 = none yet)
+  double mass_max = 0.0;     // heaviest particle mass [kg]
+  // Derived by Kernel::prepare from d_min, mass_max and cbar_max (binned selection, transition-regime
+  // Brownian bounds): largest Brownian diffusivity [m^2/s] and largest l = 8 D / (pi c) [m].
+  double diff_max = 0.0, gap_max = 0.0;
   double vref[3] = {0, 0, 0};// reference velocity of the cell
   bool need_cbar = false;    // track cbar_max (Fuchs only)
   void include(const SampleSet& p, std::size_t i, const Gas& gas);

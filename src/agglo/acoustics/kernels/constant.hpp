@@ -1,6 +1,6 @@
 #pragma once
 // Constant test kernel (docs/model.md §C.7.1): beta = K0 [m^3/s] (kernels.constant_coefficient).
-// Bound: K0.
+// Bound (per sample, cell or pair of groups): K0.
 #include <string_view>
 
 #include "agglo/acoustics/kernels/cell_bounds.hpp"
@@ -18,6 +18,7 @@ struct ConstantKernel {
   double beta(const SampleSet&, std::size_t, std::size_t, double) const { return k0; }
   double bound(const SampleSet&, std::size_t, const CellBounds&) const { return k0; }
   double bound_cell(const CellBounds&) const { return k0; }
+  double bound_pair(const CellBounds&, const CellBounds&) const { return k0; }
 };
 
 }  // namespace agglo::acoustics

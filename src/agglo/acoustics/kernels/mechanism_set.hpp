@@ -10,6 +10,10 @@
 //   double beta(const SampleSet&, std::size_t i, std::size_t j, double r) const;   // [m^3/s]
 //   double bound(const SampleSet&, std::size_t i, const CellBounds&) const;        // >= beta(i, j) for j in the cell
 //   double bound_cell(const CellBounds&) const;                                    // >= bound(i) for i in the cell
+//   double bound_pair(const CellBounds& a, const CellBounds& b) const;             // >= beta(i, j), i in a, j in b
+//   optional: void prepare(CellBounds&) const;  // derived fields bound_pair reads, after the group's includes
+// The binned selection (binned.hpp) draws candidates of each mechanism separately: beta_of(k, ...) and
+// bound_pair_of(k, ...) address the k-th switched-on mechanism.
 #include <array>
 #include <cstddef>
 #include <string>
@@ -42,6 +46,8 @@ class MechanismSet {
       if (k == size) throw_unknown_mechanism(n, known);
       on_[k] = true;
     }
+    for (std::size_t k = 0; k < size; ++k)
+      if (on_[k]) active_.push_back(k);
     each([&](const auto& m, std::size_t) {
       const KernelNeeds nd = m.needs();
       needs_.distance = needs_.distance || nd.distance;
@@ -71,6 +77,24 @@ class MechanismSet {
     each([&](const auto& m, std::size_t) { b += m.bound_cell(cb); });
     return b;
   }
+  std::size_t active() const { return active_.size(); }
+  void prepare(CellBounds& cb) const {
+    each([&](const auto& m, std::size_t) {
+      if constexpr (requires { m.prepare(cb); }) m.prepare(cb);
+    });
+  }
+  double beta_of(std::size_t k, const SampleSet& p, std::size_t i, std::size_t j, double r) const {
+    double b = 0.0;
+    each([&](const auto& m, std::size_t pos) {
+      if (pos == active_[k]) b = m.beta(p, i, j, r);
+    });
+    return b;
+  }
+  // bound_pair of every switched-on mechanism, in order, into out[0 .. active()).
+  void bound_pair_all(const CellBounds& a, const CellBounds& b, double* out) const {
+    std::size_t k = 0;
+    each([&](const auto& m, std::size_t) { out[k++] = m.bound_pair(a, b); });
+  }
 
  private:
   // f(mechanism, index) for every switched-on mechanism, in list order.
@@ -82,6 +106,7 @@ class MechanismSet {
   }
   std::tuple<M...> m_;
   std::array<bool, size> on_{};
+  std::vector<std::size_t> active_;  // registry positions of the switched-on mechanisms
   KernelNeeds needs_;
 };
 

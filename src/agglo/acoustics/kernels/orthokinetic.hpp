@@ -2,7 +2,8 @@
 // Orthokinetic interaction + gravitational (differential) settling (docs/model.md §C.3, eq. 8):
 //   beta = E (pi/4) (d_i + d_j)^2 |v_i - v_j|                                   [m^3/s]
 // d diameter [m], v sample velocity [m/s], E collision efficiency (kernels.collision_efficiency).
-// Bound over the cell: |v_i - v_j| <= |v_i - v_ref| + max_j |v_j - v_ref|, d_j <= d_max.
+// Bound over the cell: |v_i - v_j| <= |v_i - v_ref| + max_j |v_j - v_ref|, d_j <= d_max. Bound over two
+// groups a, b with reference velocities v_a, v_b: |v_i - v_j| <= |v_a - v_b| + max_a |v - v_a| + max_b |v - v_b|.
 #include <cmath>
 #include <string_view>
 
@@ -34,6 +35,11 @@ struct Orthokinetic {
   }
   double bound_cell(const CellBounds& cb) const {
     return efficiency * beta_orthokinetic(cb.d_max, cb.d_max, 2.0 * cb.speed_dev_max);
+  }
+  double bound_pair(const CellBounds& a, const CellBounds& b) const {
+    const double gx = a.vref[0] - b.vref[0], gy = a.vref[1] - b.vref[1], gz = a.vref[2] - b.vref[2];
+    const double g = std::sqrt(gx * gx + gy * gy + gz * gz) + a.speed_dev_max + b.speed_dev_max;
+    return efficiency * beta_orthokinetic(a.d_max, b.d_max, g);
   }
 };
 

@@ -5,7 +5,8 @@
 // rho_g gas density [kg/m^3], mu_g viscosity [Pa s], l slip coefficient, phi = atan(omega tau)
 // phase lag, r centre distance floored at contact (F: decision of docs/model.md §C.3).
 // Bound over the cell: l <= 1, cos <= 1, r >= (d_i + d_j)/2 give
-//   beta <= 2 P d_i^2 d_j^2 / (d_i + d_j) <= 2 P d_i d_max min(d_i, d_max).
+//   beta <= 2 P d_i^2 d_j^2 / (d_i + d_j) <= 2 P d_i d_max min(d_i, d_max); over two groups a, b the middle
+// form at the largest diameters (it increases with both).
 #include <algorithm>
 #include <cmath>
 #include <string_view>
@@ -45,6 +46,10 @@ struct RadiationPressure {
     return 2.0 * pref * p.d[i] * cb.d_max * std::min(p.d[i], cb.d_max);
   }
   double bound_cell(const CellBounds& cb) const { return 2.0 * pref * cb.d_max * cb.d_max * cb.d_max; }
+  double bound_pair(const CellBounds& a, const CellBounds& b) const {
+    const double s = a.d_max + b.d_max;
+    return s > 0.0 ? 2.0 * pref * a.d_max * a.d_max * b.d_max * b.d_max / s : 0.0;
+  }
 };
 
 }  // namespace agglo::acoustics

@@ -1,0 +1,232 @@
+#include "agglo/acoustics/binned.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "agglo/acoustics/cell_events.hpp"
+#include "agglo/core/rng.hpp"
+
+namespace agglo::acoustics {
+
+namespace {
+
+constexpr std::size_t kMaxMechanisms = 16;
+// Classes: size class s = floor(log10(d / 1e-12 m) kSizeClassesPerDecade), clamped to [0, kSizeClasses);
+// weight class q = floor(log2 w), clamped to [0, kWeightClasses). Clamping merges extreme classes,
+// which only loosens their bounds.
+constexpr int kSizeClasses = 14 * 8;
+constexpr int kWeightClasses = 128;
+
+// Group slot of each class, valid where the entry's stamp is the current cell's (no clearing between
+// cells). One table per thread.
+struct ClassTable {
+  std::vector<std::uint64_t> entry = std::vector<std::uint64_t>(kSizeClasses * kWeightClasses, 0);
+  std::uint64_t stamp = 0;
+};
+ClassTable& class_table() {
+  thread_local ClassTable t;
+  return t;
+}
+
+struct Group {
+  std::vector<std::uint32_t> members;  // local positions in the cell's list
+  CellBounds cb;
+};
+
+class BinnedCell {
+ public:
+  BinnedCell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
+             const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of);
+  void run();
+
+ private:
+  std::uint32_t class_of(std::size_t i) const;
+  std::uint32_t group_for(std::uint32_t key);
+  void insert(std::uint32_t a);
+  void remove(std::uint32_t a);
+  void build();
+  void moved(std::size_t i);
+  double pair_count(std::uint32_t a, std::uint32_t b) const;
+  void process(std::uint32_t a, std::uint32_t b);
+  std::uint32_t pick(std::uint32_t g, std::uint32_t exclude);
+  bool candidate(std::uint32_t a, std::uint32_t b, const double* M, double Msum);
+
+  SampleSet& p;
+  const std::uint32_t* idx;
+  const std::size_t n;
+  const CollisionContext& ctx;
+  CollisionStats& st;
+  std::uint32_t* local_of;
+  const Kernel& K;
+  const double Vc, per_ln;
+  CounterRng rng;
+  CellEvents events;
+  const bool need_r, excl;
+  const std::size_t nm;
+  std::vector<Group> groups;
+  std::vector<std::uint32_t> group_of, pos_of;  // by local position
+  std::vector<std::uint8_t> grouped;             // by local position: 1 if in a group
+  ClassTable& table;
+};
+
+BinnedCell::BinnedCell(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_, std::uint64_t cell,
+                       std::uint64_t step, const CollisionContext& ctx_, CollisionStats& st_, std::uint32_t* local_of_)
+    : p(p_), idx(idx_), n(n_), ctx(ctx_), st(st_), local_of(local_of_), K(*ctx_.kernel),
+      Vc(ctx_.domain.cell_volume()), per_ln(kSizeClassesPerDecade / std::log(10.0)),
+      rng(ctx_.seed, 0x200000000ULL + cell, step), events(p_, idx_, n_, ctx_, st_, rng), need_r(K.needs_distance()),
+      excl(K.settings().exclude_same_population), nm(K.mechanism_count()), group_of(n_, 0), pos_of(n_, 0), grouped(n_, 0), table(class_table()) {
+  ++table.stamp;
+}
+
+std::uint32_t BinnedCell::class_of(std::size_t i) const {
+  const double s = std::floor((std::log(p.d[i]) - std::log(1e-12)) * per_ln);
+  const int sc = static_cast<int>(std::clamp(s, 0.0, static_cast<double>(kSizeClasses - 1)));
+  const int wc = std::clamp(std::ilogb(p.w[i]), 0, kWeightClasses - 1);
+  return static_cast<std::uint32_t>(sc * kWeightClasses + wc);
+}
+
+std::uint32_t BinnedCell::group_for(std::uint32_t key) {
+  std::uint64_t& e = table.entry[key];
+  if ((e >> 32) == (table.stamp & 0xffffffffULL)) return static_cast<std::uint32_t>(e & 0xffffffffULL);
+  const auto g = static_cast<std::uint32_t>(groups.size());
+  e = ((table.stamp & 0xffffffffULL) << 32) | g;
+  groups.emplace_back();
+  groups.back().cb.need_cbar = K.needs_thermal_speed();
+  return g;
+}
+
+void BinnedCell::insert(std::uint32_t a) {
+  const std::size_t i = idx[a];
+  const std::uint32_t g = group_for(class_of(i));
+  group_of[a] = g;
+  pos_of[a] = static_cast<std::uint32_t>(groups[g].members.size());
+  groups[g].members.push_back(a);
+  grouped[a] = 1;
+}
+
+void BinnedCell::remove(std::uint32_t a) {
+  auto& m = groups[group_of[a]].members;
+  const std::uint32_t last = m.back();
+  m[pos_of[a]] = last;
+  pos_of[last] = pos_of[a];
+  m.pop_back();
+  grouped[a] = 0;
+}
+
+// Groups of the live samples; each group's reference velocity is its mean velocity.
+void BinnedCell::build() {
+  for (std::uint32_t a = 0; a < n; ++a) {
+    local_of[idx[a]] = a;
+    if (p.w[idx[a]] > 0.0) insert(a);
+  }
+  for (Group& g : groups) {
+    double v[3] = {0.0, 0.0, 0.0};
+    for (const std::uint32_t a : g.members) {
+      v[0] += p.vx[idx[a]];
+      v[1] += p.vy[idx[a]];
+      v[2] += p.vz[idx[a]];
+    }
+    for (int c = 0; c < 3; ++c) g.cb.vref[c] = v[c] / static_cast<double>(g.members.size());
+    for (const std::uint32_t a : g.members) g.cb.include(p, idx[a], *ctx.gas);
+    K.prepare(g.cb);
+  }
+}
+
+// Sample i changed (size, weight, velocity): regroup it and let its group's bounds take it in.
+void BinnedCell::moved(std::size_t i) {
+  const std::uint32_t a = local_of[i];
+  if (grouped[a]) remove(a);
+  if (!(p.w[i] > 0.0)) return;
+  insert(a);
+  CellBounds& cb = groups[group_of[a]].cb;
+  cb.include(p, i, *ctx.gas);
+  K.prepare(cb);
+}
+
+double BinnedCell::pair_count(std::uint32_t a, std::uint32_t b) const {
+  const double na = static_cast<double>(groups[a].members.size()), nb = static_cast<double>(groups[b].members.size());
+  return a == b ? 0.5 * na * (na - 1.0) : na * nb;
+}
+
+// Uniform member of group g other than local position `exclude`.
+std::uint32_t BinnedCell::pick(std::uint32_t g, std::uint32_t exclude) {
+  const auto& m = groups[g].members;
+  const bool skip = exclude != UINT32_MAX;
+  const std::size_t range = m.size() - (skip ? 1 : 0);
+  std::size_t k = std::min(range - 1, static_cast<std::size_t>(rng.uniform() * static_cast<double>(range)));
+  if (skip && k >= pos_of[exclude]) ++k;
+  return m[k];
+}
+
+// One candidate of groups (a, b): returns true if it collided (the groups changed).
+bool BinnedCell::candidate(std::uint32_t a, std::uint32_t b, const double* M, double Msum) {
+  ++st.trials;
+  double u = rng.uniform() * Msum;
+  std::size_t k = 0;
+  while (k + 1 < nm && u >= M[k]) u -= M[k++];
+  if (!(M[k] > 0.0)) return false;
+  const std::uint32_t la = pick(a, UINT32_MAX);
+  const std::uint32_t lb = pick(b, a == b ? la : UINT32_MAX);
+  const std::size_t i = idx[la], j = idx[lb];
+  if (excl && p.pop[i] == p.pop[j]) return false;
+  ++st.kernel_evals;
+  const double r = need_r ? pair_distance(p, i, j, ctx.domain) : 0.0;
+  const double q = K.mechanism_beta(k, p, i, j, r) * std::max(p.w[i], p.w[j]);
+  const double ratio = q / M[k];
+  st.max_pn = std::max(st.max_pn, ratio);
+  if (ratio > 1.0 + 1e-9) ++st.violations;
+  if (!(rng.uniform() < ratio)) return false;
+  events.collide(i, j);
+  for (const std::uint32_t s : events.touched()) moved(s);
+  events.clear_touched();
+  return true;
+}
+
+// Poisson process of candidates of the group pair (a, b) over the step.
+void BinnedCell::process(std::uint32_t a, std::uint32_t b) {
+  double M[kMaxMechanisms];
+  double t = 0.0, Msum = 0.0, rate = 0.0;
+  bool dirty = true, counted = false;
+  for (;;) {
+    if (dirty) {
+      const double np = pair_count(a, b);
+      if (np <= 0.0) return;
+      K.mechanism_bounds(groups[a].cb, groups[b].cb, M);
+      const double wmax = std::max(groups[a].cb.w_max, groups[b].cb.w_max);
+      Msum = 0.0;
+      for (std::size_t k = 0; k < nm; ++k) Msum += (M[k] *= wmax);
+      rate = np * Msum / Vc;
+      if (!(rate > 0.0)) return;
+      dirty = false;
+      if (!counted) ++st.bin_pairs;
+      counted = true;
+    }
+    // Next candidate after an exponential gap; u > rate (dt - t) already implies a gap beyond the step
+    // (1 - exp(-x) <= x), which spares the logarithm for most group pairs.
+    const double u = rng.uniform();
+    if (u > rate * (ctx.dt - t)) return;
+    t -= std::log1p(-u) / rate;
+    if (t >= ctx.dt) return;
+    dirty = candidate(a, b, M, Msum);
+  }
+}
+
+void BinnedCell::run() {
+  build();
+  for (std::uint32_t a = 0; a < n; ++a) st.particle_steps += p.w[idx[a]] > 0.0 ? 1 : 0;
+  for (std::uint32_t a = 0; a < groups.size(); ++a)
+    for (std::uint32_t b = a; b < groups.size(); ++b) process(a, b);
+}
+
+}  // namespace
+
+void binned_collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell,
+                         std::uint64_t step, const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of) {
+  std::size_t live = 0;
+  for (std::size_t a = 0; a < n; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
+  if (live < 2) return;
+  BinnedCell(p, idx, n, cell, step, ctx, st, local_of).run();
+}
+
+}  // namespace agglo::acoustics

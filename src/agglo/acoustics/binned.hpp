@@ -1,0 +1,36 @@
+#pragma once
+// Binned majorant selection of the collision pairs of one cell (time.selection = "binned"; the binned
+// method of PartMC, Riemer et al. 2009, Michelotti et al. 2013, extended to differential weights and
+// to the acoustic kernel sum). Its cost follows the number of real collisions, not N x kernel range.
+// The live samples of the cell are grouped by size class (kSizeClassesPerDecade per decade of
+// diameter) and weight class (floor(log2 w)). Each group keeps upper bounds of what the kernels read
+// (CellBounds: largest diameter, C_c/d, d l, volume, thermal speed, weight, speed about the group's
+// mean velocity). For every pair of groups (a, b) and every kernel mechanism m (beta is a sum of
+// non-negative mechanisms, bounded separately so that the 1/r terms bounded at contact do not sink
+// the acceptance of the others) the majorant
+//     M_m(a, b) = bound_pair_m(a, b) max(w_max,a, w_max,b)  >=  beta_m,ij max(w_i, w_j)
+// gives candidate events at total rate n_pairs(a, b) sum_m M_m / V_c over the step dt_c, drawn as a
+// Poisson process in time (exponential gaps). A candidate picks m with probability M_m / sum M, i
+// uniform in a and j uniform in b (j != i), and collides with probability beta_m,ij max(w_i, w_j) / M_m.
+// So unordered pairs collide at rate beta_ij max(w_i, w_j) / V_c, the Nanbu step's rate
+// (collision_step.hpp). After every collision the changed samples move to their new groups, the
+// groups' bounds take them in (bounds only grow within a step) and the rate of the pair of groups
+// being processed is recomputed, so the majorant stays valid after rebounds and energy compensation;
+// a candidate whose ratio exceeds 1 is counted in CollisionStats::violations (must stay 0). Pairs of
+// groups are processed one after the other within the step (operator splitting, first order in dt_c
+// as PartMC's). Random draws come from a stream keyed by (seed, cell, step).
+#include <cstdint>
+
+#include "agglo/acoustics/collision_step.hpp"
+#include "agglo/acoustics/samples.hpp"
+
+namespace agglo::acoustics {
+
+inline constexpr double kSizeClassesPerDecade = 8.0;
+
+// Processes the samples listed in idx (all in one cell) for one collision step. local_of is scratch
+// indexed by sample (at least p.size() entries; a cell writes only its own samples' entries).
+void binned_collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell,
+                         std::uint64_t step, const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of);
+
+}  // namespace agglo::acoustics

@@ -1,0 +1,117 @@
+#include "agglo/acoustics/cell_events.hpp"
+
+#include <cmath>
+
+#include "agglo/acoustics/merge.hpp"
+#include "agglo/core/constants.hpp"
+
+namespace agglo::acoustics {
+
+namespace {
+
+PairType pair_type(Phase a, Phase b) {
+  if (a == Phase::liquid || b == Phase::liquid) return PairType::droplet;
+  if (a == Phase::solid && b == Phase::solid) return PairType::dry;
+  return PairType::wet;
+}
+
+// Unit normal from i to j at contact for a hard-sphere encounter with relative velocity G:
+// uniform impact parameter over the collision disk (b^2 uniform), uniform azimuth.
+Vec3 contact_normal(const Vec3& G, CounterRng& rng) {
+  const double u1 = rng.uniform(), u2 = rng.uniform();
+  const double g = norm(G);
+  Vec3 e = g > 0.0 ? G / g : Vec3{1.0, 0.0, 0.0};
+  // Orthonormal basis (a, b) perpendicular to e.
+  Vec3 ref = std::abs(e.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  Vec3 a = cross(e, ref);
+  a /= norm(a);
+  const Vec3 b = cross(e, a);
+  const double cth = std::sqrt(1.0 - u1), sth = std::sqrt(u1);
+  const double ph = 2.0 * constants::pi * u2;
+  return cth * e + sth * (std::cos(ph) * a + std::sin(ph) * b);
+}
+
+}  // namespace
+
+CellEvents::CellEvents(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_, const CollisionContext& ctx_,
+                       CollisionStats& st_, CounterRng& rng_)
+    : p(p_), idx(idx_), n(n_), ctx(ctx_), st(st_), rng(rng_), oc(*ctx_.outcomes) {
+  if (oc.energy_compensation)
+    for (std::size_t a = 0; a < n; ++a)
+      if (p.debt[idx[a]] > 0.0) debtors.push_back(idx[a]);
+}
+
+// A sample whose weight dropped to 0 takes half of the heaviest sample of the cell.
+void CellEvents::refill(std::size_t dead) {
+  std::size_t best = dead;
+  double wb = 1.0;
+  for (std::size_t a = 0; a < n; ++a)
+    if (p.w[idx[a]] > wb) {
+      wb = p.w[idx[a]];
+      best = idx[a];
+    }
+  if (best == dead) {
+    ++st.dead;
+    return;
+  }
+  const std::uint64_t keep_id = p.id[dead];
+  p.copy_sample(best, dead);
+  p.id[dead] = keep_id;
+  p.w[best] = std::ceil(0.5 * wb);
+  p.w[dead] = std::floor(0.5 * wb);
+  p.debt[dead] = 0.0;
+  p.debt_ref[dead] = 0.0;
+  touched_.push_back(static_cast<std::uint32_t>(best));
+  ++st.refills;
+}
+
+// Gives the first fitting split-merge debt back to the pair (i, j) as relative kinetic energy.
+void CellEvents::compensate(std::size_t i, std::size_t j) {
+  if (!oc.energy_compensation) return;
+  for (std::size_t k = 0; k < debtors.size(); ++k) {
+    const std::size_t h = debtors[k];
+    if (!(p.debt[h] > 0.0)) continue;
+    const double Mref = p.debt_ref[h];
+    const double ri = p.w[i] * p.mass[i] / Mref, rj = p.w[j] * p.mass[j] / Mref;
+    if ((ri > 0.5 && ri < 2.0) || (rj > 0.5 && rj < 2.0)) {
+      if (add_relative_energy(p, i, j, p.debt[h])) {
+        st.energy_returned += p.debt[h];
+        p.debt[h] = 0.0;
+      }
+      return;
+    }
+  }
+}
+
+void CellEvents::collide(std::size_t i, std::size_t j) {
+  ++st.collisions;
+  touched_.push_back(static_cast<std::uint32_t>(i));
+  touched_.push_back(static_cast<std::uint32_t>(j));
+  const PairType type = pair_type(p.phase(i), p.phase(j));
+  bool coalesce = oc.always_coalesce || type == PairType::droplet;
+  Vec3 nrm;
+  double gn = 0.0;
+  if (!coalesce) {
+    const Vec3 G{p.vx[i] - p.vx[j], p.vy[i] - p.vy[j], p.vz[i] - p.vz[j]};
+    nrm = contact_normal(G, rng);
+    gn = dot(G, nrm);
+    const double vcr = type == PairType::dry ? critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j])
+                                             : critical_velocity_wet(oc, p.d[i], p.d[j]);
+    coalesce = gn <= vcr;
+  }
+  if (coalesce) {
+    ++st.coalescences[static_cast<int>(type)];
+    coalesce_weighted(p, i, j, *ctx.gas, *ctx.sound);
+    if (p.w[i] <= 0.0) refill(i);
+    if (p.w[j] <= 0.0) refill(j);
+  } else {
+    ++st.rebounds[static_cast<int>(type)];
+    const double e = type == PairType::dry ? oc.restitution : wet_restitution(oc, p.d[i], p.d[j], gn);
+    const double dE = rebound_weighted(p, i, j, nrm, e, oc.friction);
+    st.energy_lost += dE;
+    if (dE > 0.0) debtors.push_back(static_cast<std::uint32_t>(p.w[i] > p.w[j] ? i : j));
+    compensate(i, j);
+  }
+}
+
+}  // namespace agglo::acoustics

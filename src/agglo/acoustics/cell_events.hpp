@@ -1,0 +1,41 @@
+#pragma once
+// Outcome of one accepted collision of two samples of a cell (docs/model.md §C.5), shared by the
+// selection algorithms: coalescence (always for pairs with a droplet, or outcomes.always_coalesce)
+// or, for solid/mixed pairs, rebound when the normal impact speed exceeds the critical velocity.
+// The contact normal of a rebound is drawn for a hard-sphere encounter (uniform impact parameter
+// over the collision disk). Samples whose weight drops to 0 are refilled by splitting the heaviest
+// sample of the cell (decision), and split-merge energy debts are given back at later rebounds
+// (seed eq. 30). Every sample whose state changed is listed in touched() until clear_touched().
+#include <cstdint>
+#include <vector>
+
+#include "agglo/acoustics/collision_step.hpp"
+#include "agglo/acoustics/samples.hpp"
+#include "agglo/core/rng.hpp"
+
+namespace agglo::acoustics {
+
+class CellEvents {
+ public:
+  CellEvents(SampleSet& p, const std::uint32_t* idx, std::size_t n, const CollisionContext& ctx, CollisionStats& st,
+             CounterRng& rng);
+  // Collision of samples i and j (both live, i != j).
+  void collide(std::size_t i, std::size_t j);
+  const std::vector<std::uint32_t>& touched() const { return touched_; }
+  void clear_touched() { touched_.clear(); }
+
+ private:
+  void refill(std::size_t dead);
+  void compensate(std::size_t i, std::size_t j);
+
+  SampleSet& p;
+  const std::uint32_t* idx;
+  const std::size_t n;
+  const CollisionContext& ctx;
+  CollisionStats& st;
+  CounterRng& rng;
+  const OutcomeParams& oc;
+  std::vector<std::uint32_t> debtors, touched_;
+};
+
+}  // namespace agglo::acoustics

@@ -1,0 +1,28 @@
+#include "agglo/acoustics/collision_step.hpp"
+
+#include <algorithm>
+
+namespace agglo::acoustics {
+
+void CollisionStats::add(const CollisionStats& o) {
+  trials += o.trials;
+  kernel_evals += o.kernel_evals;
+  collisions += o.collisions;
+  for (int k = 0; k < 3; ++k) {
+    coalescences[k] += o.coalescences[k];
+    rebounds[k] += o.rebounds[k];
+  }
+  particle_steps += o.particle_steps;
+  subcycled += o.subcycled;
+  max_subcycles = std::max(max_subcycles, o.max_subcycles);
+  max_bound_pn = std::max(max_bound_pn, o.max_bound_pn);
+  max_pn = std::max(max_pn, o.max_pn);
+  violations += o.violations;
+  refills += o.refills;
+  dead += o.dead;
+  energy_lost += o.energy_lost;
+  energy_returned += o.energy_returned;
+  bin_pairs += o.bin_pairs;
+}
+
+}  // namespace agglo::acoustics
