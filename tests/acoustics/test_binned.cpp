@@ -99,7 +99,7 @@ std::vector<TwinCase> twin_cases() {
           {"additive", "model = \"additive\"\nadditive_coefficient = 1000.0",
            "model = \"additive\"\nadditive_coefficient = 2000.0", kExponential + " = 1e9", 300.0, 1.0},
           {"brownian_partmc", "model = \"brownian_partmc\"", "",
-           "distribution = \"lognormal\"\ngeometric_mean_diameter = 0.2e-6\ngeometric_std = 2.0\n"
+           "distribution = \"lognormal\"\ngeometric_mean_diameter = 0.2e-6\ngeometric_std = 2.0\nlognormal_range = 5.5\n"
            "density = 1000.0\nnumber_concentration = 5e11",
            3600.0, 10.0}};
 }

@@ -1,6 +1,7 @@
 #include "agglo/acoustics/binned.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <vector>
 
@@ -18,27 +19,11 @@ constexpr std::size_t kMaxMechanisms = 16;
 constexpr int kSizeClasses = 14 * 8;
 constexpr int kWeightClasses = 128;
 
-// Group slot of each class, valid where the entry's stamp is the current cell's (no clearing between
-// cells). One table per thread.
-struct ClassTable {
-  std::vector<std::uint64_t> entry = std::vector<std::uint64_t>(kSizeClasses * kWeightClasses, 0);
-  std::uint64_t stamp = 0;
-};
-ClassTable& class_table() {
-  thread_local ClassTable t;
-  return t;
-}
-
-struct Group {
-  std::vector<std::uint32_t> members;  // local positions in the cell's list
-  CellBounds cb;
-};
-
 class BinnedCell {
  public:
   BinnedCell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
-             const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of);
-  void run();
+             const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of, BinnedGroups& g);
+  void run(bool reuse);
 
  private:
   std::uint32_t class_of(std::size_t i) const;
@@ -64,20 +49,20 @@ class BinnedCell {
   CellEvents events;
   const bool need_r, excl;
   const std::size_t nm;
-  std::vector<Group> groups;
-  std::vector<std::uint32_t> group_of, pos_of;  // by local position
-  std::vector<std::uint8_t> grouped;             // by local position: 1 if in a group
-  ClassTable& table;
+  BinnedGroups& G;
+  std::vector<BinnedGroup>& groups;
+  std::vector<std::uint32_t>&group_of, &pos_of;
+  std::vector<std::uint8_t>& grouped;
 };
 
 BinnedCell::BinnedCell(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_, std::uint64_t cell,
-                       std::uint64_t step, const CollisionContext& ctx_, CollisionStats& st_, std::uint32_t* local_of_)
+                       std::uint64_t step, const CollisionContext& ctx_, CollisionStats& st_, std::uint32_t* local_of_,
+                       BinnedGroups& g)
     : p(p_), idx(idx_), n(n_), ctx(ctx_), st(st_), local_of(local_of_), K(*ctx_.kernel),
       Vc(ctx_.domain.cell_volume()), per_ln(kSizeClassesPerDecade / std::log(10.0)),
       rng(ctx_.seed, 0x200000000ULL + cell, step), events(p_, idx_, n_, ctx_, st_, rng), need_r(K.needs_distance()),
-      excl(K.settings().exclude_same_population), nm(K.mechanism_count()), group_of(n_, 0), pos_of(n_, 0), grouped(n_, 0), table(class_table()) {
-  ++table.stamp;
-}
+      excl(K.settings().exclude_same_population), nm(K.mechanism_count()), G(g), groups(g.groups), group_of(g.group_of),
+      pos_of(g.pos_of), grouped(g.grouped) {}
 
 std::uint32_t BinnedCell::class_of(std::size_t i) const {
   const double s = std::floor((std::log(p.d[i]) - std::log(1e-12)) * per_ln);
@@ -86,13 +71,28 @@ std::uint32_t BinnedCell::class_of(std::size_t i) const {
   return static_cast<std::uint32_t>(sc * kWeightClasses + wc);
 }
 
+// Group of class `key` (open addressing over G.slots; a new group is opened when the class has none).
 std::uint32_t BinnedCell::group_for(std::uint32_t key) {
-  std::uint64_t& e = table.entry[key];
-  if ((e >> 32) == (table.stamp & 0xffffffffULL)) return static_cast<std::uint32_t>(e & 0xffffffffULL);
-  const auto g = static_cast<std::uint32_t>(groups.size());
-  e = ((table.stamp & 0xffffffffULL) << 32) | g;
-  groups.emplace_back();
-  groups.back().cb.need_cbar = K.needs_thermal_speed();
+  if (G.slots.size() < 4 * (G.count + 1)) {  // keep the table at most a quarter full
+    std::vector<std::uint64_t> old(std::bit_ceil(std::max<std::size_t>(64, 8 * (G.count + 1))), 0);
+    old.swap(G.slots);
+    for (std::size_t g = 0; g < G.count; ++g) {
+      std::size_t h = (groups[g].key * 0x9E3779B1u) & (G.slots.size() - 1);
+      while (G.slots[h] != 0) h = (h + 1) & (G.slots.size() - 1);
+      G.slots[h] = (static_cast<std::uint64_t>(groups[g].key) + 1) << 32 | g;
+    }
+  }
+  const std::size_t mask = G.slots.size() - 1;
+  std::size_t h = (key * 0x9E3779B1u) & mask;
+  for (; G.slots[h] != 0; h = (h + 1) & mask)
+    if ((G.slots[h] >> 32) == static_cast<std::uint64_t>(key) + 1) return static_cast<std::uint32_t>(G.slots[h]);
+  const auto g = static_cast<std::uint32_t>(G.count++);
+  if (groups.size() < G.count) groups.emplace_back();
+  groups[g].members.clear();
+  groups[g].cb = CellBounds{};
+  groups[g].cb.need_cbar = K.needs_thermal_speed();
+  groups[g].key = key;
+  G.slots[h] = (static_cast<std::uint64_t>(key) + 1) << 32 | g;
   return g;
 }
 
@@ -116,11 +116,17 @@ void BinnedCell::remove(std::uint32_t a) {
 
 // Groups of the live samples; each group's reference velocity is its mean velocity.
 void BinnedCell::build() {
+  G.count = 0;
+  std::fill(G.slots.begin(), G.slots.end(), 0);
+  group_of.assign(n, 0);
+  pos_of.assign(n, 0);
+  grouped.assign(n, 0);
   for (std::uint32_t a = 0; a < n; ++a) {
     local_of[idx[a]] = a;
     if (p.w[idx[a]] > 0.0) insert(a);
   }
-  for (Group& g : groups) {
+  for (std::size_t k = 0; k < G.count; ++k) {
+    BinnedGroup& g = groups[k];
     double v[3] = {0.0, 0.0, 0.0};
     for (const std::uint32_t a : g.members) {
       v[0] += p.vx[idx[a]];
@@ -212,21 +218,29 @@ void BinnedCell::process(std::uint32_t a, std::uint32_t b) {
   }
 }
 
-void BinnedCell::run() {
-  build();
-  for (std::uint32_t a = 0; a < n; ++a) st.particle_steps += p.w[idx[a]] > 0.0 ? 1 : 0;
-  for (std::uint32_t a = 0; a < groups.size(); ++a)
-    for (std::uint32_t b = a; b < groups.size(); ++b) process(a, b);
+void BinnedCell::run(bool reuse) {
+  if (!reuse) build();
+  for (std::size_t g = 0; g < G.count; ++g) st.particle_steps += groups[g].members.size();
+  for (std::uint32_t a = 0; a < G.count; ++a)
+    for (std::uint32_t b = a; b < G.count; ++b) process(a, b);
 }
 
 }  // namespace
 
 void binned_collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell,
-                         std::uint64_t step, const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of) {
+                         std::uint64_t step, const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of,
+                         BinnedGroups& groups, bool reuse) {
+  reuse = reuse && groups.group_of.size() == n;
   std::size_t live = 0;
-  for (std::size_t a = 0; a < n; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
-  if (live < 2) return;
-  BinnedCell(p, idx, n, cell, step, ctx, st, local_of).run();
+  if (reuse)
+    for (std::size_t g = 0; g < groups.count; ++g) live += groups.groups[g].members.size();
+  else
+    for (std::size_t a = 0; a < n; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
+  if (live < 2) {
+    groups.group_of.clear();  // not reusable
+    return;
+  }
+  BinnedCell(p, idx, n, cell, step, ctx, st, local_of, groups).run(reuse);
 }
 
 }  // namespace agglo::acoustics

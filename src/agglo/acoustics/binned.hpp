@@ -16,10 +16,13 @@
 // (collision_step.hpp). After every collision the changed samples move to their new groups, the
 // groups' bounds take them in (bounds only grow within a step) and the rate of the pair of groups
 // being processed is recomputed, so the majorant stays valid after rebounds and energy compensation;
-// a candidate whose ratio exceeds 1 is counted in CollisionStats::violations (must stay 0). Pairs of
+// a candidate whose ratio exceeds 1 is counted in CollisionStats::violations (must stay 0). Groups persist
+// between steps when the samples do not move (the engine's choice, BinnedGroups), and are rebuilt otherwise
+// and every kRegroupEvery steps (bounds of samples that left a group would loosen it). Pairs of
 // groups are processed one after the other within the step (operator splitting, first order in dt_c
 // as PartMC's). Random draws come from a stream keyed by (seed, cell, step).
 #include <cstdint>
+#include <vector>
 
 #include "agglo/acoustics/collision_step.hpp"
 #include "agglo/acoustics/samples.hpp"
@@ -27,10 +30,30 @@
 namespace agglo::acoustics {
 
 inline constexpr double kSizeClassesPerDecade = 8.0;
+inline constexpr std::uint64_t kRegroupEvery = 32;  // steps between rebuilds of groups that are kept
 
-// Processes the samples listed in idx (all in one cell) for one collision step. local_of is scratch
-// indexed by sample (at least p.size() entries; a cell writes only its own samples' entries).
+struct BinnedGroup {
+  std::vector<std::uint32_t> members;  // local positions in the cell's sample list
+  CellBounds cb;                       // bounds over the members (and former members: they only grow)
+  std::uint32_t key = 0;               // size and weight class
+};
+
+// The groups of one cell. They are kept from one step to the next while nothing but collisions changes
+// the samples (no motion, same sample order): then a step costs the group pairs and the collisions, not N.
+struct BinnedGroups {
+  std::vector<BinnedGroup> groups;
+  std::size_t count = 0;                           // groups[0, count) in use
+  std::vector<std::uint32_t> group_of, pos_of;     // by local position
+  std::vector<std::uint8_t> grouped;               // by local position: 1 if in a group
+  std::vector<std::uint64_t> slots;                // open addressing: (key + 1) << 32 | group, 0 = empty
+};
+
+// Processes the samples listed in idx (all in one cell) for one collision step. With reuse, `groups` must
+// hold this cell's groups of the previous step over the same list; otherwise they are rebuilt. local_of
+// is scratch indexed by sample (at least p.size() entries; a cell writes only its own samples' entries,
+// and they must be left alone between steps that reuse the groups).
 void binned_collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell,
-                         std::uint64_t step, const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of);
+                         std::uint64_t step, const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of,
+                         BinnedGroups& groups, bool reuse);
 
 }  // namespace agglo::acoustics

@@ -24,6 +24,7 @@ void parse_distribution(const ConfigSection& s, const std::string& dist, Populat
     p.geometric_mean_diameter = k.geometric_mean_diameter.read(s);
     p.geometric_std = k.geometric_std.read(s);
     p.bins = static_cast<int>(k.bins.read(s));
+    p.lognormal_range = k.lognormal_range.read(s);
     if (p.samples < p.bins)
       k.samples.reject(s, fmt::format("needs at least one sample per bin ({} = {})", k.bins.leaf(), p.bins));
   } else if (dist == "monodisperse") {
@@ -112,11 +113,11 @@ void parse_time(const ConfigSection& root, EngineSettings& e) {
   e.max_subcycles = static_cast<std::uint64_t>(k.max_subcycles.read(ti));
 }
 
-// Largest diameter a population can hold at the start [m] (lognormal: d_g sigma_g^3.5).
+// Largest diameter a population can hold at the start [m] (lognormal: d_g sigma_g^range).
 double largest_diameter(const PopulationSpec& p) {
   double d = 0.0;
   if (p.distribution == Distribution::monodisperse) d = p.diameter;
-  if (p.distribution == Distribution::lognormal) d = p.geometric_mean_diameter * std::pow(p.geometric_std, 3.5);
+  if (p.distribution == Distribution::lognormal) d = p.geometric_mean_diameter * std::pow(p.geometric_std, p.lognormal_range);
   if (p.distribution == Distribution::table)
     for (double x : p.table_diameters) d = std::max(d, x);
   return d;

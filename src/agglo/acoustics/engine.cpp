@@ -84,6 +84,7 @@ bool Engine::state_ok(std::size_t begin, std::size_t end) const {
 }
 
 void Engine::bin() {
+  regroup_ = true;
   const std::size_t n = p_.size();
   cell_of_.resize(n);
   order_.resize(n);
@@ -137,6 +138,22 @@ void Engine::check_state() const {
 }
 
 void Engine::step() {
+  const std::size_t n = p_.size();
+  const bool moving = s_.motion.integrator != Integrator::none;
+  // Without motion positions never change (collisions keep a sample in its cell): the cells stay valid.
+  if (moving || cell_of_.size() != n) {
+    move_and_bin();
+  } else {
+    ++step_;
+  }
+  if (n >= kReorderMinSamples && step_ % kReorderEvery == 1 && (moving || step_ == 1)) {
+    p_.permute(order_);
+    bin();
+  }
+  collide_cells();
+}
+
+void Engine::move_and_bin() {
   const double t0 = time();
   const std::size_t n = p_.size();
   const Motion& M = s_.motion;
@@ -170,10 +187,11 @@ void Engine::step() {
     compute_cells(0, n);  // (not reached unless the fast test gave a false alarm)
   }
   sort_cells();
-  if (n >= kReorderMinSamples && step_ % kReorderEvery == 1) {
-    p_.permute(order_);
-    bin();
-  }
+}
+
+void Engine::collide_cells() {
+  const std::size_t n = p_.size();
+  const bool moving = s_.motion.integrator != Integrator::none;
   CollisionContext ctx;
   ctx.kernel = &kernel_;
   ctx.outcomes = &s_.outcomes;
@@ -187,7 +205,13 @@ void Engine::step() {
   const int nc = static_cast<int>(s_.motion.domain.num_cells());
   const std::uint64_t st = step_;
   const bool binned = s_.selection == Selection::binned;
-  if (binned) local_of_.resize(n);
+  // Binned groups are kept while only collisions change the samples: no motion, same order (binned.hpp).
+  const bool reuse = binned && !moving && !regroup_ && st % kRegroupEvery != 0;
+  regroup_ = false;
+  if (binned) {
+    local_of_.resize(n);
+    groups_.resize(static_cast<std::size_t>(nc));
+  }
   // Exceptions must not leave an OpenMP region: keep the message of the lowest failing cell.
   std::vector<std::string> errors(static_cast<std::size_t>(nc));
 #pragma omp parallel for schedule(dynamic, 1) if (n >= kParallelMinSamples)
@@ -197,7 +221,8 @@ void Engine::step() {
     try {
       const auto cell = static_cast<std::uint64_t>(c);
       if (e - b >= 2 && binned)
-        binned_collide_cell(p_, order_.data() + b, e - b, cell, st, ctx, cell_stats_[c], local_of_.data());
+        binned_collide_cell(p_, order_.data() + b, e - b, cell, st, ctx, cell_stats_[c], local_of_.data(),
+                            groups_[static_cast<std::size_t>(c)], reuse);
       else if (e - b >= 2)
         collide_cell(p_, order_.data() + b, e - b, cell, st, ctx, cell_stats_[c]);
     } catch (const std::exception& ex) {

@@ -66,6 +66,8 @@ class Engine {
 
  private:
   void bin();
+  void move_and_bin();   // motion over one collision step, state check, cells; advances the step counter
+  void collide_cells();  // one collision step in every cell
   void compute_cells(std::size_t begin, std::size_t end);  // cell_of_ for samples [begin, end)
   void sort_cells();                                        // order_, start_ from cell_of_
   bool state_ok(std::size_t begin, std::size_t end) const;  // fast test of check_state's conditions
@@ -79,6 +81,8 @@ class Engine {
   std::vector<std::uint32_t> cell_of_, order_, start_, fill_;
   std::vector<CollisionStats> cell_stats_;
   std::vector<std::uint32_t> local_of_;  // scratch of the binned selection
+  std::vector<BinnedGroups> groups_;     // binned selection: groups of each cell
+  bool regroup_ = true;                  // samples re-binned or reordered since the groups were built
 };
 
 }  // namespace agglo::acoustics

@@ -40,7 +40,7 @@ void draft(const PopulationSpec& s, double Ntot, std::vector<double>& diam, std:
     case Distribution::lognormal: {
       const int K = s.bins;
       const double ls = std::log(s.geometric_std);
-      const double zlo = -3.5, zhi = 3.5;
+      const double zlo = -s.lognormal_range, zhi = s.lognormal_range;
       const double Ftot = normal_cdf(zhi) - normal_cdf(zlo);
       for (int k = 0; k < K; ++k) {
         const double za = zlo + (zhi - zlo) * k / K, zb = zlo + (zhi - zlo) * (k + 1) / K;

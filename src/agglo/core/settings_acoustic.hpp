@@ -69,6 +69,9 @@ struct AcousticSettings {
     Real geometric_std{t, {"population.geometric_std", "", "lognormal: sigma_g"}, std::nullopt,
                        Range::closed(1.0, 1e3)};
     Integer bins{t, {"population.bins", "", "lognormal: size bins"}, 40, 1, 100000};
+    Real lognormal_range{t, {"population.lognormal_range", "", "lognormal: sampled ln d within +- this many ln sigma_g "
+                                                             "of ln d_g (3.5 leaves out 7.7 % of the volume at sigma_g = 2)"},
+                         3.5, Range::closed(1.0, 8.0)};
     Real diameter{t, {"population.diameter", "m", "monodisperse: diameter"}, std::nullopt, Range::closed(0.0, 1e-2)};
     Real mean_volume{t, {"population.mean_volume", "m^3", "exponential: mean volume v0"}, std::nullopt,
                      Range::open_closed(0.0, 1e-6)};

@@ -47,7 +47,7 @@ double transition_bound_pair(const CellBounds& a, const CellBounds& b, double sp
   const double s = a.d_max + b.d_max;
   const double c = speed_scale * std::sqrt(a.cbar_max * a.cbar_max + b.cbar_max * b.cbar_max);
   const double beta_fm = 0.25 * pi * s * s * c;
-  const double beta_c = 2.0 * pi * (a.diff_max + b.diff_max) * (s + 2.0 * std::hypot(a.gap_max, b.gap_max));
+  const double beta_c = 2.0 * pi * (a.diff_max + b.diff_max) * (s + 2.0 * std::sqrt(a.gap_max * a.gap_max + b.gap_max * b.gap_max));
   return beta_c + beta_fm > 0.0 ? beta_c * beta_fm / (beta_c + beta_fm) : 0.0;
 }
 
