@@ -35,16 +35,16 @@ import numpy as np
 
 # PartMC 2.9.0 particle-resolved runs on the same machine kind (2 cores, Debian 12, gfortran 12, CMake
 # Release, one core; 3 timing runs each, output only at start and end; constant case with weight
-# doubling): user CPU and wall ranges [s], peak resident memory [MB], N(T) error over 10 seeds
+# doubling): user CPU and wall ranges [s], peak resident memory [MiB], N(T) error over 10 seeds
 # (mean, s.e., rms, %), size-distribution L2 (number, mass, %). Source: issue 10 and the same PartMC
 # runs as tests/data/partmc/README.md. None: not measured.
 PARTMC = {
-    ("constant", 10000): dict(user=(0.99, 1.04), wall=(1.05, 1.15), rss=40, err=None, l2=None),
-    ("constant", 100000): dict(user=(3.25, 4.22), wall=(3.97, 4.91), rss=164, err=(0.06, 0.10, 0.31), l2=None),
-    ("additive", 100000): dict(user=(3.45, 3.93), wall=(4.66, 6.17), rss=174, err=(0.21, 0.34, 1.05),
+    ("constant", 10000): dict(user=(0.99, 1.04), wall=(1.05, 1.15), rss=39, err=None, l2=None),
+    ("constant", 100000): dict(user=(3.25, 4.22), wall=(3.97, 4.91), rss=160, err=(0.06, 0.10, 0.31), l2=None),
+    ("additive", 100000): dict(user=(3.45, 3.93), wall=(4.66, 6.17), rss=170, err=(0.21, 0.34, 1.05),
                                l2=(3.4, 10.2)),
-    ("brownian", 10000): dict(user=(6.34, 7.15), wall=(6.43, 9.27), rss=40, err=(-0.17, 0.27, 0.84), l2=None),
-    ("brownian", 100000): dict(user=(8.86, 10.30), wall=(9.37, 11.66), rss=162, err=(-0.31, None, 0.36), l2=None),
+    ("brownian", 10000): dict(user=(6.34, 7.15), wall=(6.43, 9.27), rss=39, err=(-0.17, 0.27, 0.84), l2=None),
+    ("brownian", 100000): dict(user=(8.86, 10.30), wall=(9.37, 11.66), rss=158, err=(-0.31, None, 0.36), l2=None),
 }
 PARTMC_END = {"constant": 18.0, "additive": 600.0, "brownian": 14400.0}
 CASES = ("constant", "additive", "brownian")
@@ -195,6 +195,10 @@ def samples_str(n):
     return f"{n:.0e}".replace("e+0", "e")
 
 
+def ratio_str(x):
+    return f"{x:.1f}" if x >= 1 else f"{x:.2f}"
+
+
 def pct(x, digits=2):
     return "–" if x is None or (isinstance(x, float) and math.isnan(x)) else f"{100 * x:+.{digits}f}"
 
@@ -213,7 +217,7 @@ def callgrind_counts(out_dir):
 def accuracy_table(groups):
     lines = ["| case | samples | selection | T [s] | seeds | N(T) error mean ± s.e. [%] | rms [%] "
              "| L2 number per run / of mean [%] | L2 volume per run / of mean [%] | user CPU [s] | wall [s] "
-             "| peak RSS [MB] |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "| peak RSS [MiB] |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for (case, variant, n, sel), g in groups.items():
         se = "–" if math.isnan(g["se"]) else f"{100 * g['se']:.2f}"
         lines.append(
@@ -230,7 +234,7 @@ def speed_table(groups, sels, counts):
     if ratio_name:
         head += [f"{ratio_name} user CPU", f"{ratio_name} instructions (1e4)"]
     head += [f"agglo {s} user CPU [s]" for s in sels] + [f"agglo {s} N(T) rms [%]" for s in sels]
-    head += ["PartMC user CPU [s]", "PartMC wall [s]", "PartMC N(T) error ± s.e. / rms [%]"]
+    head += ["PartMC user CPU [s]", "PartMC wall [s]", "PartMC peak RSS [MiB]", "PartMC N(T) error ± s.e. / rms [%]"]
     head += [f"PartMC/agglo {s}" for s in sels]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     keys = sorted({(c, v, n) for (c, v, n, _) in groups}, key=lambda k: (CASES.index(k[0]), k[1], k[2]))
@@ -248,12 +252,12 @@ def speed_table(groups, sels, counts):
         p = PARTMC.get((case, n)) if t == PARTMC_END[case] else None
         if p:
             err = p["err"]
-            row += [fmt_range(p["user"]), fmt_range(p["wall"]),
+            row += [fmt_range(p["user"]), fmt_range(p["wall"]), f"{p['rss']}",
                     "–" if err is None else f"{err[0]:+.2f}" + (f" ± {err[1]:.2f}" if err[1] else "") + f" / {err[2]:.2f}"]
-            row += [f"{p['user'][0] / statistics.mean(gs[s]['user']):.1f}–{p['user'][1] / statistics.mean(gs[s]['user']):.1f}×"
-                    if gs[s] else "–" for s in sels]
+            row += [f"{ratio_str(p['user'][0] / statistics.mean(gs[s]['user']))}–"
+                    f"{ratio_str(p['user'][1] / statistics.mean(gs[s]['user']))}×" if gs[s] else "–" for s in sels]
         else:
-            row += ["–"] * (3 + len(sels))
+            row += ["–"] * (4 + len(sels))
         lines.append("| " + " | ".join(row) + " |")
     return lines
 
