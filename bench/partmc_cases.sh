@@ -71,7 +71,7 @@ if [[ $CALLGRIND == 1 ]] && ! command -v valgrind > /dev/null; then die "CALLGRI
 mkdir -p "$OUT/runs" "$OUT/sectional" "$OUT/callgrind"
 # The settings, for the header of the table (partmc_compare.py prints them).
 cat > "$OUT/settings.txt" << END_SETTINGS
-$("$AGGLO" --version 2>/dev/null | tail -1), source commit $(git -C "$SRC" rev-parse --short HEAD 2>/dev/null || echo unknown)
+$("$AGGLO" --version 2>/dev/null | tail -1), script commit $(git -C "$SRC" rev-parse --short HEAD 2>/dev/null || echo unknown)
 host $(uname -n), $(nproc) cores, JOBS=$JOBS runs at a time, one thread each, QUICK=$QUICK
 SELECTIONS="${sel_list[*]}" SELECTION_KEY=$SELECTION_KEY SEEDS=$SEEDS
 NANBU_BROWN_SAMPLES="$NANBU_BROWN_SAMPLES" NANBU_BROWN_SEEDS=$NANBU_BROWN_SEEDS BROWN_END=$BROWN_END
