@@ -14,7 +14,7 @@ namespace {
 
 constexpr std::size_t kMaxMechanisms = 16;
 // Classes: size class s = floor(log10(d / 1e-12 m) kSizeClassesPerDecade), clamped to [0, kSizeClasses);
-// weight class q = floor(log2 w), clamped to [0, kWeightClasses). Clamping merges extreme classes,
+// weight class q = floor(log4 w), clamped to [0, kWeightClasses). Clamping merges extreme classes,
 // which only loosens their bounds.
 constexpr int kSizeClasses = 14 * 8;
 constexpr int kWeightClasses = 128;
@@ -33,7 +33,9 @@ class BinnedCell {
   void build();
   void moved(std::size_t i);
   double pair_count(std::uint32_t a, std::uint32_t b) const;
-  void process(std::uint32_t a, std::uint32_t b);
+  double first_step_candidates() const;
+  double majorants(std::uint32_t a, std::uint32_t b, double* M);
+  void process(std::uint32_t a, std::uint32_t b, double h);
   std::uint32_t pick(std::uint32_t g, std::uint32_t exclude);
   bool candidate(std::uint32_t a, std::uint32_t b, const double* M, double Msum);
 
@@ -67,7 +69,7 @@ BinnedCell::BinnedCell(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_,
 std::uint32_t BinnedCell::class_of(std::size_t i) const {
   const double s = std::floor((std::log(p.d[i]) - std::log(1e-12)) * per_ln);
   const int sc = static_cast<int>(std::clamp(s, 0.0, static_cast<double>(kSizeClasses - 1)));
-  const int wc = std::clamp(std::ilogb(p.w[i]), 0, kWeightClasses - 1);
+  const int wc = std::clamp(std::ilogb(p.w[i]) / 2, 0, kWeightClasses - 1);
   return static_cast<std::uint32_t>(sc * kWeightClasses + wc);
 }
 
@@ -90,6 +92,7 @@ std::uint32_t BinnedCell::group_for(std::uint32_t key) {
   if (groups.size() < G.count) groups.emplace_back();
   groups[g].members.clear();
   groups[g].cb = CellBounds{};
+  groups[g].version = ++G.clock;
   groups[g].cb.need_cbar = K.needs_thermal_speed();
   groups[g].key = key;
   G.slots[h] = (static_cast<std::uint64_t>(key) + 1) << 32 | g;
@@ -127,6 +130,7 @@ void BinnedCell::build() {
   }
   for (std::size_t k = 0; k < G.count; ++k) {
     BinnedGroup& g = groups[k];
+    g.version = ++G.clock;
     double v[3] = {0.0, 0.0, 0.0};
     for (const std::uint32_t a : g.members) {
       v[0] += p.vx[idx[a]];
@@ -148,6 +152,7 @@ void BinnedCell::moved(std::size_t i) {
   CellBounds& cb = groups[group_of[a]].cb;
   cb.include(p, i, *ctx.gas);
   K.prepare(cb);
+  groups[group_of[a]].version = ++G.clock;
 }
 
 double BinnedCell::pair_count(std::uint32_t a, std::uint32_t b) const {
@@ -189,8 +194,30 @@ bool BinnedCell::candidate(std::uint32_t a, std::uint32_t b, const double* M, do
   return true;
 }
 
-// Poisson process of candidates of the group pair (a, b) over the step.
-void BinnedCell::process(std::uint32_t a, std::uint32_t b) {
+// Majorants M_m(a, b) into M, returns their sum (from the cache while both groups are unchanged).
+double BinnedCell::majorants(std::uint32_t a, std::uint32_t b, double* M) {
+  if (G.cache_cap < G.count) {
+    G.cache_cap = std::bit_ceil(2 * G.count);
+    G.cache_m.assign(G.cache_cap * G.cache_cap * (nm + 1), 0.0);
+    G.cache_va.assign(G.cache_cap * G.cache_cap, 0);
+    G.cache_vb.assign(G.cache_cap * G.cache_cap, 0);
+  }
+  const std::size_t e = a * G.cache_cap + b;
+  double* m = G.cache_m.data() + e * (nm + 1);
+  if (G.cache_va[e] != groups[a].version || G.cache_vb[e] != groups[b].version) {
+    K.mechanism_bounds(groups[a].cb, groups[b].cb, m);
+    const double wmax = std::max(groups[a].cb.w_max, groups[b].cb.w_max);
+    m[nm] = 0.0;
+    for (std::size_t k = 0; k < nm; ++k) m[nm] += (m[k] *= wmax);
+    G.cache_va[e] = groups[a].version;
+    G.cache_vb[e] = groups[b].version;
+  }
+  std::copy(m, m + nm + 1, M);
+  return m[nm];
+}
+
+// Poisson process of candidates of the group pair (a, b) over a sub-step of length h.
+void BinnedCell::process(std::uint32_t a, std::uint32_t b, double h) {
   double M[kMaxMechanisms];
   double t = 0.0, Msum = 0.0, rate = 0.0;
   bool dirty = true, counted = false;
@@ -198,10 +225,7 @@ void BinnedCell::process(std::uint32_t a, std::uint32_t b) {
     if (dirty) {
       const double np = pair_count(a, b);
       if (np <= 0.0) return;
-      K.mechanism_bounds(groups[a].cb, groups[b].cb, M);
-      const double wmax = std::max(groups[a].cb.w_max, groups[b].cb.w_max);
-      Msum = 0.0;
-      for (std::size_t k = 0; k < nm; ++k) Msum += (M[k] *= wmax);
+      Msum = majorants(a, b, M);
       rate = np * Msum / Vc;
       if (!(rate > 0.0)) return;
       dirty = false;
@@ -211,18 +235,49 @@ void BinnedCell::process(std::uint32_t a, std::uint32_t b) {
     // Next candidate after an exponential gap; u > rate (dt - t) already implies a gap beyond the step
     // (1 - exp(-x) <= x), which spares the logarithm for most group pairs.
     const double u = rng.uniform();
-    if (u > rate * (ctx.dt - t)) return;
+    if (u > rate * (h - t)) return;
     t -= std::log1p(-u) / rate;
-    if (t >= ctx.dt) return;
+    if (t >= h) return;
     dirty = candidate(a, b, M, Msum);
   }
 }
 
+// Expected candidates of the whole step (an upper bound of its collisions) when the cell has no history.
+double BinnedCell::first_step_candidates() const {
+  double M[kMaxMechanisms], c = 0.0;
+  for (std::uint32_t a = 0; a < G.count; ++a)
+    for (std::uint32_t b = a; b < G.count; ++b) {
+      K.mechanism_bounds(groups[a].cb, groups[b].cb, M);
+      double m = 0.0;
+      for (std::size_t k = 0; k < nm; ++k) m += M[k];
+      c += pair_count(a, b) * m * std::max(groups[a].cb.w_max, groups[b].cb.w_max) * ctx.dt / Vc;
+    }
+  return c;
+}
+
+// Sub-steps: as many as keep the collisions of the cell's previous step below kMaxCollisionFraction of its
+// live samples per sub-step (the group pairs are processed one after the other in each sub-step).
 void BinnedCell::run(bool reuse) {
   if (!reuse) build();
-  for (std::size_t g = 0; g < G.count; ++g) st.particle_steps += groups[g].members.size();
-  for (std::uint32_t a = 0; a < G.count; ++a)
-    for (std::uint32_t b = a; b < G.count; ++b) process(a, b);
+  std::uint64_t live = 0;
+  for (std::size_t g = 0; g < G.count; ++g) live += groups[g].members.size();
+  st.particle_steps += live;
+  const double expected = G.has_history ? static_cast<double>(G.last_collisions) : first_step_candidates();
+  const double want = expected / (kMaxCollisionFraction * static_cast<double>(live));
+  const double most = static_cast<double>(G.has_history ? kMaxSubsteps : kMaxFirstSubsteps);
+  const auto nsub = static_cast<std::uint64_t>(std::clamp(std::ceil(want), 1.0, most));
+  const std::uint64_t before = st.collisions;
+  const double h = 0.5 * ctx.dt / static_cast<double>(nsub);
+  for (std::uint64_t s = 0; s < nsub; ++s) {
+    for (std::uint32_t a = 0; a < G.count; ++a)  // forward sweep over the group pairs, half a sub-step
+      for (std::uint32_t b = a; b < G.count; ++b) process(a, b, h);
+    for (std::uint32_t a = static_cast<std::uint32_t>(G.count); a-- > 0;)  // backward sweep, the other half
+      for (std::uint32_t b = static_cast<std::uint32_t>(G.count); b-- > a;) process(a, b, h);
+  }
+  G.last_collisions = st.collisions - before;
+  G.has_history = true;
+  st.subcycled += nsub > 1 ? 1 : 0;
+  st.max_subcycles = std::max(st.max_subcycles, nsub);
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 // method of PartMC, Riemer et al. 2009, Michelotti et al. 2013, extended to differential weights and
 // to the acoustic kernel sum). Its cost follows the number of real collisions, not N x kernel range.
 // The live samples of the cell are grouped by size class (kSizeClassesPerDecade per decade of
-// diameter) and weight class (floor(log2 w)). Each group keeps upper bounds of what the kernels read
+// diameter) and weight class (floor(log4 w): a factor 4 per class). Each group keeps upper bounds of what the kernels read
 // (CellBounds: largest diameter, C_c/d, d l, volume, thermal speed, weight, speed about the group's
 // mean velocity). For every pair of groups (a, b) and every kernel mechanism m (beta is a sum of
 // non-negative mechanisms, bounded separately so that the 1/r terms bounded at contact do not sink
@@ -19,8 +19,11 @@
 // a candidate whose ratio exceeds 1 is counted in CollisionStats::violations (must stay 0). Groups persist
 // between steps when the samples do not move (the engine's choice, BinnedGroups), and are rebuilt otherwise
 // and every kRegroupEvery steps (bounds of samples that left a group would loosen it). Pairs of
-// groups are processed one after the other within the step (operator splitting, first order in dt_c
-// as PartMC's). Random draws come from a stream keyed by (seed, cell, step).
+// groups are processed one after the other (operator splitting, as PartMC's): a sample that changes group
+// meets the groups after its new one for the whole interval, so the error grows with the fraction of
+// samples that collide per interval (constant kernel, 1e5 samples: N(T) -2.8 % at 18 % per step). The step
+// is therefore split into as many sub-steps as keep the previous step's collisions of the cell below
+// kMaxCollisionFraction of its live samples per sub-step (first step: the expected candidates instead). Random draws come from a stream keyed by (seed, cell, step).
 #include <cstdint>
 #include <vector>
 
@@ -31,11 +34,15 @@ namespace agglo::acoustics {
 
 inline constexpr double kSizeClassesPerDecade = 8.0;
 inline constexpr std::uint64_t kRegroupEvery = 32;  // steps between rebuilds of groups that are kept
+inline constexpr double kMaxCollisionFraction = 0.02;  // collisions per live sample and sub-step (target)
+inline constexpr std::uint64_t kMaxSubsteps = 1024;
+inline constexpr std::uint64_t kMaxFirstSubsteps = 64;  // first step: from the expected candidates instead
 
 struct BinnedGroup {
   std::vector<std::uint32_t> members;  // local positions in the cell's sample list
   CellBounds cb;                       // bounds over the members (and former members: they only grow)
   std::uint32_t key = 0;               // size and weight class
+  std::uint64_t version = 0;           // changes whenever cb may have changed (pair majorant cache)
 };
 
 // The groups of one cell. They are kept from one step to the next while nothing but collisions changes
@@ -46,6 +53,14 @@ struct BinnedGroups {
   std::vector<std::uint32_t> group_of, pos_of;     // by local position
   std::vector<std::uint8_t> grouped;               // by local position: 1 if in a group
   std::vector<std::uint64_t> slots;                // open addressing: (key + 1) << 32 | group, 0 = empty
+  std::uint64_t last_collisions = 0;               // collisions of the cell's previous step (sub-step count)
+  bool has_history = false;                        // last_collisions is known
+  // Majorants of group pairs (a <= b at a * cache_cap + b; per mechanism, then their sum), valid while both
+  // groups keep the versions stored with them. Versions come from one counter that never repeats.
+  std::uint64_t clock = 0;
+  std::size_t cache_cap = 0;
+  std::vector<double> cache_m;
+  std::vector<std::uint64_t> cache_va, cache_vb;
 };
 
 // Processes the samples listed in idx (all in one cell) for one collision step. With reuse, `groups` must

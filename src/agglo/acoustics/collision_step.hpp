@@ -23,8 +23,9 @@ struct CollisionStats {
   std::uint64_t coalescences[3] = {0, 0, 0};  // by PairType: droplet, dry, wet
   std::uint64_t rebounds[3] = {0, 0, 0};
   std::uint64_t particle_steps = 0;  // (sample, step) pairs processed
-  std::uint64_t subcycled = 0;       // Nanbu: particle steps that needed more than one trial interval
-  std::uint64_t max_subcycles = 0;   // Nanbu: most trial intervals of one sample in one step
+  std::uint64_t subcycled = 0;       // Nanbu: particle steps that needed more than one trial interval;
+                                     // binned: cell steps split into sub-steps
+  std::uint64_t max_subcycles = 0;   // Nanbu: most trial intervals of one sample in one step; binned: sub-steps
   double max_bound_pn = 0.0;         // Nanbu: largest N * P_bound(dt_c) seen (> 1 means the guard acted)
   double max_pn = 0.0;               // Nanbu: largest N * P_ij evaluated; binned: largest rate / majorant (<= 1)
   std::uint64_t violations = 0;      // Nanbu: P_ij > 1/N; binned: rate > majorant (must stay 0)

@@ -21,6 +21,8 @@ nlohmann::json stats_json(const acoustics::CollisionStats& s, acoustics::Selecti
             {"group_pair_processes", s.bin_pairs},
             {"max_beta_over_majorant", s.max_pn},
             {"violations", s.violations},
+            {"cell_steps_subdivided", s.subcycled},
+            {"max_substeps", s.max_subcycles},
             {"refills", s.refills},
             {"dead_samples", s.dead},
             {"energy_lost_J", s.energy_lost},
