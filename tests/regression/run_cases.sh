@@ -48,4 +48,12 @@ run sweep seed002_baseline --param population.1.diameter --values 10e-6,30e-6 --
 run sectional partmc_constant
 run sectional partmc_brownian
 run sectional partmc_additive --set time.end=150 --set "output.psd_times=[0.0,150.0]"
+# The binned selection: a shortened DSMC run of the Brownian case (the case sets it), and the acoustic
+# baseline with it (into seed002_baseline_binned-acoustic; the default run's folder is set aside meanwhile).
+run acoustic partmc_brownian --set population.0.samples=2000 --set time.end=3600 --set "output.psd_times=[0.0,3600.0]"
+mv "$O/seed002_baseline-acoustic" "$O/.nanbu" 2>/dev/null
+run acoustic seed002_baseline --set time.selection=binned --set time.end=0.02 --set "output.snapshot_times=[0.0,0.01]" --set "output.psd_times=[0.0,0.02]"
+rm -rf "$O/seed002_baseline_binned-acoustic"
+mv "$O/seed002_baseline-acoustic" "$O/seed002_baseline_binned-acoustic" 2>/dev/null
+mv "$O/.nanbu" "$O/seed002_baseline-acoustic" 2>/dev/null
 exit $status

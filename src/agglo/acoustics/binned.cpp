@@ -34,10 +34,12 @@ class BinnedCell {
   void moved(std::size_t i);
   double pair_count(std::uint32_t a, std::uint32_t b) const;
   double first_step_candidates() const;
-  double majorants(std::uint32_t a, std::uint32_t b, double* M);
-  void process(std::uint32_t a, std::uint32_t b, double h);
+  void process_row(std::uint32_t a, double h);
+  double row_rates(std::uint32_t a, bool all);
+  double row_entry(std::uint32_t a, std::uint32_t b);
+  const double* majorant_entry(std::uint32_t a, std::uint32_t b);
   std::uint32_t pick(std::uint32_t g, std::uint32_t exclude);
-  bool candidate(std::uint32_t a, std::uint32_t b, const double* M, double Msum);
+  bool candidate(std::uint32_t a, std::uint32_t b, const double* M);
 
   SampleSet& p;
   const std::uint32_t* idx;
@@ -55,6 +57,9 @@ class BinnedCell {
   std::vector<BinnedGroup>& groups;
   std::vector<std::uint32_t>&group_of, &pos_of;
   std::vector<std::uint8_t>& grouped;
+  std::vector<double> row_;  // candidate rates over n_a of the row a being processed
+  std::uint64_t row_version_ = 0;     // version of group a when row_ was computed
+  std::vector<std::uint32_t> changed_;  // groups whose count or bounds changed since row_ was updated
 };
 
 BinnedCell::BinnedCell(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_, std::uint64_t cell,
@@ -146,9 +151,13 @@ void BinnedCell::build() {
 // Sample i changed (size, weight, velocity): regroup it and let its group's bounds take it in.
 void BinnedCell::moved(std::size_t i) {
   const std::uint32_t a = local_of[i];
-  if (grouped[a]) remove(a);
+  if (grouped[a]) {
+    changed_.push_back(group_of[a]);
+    remove(a);
+  }
   if (!(p.w[i] > 0.0)) return;
   insert(a);
+  changed_.push_back(group_of[a]);
   CellBounds& cb = groups[group_of[a]].cb;
   cb.include(p, i, *ctx.gas);
   K.prepare(cb);
@@ -171,9 +180,9 @@ std::uint32_t BinnedCell::pick(std::uint32_t g, std::uint32_t exclude) {
 }
 
 // One candidate of groups (a, b): returns true if it collided (the groups changed).
-bool BinnedCell::candidate(std::uint32_t a, std::uint32_t b, const double* M, double Msum) {
+bool BinnedCell::candidate(std::uint32_t a, std::uint32_t b, const double* M) {
   ++st.trials;
-  double u = rng.uniform() * Msum;
+  double u = rng.uniform() * M[nm];
   std::size_t k = 0;
   while (k + 1 < nm && u >= M[k]) u -= M[k++];
   if (!(M[k] > 0.0)) return false;
@@ -194,8 +203,9 @@ bool BinnedCell::candidate(std::uint32_t a, std::uint32_t b, const double* M, do
   return true;
 }
 
-// Majorants M_m(a, b) into M, returns their sum (from the cache while both groups are unchanged).
-double BinnedCell::majorants(std::uint32_t a, std::uint32_t b, double* M) {
+// Majorants M_m(a, b), m < nm, then their sum at [nm] (cached while both groups are unchanged). The pointer
+// is valid until the next call.
+const double* BinnedCell::majorant_entry(std::uint32_t a, std::uint32_t b) {
   if (G.cache_cap < G.count) {
     G.cache_cap = std::bit_ceil(2 * G.count);
     G.cache_m.assign(G.cache_cap * G.cache_cap * (nm + 1), 0.0);
@@ -212,33 +222,55 @@ double BinnedCell::majorants(std::uint32_t a, std::uint32_t b, double* M) {
     G.cache_va[e] = groups[a].version;
     G.cache_vb[e] = groups[b].version;
   }
-  std::copy(m, m + nm + 1, M);
-  return m[nm];
+  return m;
 }
 
-// Poisson process of candidates of the group pair (a, b) over a sub-step of length h.
-void BinnedCell::process(std::uint32_t a, std::uint32_t b, double h) {
-  double M[kMaxMechanisms];
-  double t = 0.0, Msum = 0.0, rate = 0.0;
-  bool dirty = true, counted = false;
+// Candidate rate of the pair (a, b) over n_a (the row's common factor) [1/s].
+double BinnedCell::row_entry(std::uint32_t a, std::uint32_t b) {
+  const double na = static_cast<double>(groups[a].members.size()), nb = static_cast<double>(groups[b].members.size());
+  const double n = a == b ? 0.5 * (na - 1.0) : nb;
+  return n > 0.0 && na > 0.0 ? n * majorant_entry(a, b)[nm] / Vc : 0.0;
+}
+
+// Candidate rates of the pairs (a, b), b >= a, over n_a into row_ (all of them, or after a collision only
+// those of the groups it changed, unless group a's bounds changed); returns the row's total rate.
+double BinnedCell::row_rates(std::uint32_t a, bool all) {
+  if (all || groups[a].version != row_version_) {
+    row_.assign(G.count - a, 0.0);
+    for (std::uint32_t b = a; b < G.count; ++b) row_[b - a] = row_entry(a, b);
+    row_version_ = groups[a].version;
+    ++st.bin_pairs;
+  } else {
+    row_.resize(G.count - a, 0.0);
+    for (const std::uint32_t g : changed_)
+      if (g >= a) row_[g - a] = row_entry(a, g);
+  }
+  changed_.clear();
+  double sum = 0.0;
+  for (const double e : row_) sum += e;
+  return static_cast<double>(groups[a].members.size()) * sum;
+}
+
+// Poisson process of the candidates of all pairs (a, b >= a) together over an interval h (total rate the
+// sum of the pair rates, exponential gaps; b drawn with probability rate_ab / sum). The rates are
+// recomputed after every collision.
+void BinnedCell::process_row(std::uint32_t a, double h) {
+  changed_.clear();
+  double t = 0.0, R = row_rates(a, true);
   for (;;) {
-    if (dirty) {
-      const double np = pair_count(a, b);
-      if (np <= 0.0) return;
-      Msum = majorants(a, b, M);
-      rate = np * Msum / Vc;
-      if (!(rate > 0.0)) return;
-      dirty = false;
-      if (!counted) ++st.bin_pairs;
-      counted = true;
-    }
-    // Next candidate after an exponential gap; u > rate (dt - t) already implies a gap beyond the step
-    // (1 - exp(-x) <= x), which spares the logarithm for most group pairs.
+    if (!(R > 0.0)) return;
+    // u > R (h - t) already implies a gap beyond the interval (1 - exp(-x) <= x): no logarithm needed.
     const double u = rng.uniform();
-    if (u > rate * (h - t)) return;
-    t -= std::log1p(-u) / rate;
+    if (u > R * (h - t)) return;
+    t -= std::log1p(-u) / R;
     if (t >= h) return;
-    dirty = candidate(a, b, M, Msum);
+    double x = rng.uniform() * R / static_cast<double>(groups[a].members.size());
+    std::size_t k = 0;
+    while (k + 1 < row_.size() && x >= row_[k]) x -= row_[k++];
+    while (k > 0 && !(row_[k] > 0.0)) --k;  // rounding at the end of the row
+    if (!(row_[k] > 0.0)) continue;
+    const auto b = static_cast<std::uint32_t>(a + k);
+    if (candidate(a, b, majorant_entry(a, b))) R = row_rates(a, false);
   }
 }
 
@@ -269,10 +301,8 @@ void BinnedCell::run(bool reuse) {
   const std::uint64_t before = st.collisions;
   const double h = 0.5 * ctx.dt / static_cast<double>(nsub);
   for (std::uint64_t s = 0; s < nsub; ++s) {
-    for (std::uint32_t a = 0; a < G.count; ++a)  // forward sweep over the group pairs, half a sub-step
-      for (std::uint32_t b = a; b < G.count; ++b) process(a, b, h);
-    for (std::uint32_t a = static_cast<std::uint32_t>(G.count); a-- > 0;)  // backward sweep, the other half
-      for (std::uint32_t b = static_cast<std::uint32_t>(G.count); b-- > a;) process(a, b, h);
+    for (std::uint32_t a = 0; a < G.count; ++a) process_row(a, h);  // forward sweep over the rows, half a sub-step
+    for (std::uint32_t a = static_cast<std::uint32_t>(G.count); a-- > 0;) process_row(a, h);  // backward, other half
   }
   G.last_collisions = st.collisions - before;
   G.has_history = true;
