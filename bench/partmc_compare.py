@@ -313,10 +313,12 @@ def main():
     if chk:
         notes.append(f"- agglo sectional vs PartMC's sectional N(t) (every 60 s up to {chk[1]:g} s): largest "
                      f"relative difference {chk[0]:.1e}, {chk[2]:+.1e} at {chk[1]:g} s.")
-    vols = {g["vol0"] for (c, _, _, _), g in groups.items() if c == "brownian"}
-    if vols:
-        notes.append(f"- Brownian: the DSMC's initial volume is {100 * (min(vols) - 1):+.1f} % of the sectional's "
-                     "(the DSMC samples the lognormal on d_g σ_g^±3.5; the sectional takes it whole).")
+    for label, variant in (("full", "full"), ("shortened", "short")):
+        vols = {g["vol0"] for (c, v, _, _), g in groups.items() if c == "brownian" and v == variant}
+        if vols:
+            notes.append(f"- Brownian ({label} runs): the DSMC's initial volume is {100 * (min(vols) - 1):+.1f} % of the "
+                         "sectional's (the DSMC samples the lognormal on d_g σ_g^±population.lognormal_range: 5.5 in "
+                         "the case file, SHORT_RANGE for the shortened runs; the sectional takes it whole).")
     md += notes
     text = "\n".join(md) + "\n"
     with open(os.path.join(args.out, "partmc_cases.md"), "w") as f:
