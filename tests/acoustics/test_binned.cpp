@@ -284,8 +284,9 @@ TEST(Binned, GroupPairBoundsDominateEveryMechanism) {
 // The statistical error of one 1e5-sample run is about 0.1 % (sqrt of the 3e5 collision events, relative).
 TEST(Binned, BrownianWith1e5SamplesMatchesTheSectionalSolution) {
   // The whole distribution (lognormal_range 5.5): the sectional reference has no cut (3.5 would bias N(4 h)
-  // by +0.25 %, docs/acoustics.md). The twin comparison keeps 3.5, where Nanbu's cell majorant is 40x smaller.
-  const std::string pop = "lognormal_range = 5.5\n" + twin_cases()[2].pop;
+  // by +0.25 %, docs/acoustics.md); equal weights as the case file and PartMC. The twin comparison keeps 3.5
+  // and per-bin weights, where Nanbu's cell majorant is 40x smaller.
+  const std::string pop = "lognormal_range = 5.5\nlognormal_weights = \"equal\"\n" + twin_cases()[2].pop;
   std::string text = coagulation_case("model = \"brownian_partmc\"", pop, 14400.0, 10.0, "binned", 1);
   text.replace(text.find("samples = 2000"), 14, "samples = 100000");
   Engine e = test::make_engine(text);

@@ -58,6 +58,7 @@ class BinnedCell {
   std::vector<std::uint32_t>&group_of, &pos_of;
   std::vector<std::uint8_t>& grouped;
   std::vector<double> row_;  // candidate rates over n_a of the row a being processed
+  std::vector<double> cum_;  // their running sums (partner group drawn by bisection)
   std::uint64_t row_version_ = 0;     // version of group a when row_ was computed
   std::vector<std::uint32_t> changed_;  // groups whose count or bounds changed since row_ was updated
 };
@@ -246,8 +247,9 @@ double BinnedCell::row_rates(std::uint32_t a, bool all) {
       if (g >= a) row_[g - a] = row_entry(a, g);
   }
   changed_.clear();
+  cum_.resize(row_.size());
   double sum = 0.0;
-  for (const double e : row_) sum += e;
+  for (std::size_t k = 0; k < row_.size(); ++k) cum_[k] = (sum += row_[k]);
   return static_cast<double>(groups[a].members.size()) * sum;
 }
 
@@ -264,9 +266,9 @@ void BinnedCell::process_row(std::uint32_t a, double h) {
     if (u > R * (h - t)) return;
     t -= std::log1p(-u) / R;
     if (t >= h) return;
-    double x = rng.uniform() * R / static_cast<double>(groups[a].members.size());
-    std::size_t k = 0;
-    while (k + 1 < row_.size() && x >= row_[k]) x -= row_[k++];
+    const double x = rng.uniform() * R / static_cast<double>(groups[a].members.size());
+    auto k = static_cast<std::size_t>(std::upper_bound(cum_.begin(), cum_.end(), x) - cum_.begin());
+    k = std::min(k, row_.size() - 1);
     while (k > 0 && !(row_[k] > 0.0)) --k;  // rounding at the end of the row
     if (!(row_[k] > 0.0)) continue;
     const auto b = static_cast<std::uint32_t>(a + k);

@@ -25,6 +25,7 @@ void parse_distribution(const ConfigSection& s, const std::string& dist, Populat
     p.geometric_std = k.geometric_std.read(s);
     p.bins = static_cast<int>(k.bins.read(s));
     p.lognormal_range = k.lognormal_range.read(s);
+    p.lognormal_equal_weights = k.lognormal_weights.read(s) == "equal";
     if (p.samples < p.bins)
       k.samples.reject(s, fmt::format("needs at least one sample per bin ({} = {})", k.bins.leaf(), p.bins));
   } else if (dist == "monodisperse") {

@@ -19,6 +19,19 @@ double normal_quantile(double q) {
 }
 
 namespace {
+// Lognormal with equal weights: sample m at the quantile (m + 1/2)/n of the distribution within
+// ln d_g +- range ln sigma_g, each standing for N_tot / n particles.
+void draft_lognormal_equal(const PopulationSpec& s, double Ntot, std::vector<double>& diam, std::vector<double>& num) {
+  const double ls = std::log(s.geometric_std), Flo = normal_cdf(-s.lognormal_range);
+  const double Fhi = normal_cdf(s.lognormal_range);
+  const long n = s.samples;
+  for (long m = 0; m < n; ++m) {
+    const double z = normal_quantile(Flo + (Fhi - Flo) * (static_cast<double>(m) + 0.5) / static_cast<double>(n));
+    diam.push_back(s.geometric_mean_diameter * std::exp(z * ls));
+    num.push_back(Ntot / static_cast<double>(n));
+  }
+}
+
 // Diameter and real number (before rounding) of every sample of the population, in size order.
 void draft(const PopulationSpec& s, double Ntot, std::vector<double>& diam, std::vector<double>& num) {
   using constants::pi;
@@ -38,6 +51,10 @@ void draft(const PopulationSpec& s, double Ntot, std::vector<double>& diam, std:
       }
       break;
     case Distribution::lognormal: {
+      if (s.lognormal_equal_weights) {
+        draft_lognormal_equal(s, Ntot, diam, num);
+        break;
+      }
       const int K = s.bins;
       const double ls = std::log(s.geometric_std);
       const double zlo = -s.lognormal_range, zhi = s.lognormal_range;

@@ -1,7 +1,8 @@
 #pragma once
 // Initial sampled populations (docs/model.md §C.6).
 //  - lognormal (d_g, sigma_g): K log-spaced bins on [d_g sigma_g^-z, d_g sigma_g^z] (z = lognormal_range), equal numbers
-//    of samples per bin, bin number from the lognormal integral (renormalised to the truncated
+//    of samples per bin (lognormal_weights = "by_bin"; "equal": equal weights at stratified quantiles
+//    of the whole range), bin number from the lognormal integral (renormalised to the truncated
 //    range so that sum w = N_tot V); diameters at stratified quantiles of the lognormal within the bin.
 //  - monodisperse (d), exponential in volume (n(v) = N0/v0 e^(-v/v0); stratified quantiles, equal
 //    weights), table (listed diameters with number fractions; equal samples per entry).
@@ -36,6 +37,7 @@ struct PopulationSpec {
   double geometric_std = 2.0;                  // sigma_g
   int bins = static_cast<int>(settings::acoustic_settings().population.bins.def());  // lognormal bins K
   double lognormal_range = settings::acoustic_settings().population.lognormal_range.def();  // +- z sampled
+  bool lognormal_equal_weights = false;  // equal weights at stratified quantiles instead of per-bin weights
   double diameter = 0.0;                       // monodisperse [m]
   double mean_volume = 0.0;                    // exponential v0 [m^3]
   std::vector<double> table_diameters;         // [m]

@@ -72,6 +72,10 @@ struct AcousticSettings {
     Real lognormal_range{t, {"population.lognormal_range", "", "lognormal: sampled ln d within +- this many ln sigma_g "
                                                              "of ln d_g (3.5 leaves out 7.7 % of the volume at sigma_g = 2)"},
                          3.5, Range::closed(1.0, 8.0)};
+    Choice lognormal_weights{t, {"population.lognormal_weights", "",
+                                 "lognormal: equal samples per size bin weighted by the bin's probability (by_bin), "
+                                 "or equal weights at stratified quantiles of the whole range (equal, as PartMC)"},
+                             "by_bin", {"by_bin", "equal"}};
     Real diameter{t, {"population.diameter", "m", "monodisperse: diameter"}, std::nullopt, Range::closed(0.0, 1e-2)};
     Real mean_volume{t, {"population.mean_volume", "m^3", "exponential: mean volume v0"}, std::nullopt,
                      Range::open_closed(0.0, 1e-6)};
