@@ -19,6 +19,14 @@ constexpr std::size_t kMaxMechanisms = 16;
 constexpr int kSizeClasses = 14 * 8;
 constexpr int kWeightClasses = 128;
 
+// True if two bounds are equal in every field a kernel reads (then cached majorants stay valid).
+bool same_bounds(const CellBounds& x, const CellBounds& y) {
+  return x.d_max == y.d_max && x.vol_max == y.vol_max && x.dl_max == y.dl_max && x.ccd_max == y.ccd_max &&
+         x.w_max == y.w_max && x.speed_dev_max == y.speed_dev_max && x.cbar_max == y.cbar_max &&
+         x.diff_max == y.diff_max && x.gap_max == y.gap_max && x.vref[0] == y.vref[0] && x.vref[1] == y.vref[1] &&
+         x.vref[2] == y.vref[2];
+}
+
 class BinnedCell {
  public:
   BinnedCell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
@@ -160,9 +168,10 @@ void BinnedCell::moved(std::size_t i) {
   insert(a);
   changed_.push_back(group_of[a]);
   CellBounds& cb = groups[group_of[a]].cb;
+  const CellBounds before = cb;
   cb.include(p, i, *ctx.gas);
   K.prepare(cb);
-  groups[group_of[a]].version = ++G.clock;
+  if (!same_bounds(before, cb)) groups[group_of[a]].version = ++G.clock;
 }
 
 double BinnedCell::pair_count(std::uint32_t a, std::uint32_t b) const {
@@ -240,7 +249,7 @@ double BinnedCell::row_rates(std::uint32_t a, bool all) {
     row_.assign(G.count - a, 0.0);
     for (std::uint32_t b = a; b < G.count; ++b) row_[b - a] = row_entry(a, b);
     row_version_ = groups[a].version;
-    ++st.bin_pairs;
+    ++st.row_rate_updates;
   } else {
     row_.resize(G.count - a, 0.0);
     for (const std::uint32_t g : changed_)

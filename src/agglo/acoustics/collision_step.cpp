@@ -22,7 +22,7 @@ void CollisionStats::add(const CollisionStats& o) {
   dead += o.dead;
   energy_lost += o.energy_lost;
   energy_returned += o.energy_returned;
-  bin_pairs += o.bin_pairs;
+  row_rate_updates += o.row_rate_updates;
 }
 
 }  // namespace agglo::acoustics

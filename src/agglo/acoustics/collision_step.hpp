@@ -33,7 +33,7 @@ struct CollisionStats {
   std::uint64_t dead = 0;            // zero-weight samples that could not be refilled
   double energy_lost = 0.0;          // split-merge losses (eq. 29) [J]
   double energy_returned = 0.0;      // compensation given back (eq. 30) [J]
-  std::uint64_t bin_pairs = 0;       // binned: (bin pair, mechanism) processes run
+  std::uint64_t row_rate_updates = 0;  // binned: full computations of a row of group-pair rates
   void add(const CollisionStats& o);
 };
 

@@ -20,11 +20,11 @@ std::string binned_report(const CollisionStats& s) {
   return fmt::format(
       "binned: particle_steps={} candidates={} kernel_evals={} collisions={} ({:.3g}% of candidates) "
       "coalescences(droplet,dry,wet)=({},{},{}) rebounds(droplet,dry,wet)=({},{},{})\n"
-      "binned majorants: group_pair_processes={} max beta/majorant={:.4g} violations(beta>majorant)={} "
+      "binned majorants: full_row_rate_computations={} max beta/majorant={:.4g} violations(beta>majorant)={} "
       "cell_steps_subdivided={} max_substeps={}\n"
       "binned refills={} dead_samples={} split_merge_energy_lost={:.6g} J compensated={:.6g} J\n",
       s.particle_steps, s.trials, s.kernel_evals, s.collisions, acc, s.coalescences[0], s.coalescences[1],
-      s.coalescences[2], s.rebounds[0], s.rebounds[1], s.rebounds[2], s.bin_pairs, s.max_pn, s.violations, s.subcycled,
+      s.coalescences[2], s.rebounds[0], s.rebounds[1], s.rebounds[2], s.row_rate_updates, s.max_pn, s.violations, s.subcycled,
       s.max_subcycles, s.refills,
       s.dead, s.energy_lost, s.energy_returned);
 }

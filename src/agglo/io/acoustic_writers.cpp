@@ -18,7 +18,7 @@ nlohmann::json stats_json(const acoustics::CollisionStats& s, acoustics::Selecti
             {"collisions", s.collisions},
             {"coalescences", {{"droplet", s.coalescences[0]}, {"dry", s.coalescences[1]}, {"wet", s.coalescences[2]}}},
             {"rebounds", {{"droplet", s.rebounds[0]}, {"dry", s.rebounds[1]}, {"wet", s.rebounds[2]}}},
-            {"group_pair_processes", s.bin_pairs},
+            {"full_row_rate_computations", s.row_rate_updates},
             {"max_beta_over_majorant", s.max_pn},
             {"violations", s.violations},
             {"cell_steps_subdivided", s.subcycled},
