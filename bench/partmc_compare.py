@@ -262,6 +262,34 @@ def speed_table(groups, sels, counts):
     return lines
 
 
+def equal_error_table(groups, sels):
+    """Work at equal accuracy: per case and selection, the smallest sample count (full-length runs) whose N(T)
+    rms plus one standard error of that rms is at or below PartMC's rms at 1e5 (conservative: agglo's rms over
+    n seeds has a relative standard error of about 1/sqrt(2n)), and its CPU against PartMC's 1e5 run."""
+    head = ["case", "selection", "PartMC 1e5 rms [%]", "agglo samples", "agglo rms ± s.e. of rms [%]",
+            "agglo user CPU [s]", "PartMC 1e5 user CPU [s]", "PartMC/agglo"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for case in CASES:
+        p = PARTMC.get((case, 100000))
+        if not p or not p["err"]:
+            continue
+        for s in sels:
+            cands = sorted((n, g) for (c, v, n, sel), g in groups.items()
+                           if c == case and v == "full" and sel == s and g["t"] == PARTMC_END[case])
+            hit = next(((n, g) for n, g in cands if 100 * g["rms"] * (1 + 1 / math.sqrt(2 * g["n"])) <= p["err"][2]),
+                       None)
+            if not hit:
+                lines.append(f"| {case} | {s} | {p['err'][2]:.2f} | none of {[samples_str(n) for n, _ in cands]} | – | – "
+                             f"| {fmt_range(p['user'])} | – |")
+                continue
+            n, g = hit
+            mean_cpu = statistics.mean(g["user"])
+            lines.append(f"| {case} | {s} | {p['err'][2]:.2f} | {samples_str(n)} | {100 * g['rms']:.2f} ± "
+                         f"{100 * g['rms'] / math.sqrt(2 * g['n']):.2f} | {fmt_range(g['user'])} | {fmt_range(p['user'])} "
+                         f"| {ratio_str(p['user'][0] / mean_cpu)}–{ratio_str(p['user'][1] / mean_cpu)}× |")
+    return lines
+
+
 def sectional_check(out_dir, partmc_csv):
     """Largest relative difference of agglo's sectional N(t) from PartMC's sectional N(t)."""
     sect = os.path.join(out_dir, "sectional", "brownian_full", "out", "efficiency.csv")
@@ -303,6 +331,10 @@ def main():
     md += ["", "Speed: selections compared in the same script, and PartMC 2.9.0 (same machine kind, one core, "
            "3 runs; PartMC/agglo = PartMC's user CPU range over agglo's mean):", ""]
     md += speed_table(groups, sels, counts)
+    md += ["", "Equal accuracy: the fewest samples (of those run) whose N(T) rms over the seeds, plus one standard "
+           "error of that rms (relative 1/sqrt(2 seeds)), is at or below PartMC's rms at 1e5, and their CPU against "
+           "PartMC's 1e5 run:", ""]
+    md += equal_error_table(groups, sels)
     if counts:
         md += ["", "Instructions (valgrind --tool=callgrind, whole process, 1e4 samples, seed 1): "
                + ", ".join(f"{k} {v / 1e9:.3f} G" for k, v in counts.items())]

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "agglo/acoustics/cell_events.hpp"
+#include "agglo/acoustics/rate_tree.hpp"
 #include "agglo/core/rng.hpp"
 
 namespace agglo::acoustics {
@@ -13,10 +14,13 @@ namespace agglo::acoustics {
 namespace {
 
 constexpr std::size_t kMaxMechanisms = 16;
-// Classes: size class s = floor(log10(d / 1e-12 m) kSizeClassesPerDecade), clamped to [0, kSizeClasses);
-// weight class q = floor(log4 w), clamped to [0, kWeightClasses). Clamping merges extreme classes,
-// which only loosens their bounds.
-constexpr int kSizeClasses = 14 * 8;
+// Classes from the bits of the doubles: size class = biased binary exponent of d with its first
+// kSizeBits mantissa bits, counted from d = 2^-40 m (~1e-12 m); weight class = binary exponent of w
+// (>= 1) over kWeightOctavesPerClass. Both are clamped (merging extreme classes only loosens their bounds).
+constexpr int kSizeBits = std::countr_zero(static_cast<unsigned>(kSizeClassesPerOctave));
+static_assert(kSizeClassesPerOctave == 1 << kSizeBits, "kSizeClassesPerOctave must be a power of 2");
+constexpr std::int64_t kSizeOrigin = 1023 - 40;
+constexpr int kSizeClasses = 48 << kSizeBits;
 constexpr int kWeightClasses = 128;
 
 // True if two bounds are equal in every field a kernel reads (then cached majorants stay valid).
@@ -31,7 +35,7 @@ class BinnedCell {
  public:
   BinnedCell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
              const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of, BinnedGroups& g);
-  void run(bool reuse);
+  void run(GroupReuse mode);
 
  private:
   std::uint32_t class_of(std::size_t i) const;
@@ -39,15 +43,18 @@ class BinnedCell {
   void insert(std::uint32_t a);
   void remove(std::uint32_t a);
   void build();
+  void retighten();
+  void set_bounds(std::size_t k);
   void moved(std::size_t i);
-  double pair_count(std::uint32_t a, std::uint32_t b) const;
-  double first_step_candidates() const;
+  double first_step_candidates();
   void process_row(std::uint32_t a, double h);
-  double row_rates(std::uint32_t a, bool all);
+  double full_row(std::uint32_t a);
+  double update_row(std::uint32_t a);
   double row_entry(std::uint32_t a, std::uint32_t b);
-  const double* majorant_entry(std::uint32_t a, std::uint32_t b);
-  std::uint32_t pick(std::uint32_t g, std::uint32_t exclude);
-  bool candidate(std::uint32_t a, std::uint32_t b, const double* M);
+  void ensure_cache();
+  void refresh_majorant(std::uint32_t a, std::uint32_t b, std::size_t e);
+  void pick_pair(std::uint32_t a, std::uint32_t b, std::uint32_t& la, std::uint32_t& lb);
+  bool candidate(std::uint32_t a, std::uint32_t b);
 
   SampleSet& p;
   const std::uint32_t* idx;
@@ -56,7 +63,7 @@ class BinnedCell {
   CollisionStats& st;
   std::uint32_t* local_of;
   const Kernel& K;
-  const double Vc, per_ln;
+  const double Vc;
   CounterRng rng;
   CellEvents events;
   const bool need_r, excl;
@@ -65,9 +72,11 @@ class BinnedCell {
   std::vector<BinnedGroup>& groups;
   std::vector<std::uint32_t>&group_of, &pos_of;
   std::vector<std::uint8_t>& grouped;
-  std::vector<double> row_;  // candidate rates over n_a of the row a being processed
-  std::vector<double> cum_;  // their running sums (partner group drawn by bisection)
-  std::uint64_t row_version_ = 0;     // version of group a when row_ was computed
+  const double inv_vc;
+  std::vector<double> scratch_;         // rates of a row before they enter row_
+  RateTree row_;                        // candidate rates over n_a of the row a being processed [1/s]
+  std::uint64_t row_version_ = 0;       // version of group a when row_ was computed
+  std::size_t row_count_ = 0;           // number of groups then
   std::vector<std::uint32_t> changed_;  // groups whose count or bounds changed since row_ was updated
 };
 
@@ -75,15 +84,17 @@ BinnedCell::BinnedCell(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_,
                        std::uint64_t step, const CollisionContext& ctx_, CollisionStats& st_, std::uint32_t* local_of_,
                        BinnedGroups& g)
     : p(p_), idx(idx_), n(n_), ctx(ctx_), st(st_), local_of(local_of_), K(*ctx_.kernel),
-      Vc(ctx_.domain.cell_volume()), per_ln(kSizeClassesPerDecade / std::log(10.0)),
+      Vc(ctx_.domain.cell_volume()),
       rng(ctx_.seed, 0x200000000ULL + cell, step), events(p_, idx_, n_, ctx_, st_, rng), need_r(K.needs_distance()),
       excl(K.settings().exclude_same_population), nm(K.mechanism_count()), G(g), groups(g.groups), group_of(g.group_of),
-      pos_of(g.pos_of), grouped(g.grouped) {}
+      pos_of(g.pos_of), grouped(g.grouped), inv_vc(1.0 / Vc) {}
 
 std::uint32_t BinnedCell::class_of(std::size_t i) const {
-  const double s = std::floor((std::log(p.d[i]) - std::log(1e-12)) * per_ln);
-  const int sc = static_cast<int>(std::clamp(s, 0.0, static_cast<double>(kSizeClasses - 1)));
-  const int wc = std::clamp(std::ilogb(p.w[i]) / 2, 0, kWeightClasses - 1);
+  const auto bd = std::bit_cast<std::uint64_t>(p.d[i]), bw = std::bit_cast<std::uint64_t>(p.w[i]);
+  const auto s = static_cast<std::int64_t>(bd >> (52 - kSizeBits)) - (kSizeOrigin << kSizeBits);
+  const auto q = (static_cast<std::int64_t>(bw >> 52) - 1023) / kWeightOctavesPerClass;
+  const auto sc = std::clamp<std::int64_t>(s, 0, kSizeClasses - 1);
+  const auto wc = std::clamp<std::int64_t>(q, 0, kWeightClasses - 1);
   return static_cast<std::uint32_t>(sc * kWeightClasses + wc);
 }
 
@@ -104,12 +115,16 @@ std::uint32_t BinnedCell::group_for(std::uint32_t key) {
     if ((G.slots[h] >> 32) == static_cast<std::uint64_t>(key) + 1) return static_cast<std::uint32_t>(G.slots[h]);
   const auto g = static_cast<std::uint32_t>(G.count++);
   if (groups.size() < G.count) groups.emplace_back();
+  G.size.resize(std::max(G.size.size(), G.count), 0.0);
+  G.version.resize(std::max(G.version.size(), G.count), 0);
   groups[g].members.clear();
   groups[g].cb = CellBounds{};
-  groups[g].version = ++G.clock;
   groups[g].cb.need_cbar = K.needs_thermal_speed();
   groups[g].key = key;
+  G.size[g] = 0.0;
+  G.version[g] = ++G.clock;
   G.slots[h] = (static_cast<std::uint64_t>(key) + 1) << 32 | g;
+  ensure_cache();
   return g;
 }
 
@@ -119,19 +134,22 @@ void BinnedCell::insert(std::uint32_t a) {
   group_of[a] = g;
   pos_of[a] = static_cast<std::uint32_t>(groups[g].members.size());
   groups[g].members.push_back(a);
+  G.size[g] += 1.0;
   grouped[a] = 1;
 }
 
 void BinnedCell::remove(std::uint32_t a) {
-  auto& m = groups[group_of[a]].members;
+  const std::uint32_t g = group_of[a];
+  auto& m = groups[g].members;
   const std::uint32_t last = m.back();
   m[pos_of[a]] = last;
   pos_of[last] = pos_of[a];
   m.pop_back();
+  G.size[g] -= 1.0;
   grouped[a] = 0;
 }
 
-// Groups of the live samples; each group's reference velocity is its mean velocity.
+// Groups of the live samples.
 void BinnedCell::build() {
   G.count = 0;
   std::fill(G.slots.begin(), G.slots.end(), 0);
@@ -142,19 +160,30 @@ void BinnedCell::build() {
     local_of[idx[a]] = a;
     if (p.w[idx[a]] > 0.0) insert(a);
   }
-  for (std::size_t k = 0; k < G.count; ++k) {
-    BinnedGroup& g = groups[k];
-    g.version = ++G.clock;
-    double v[3] = {0.0, 0.0, 0.0};
-    for (const std::uint32_t a : g.members) {
-      v[0] += p.vx[idx[a]];
-      v[1] += p.vy[idx[a]];
-      v[2] += p.vz[idx[a]];
-    }
-    for (int c = 0; c < 3; ++c) g.cb.vref[c] = v[c] / static_cast<double>(g.members.size());
-    for (const std::uint32_t a : g.members) g.cb.include(p, idx[a], *ctx.gas);
-    K.prepare(g.cb);
+  for (std::size_t k = 0; k < G.count; ++k) set_bounds(k);
+}
+
+// The bounds of the kept groups from their present members only (those of former members are dropped).
+void BinnedCell::retighten() {
+  for (std::size_t k = 0; k < G.count; ++k) set_bounds(k);
+}
+
+// A group's bounds from its members, with their mean velocity as reference velocity; new version.
+void BinnedCell::set_bounds(std::size_t k) {
+  BinnedGroup& g = groups[k];
+  g.cb = CellBounds{};
+  g.cb.need_cbar = K.needs_thermal_speed();
+  G.version[k] = ++G.clock;
+  if (g.members.empty()) return;
+  double v[3] = {0.0, 0.0, 0.0};
+  for (const std::uint32_t a : g.members) {
+    v[0] += p.vx[idx[a]];
+    v[1] += p.vy[idx[a]];
+    v[2] += p.vz[idx[a]];
   }
+  for (int c = 0; c < 3; ++c) g.cb.vref[c] = v[c] / static_cast<double>(g.members.size());
+  for (const std::uint32_t a : g.members) g.cb.include(p, idx[a], *ctx.gas);
+  K.prepare(g.cb);
 }
 
 // Sample i changed (size, weight, velocity): regroup it and let its group's bounds take it in.
@@ -166,44 +195,49 @@ void BinnedCell::moved(std::size_t i) {
   }
   if (!(p.w[i] > 0.0)) return;
   insert(a);
-  changed_.push_back(group_of[a]);
-  CellBounds& cb = groups[group_of[a]].cb;
+  const std::uint32_t g = group_of[a];
+  changed_.push_back(g);
+  CellBounds& cb = groups[g].cb;
   const CellBounds before = cb;
   cb.include(p, i, *ctx.gas);
   K.prepare(cb);
-  if (!same_bounds(before, cb)) groups[group_of[a]].version = ++G.clock;
+  if (!same_bounds(before, cb)) G.version[g] = ++G.clock;
 }
 
-double BinnedCell::pair_count(std::uint32_t a, std::uint32_t b) const {
-  const double na = static_cast<double>(groups[a].members.size()), nb = static_cast<double>(groups[b].members.size());
-  return a == b ? 0.5 * na * (na - 1.0) : na * nb;
-}
-
-// Uniform member of group g other than local position `exclude`.
-std::uint32_t BinnedCell::pick(std::uint32_t g, std::uint32_t exclude) {
-  const auto& m = groups[g].members;
-  const bool skip = exclude != UINT32_MAX;
-  const std::size_t range = m.size() - (skip ? 1 : 0);
-  std::size_t k = std::min(range - 1, static_cast<std::size_t>(rng.uniform() * static_cast<double>(range)));
-  if (skip && k >= pos_of[exclude]) ++k;
-  return m[k];
+// Members la of group a and lb of group b (lb != la), both uniform, from one uniform number: the digits
+// left after choosing la choose lb (53 - log2(n_a) >= 21 bits for groups below 2^32 members).
+void BinnedCell::pick_pair(std::uint32_t a, std::uint32_t b, std::uint32_t& la, std::uint32_t& lb) {
+  const auto& ma = groups[a].members;
+  const auto& mb = groups[b].members;
+  const double x = rng.uniform() * static_cast<double>(ma.size());
+  const std::size_t ka = std::min(ma.size() - 1, static_cast<std::size_t>(x));
+  const double f = x - static_cast<double>(ka);
+  const std::size_t range = mb.size() - (a == b ? 1 : 0);
+  std::size_t kb = std::min(range - 1, static_cast<std::size_t>(f * static_cast<double>(range)));
+  if (a == b && kb >= ka) ++kb;
+  la = ma[ka];
+  lb = mb[kb];
 }
 
 // One candidate of groups (a, b): returns true if it collided (the groups changed).
-bool BinnedCell::candidate(std::uint32_t a, std::uint32_t b, const double* M) {
+bool BinnedCell::candidate(std::uint32_t a, std::uint32_t b) {
   ++st.trials;
-  double u = rng.uniform() * M[nm];
+  const std::size_t e = a * G.cache_cap + b;
+  const double* M = G.cache_m.data() + e * nm;
   std::size_t k = 0;
-  while (k + 1 < nm && u >= M[k]) u -= M[k++];
-  if (!(M[k] > 0.0)) return false;
-  const std::uint32_t la = pick(a, UINT32_MAX);
-  const std::uint32_t lb = pick(b, a == b ? la : UINT32_MAX);
+  if (nm > 1) {
+    double u = rng.uniform() * G.cache_sum[e];
+    while (k + 1 < nm && u >= M[k]) u -= M[k++];
+  }
+  const double Mk = M[k];
+  if (!(Mk > 0.0)) return false;
+  std::uint32_t la = 0, lb = 0;
+  pick_pair(a, b, la, lb);
   const std::size_t i = idx[la], j = idx[lb];
   if (excl && p.pop[i] == p.pop[j]) return false;
   ++st.kernel_evals;
   const double r = need_r ? pair_distance(p, i, j, ctx.domain) : 0.0;
-  const double q = K.mechanism_beta(k, p, i, j, r) * std::max(p.w[i], p.w[j]);
-  const double ratio = q / M[k];
+  const double ratio = K.mechanism_beta(k, p, i, j, r) * std::max(p.w[i], p.w[j]) / Mk;
   st.max_pn = std::max(st.max_pn, ratio);
   if (ratio > 1.0 + 1e-9) ++st.violations;
   if (!(rng.uniform() < ratio)) return false;
@@ -213,61 +247,71 @@ bool BinnedCell::candidate(std::uint32_t a, std::uint32_t b, const double* M) {
   return true;
 }
 
-// Majorants M_m(a, b), m < nm, then their sum at [nm] (cached while both groups are unchanged). The pointer
-// is valid until the next call.
-const double* BinnedCell::majorant_entry(std::uint32_t a, std::uint32_t b) {
-  if (G.cache_cap < G.count) {
-    G.cache_cap = std::bit_ceil(2 * G.count);
-    G.cache_m.assign(G.cache_cap * G.cache_cap * (nm + 1), 0.0);
-    G.cache_va.assign(G.cache_cap * G.cache_cap, 0);
-    G.cache_vb.assign(G.cache_cap * G.cache_cap, 0);
-  }
-  const std::size_t e = a * G.cache_cap + b;
-  double* m = G.cache_m.data() + e * (nm + 1);
-  if (G.cache_va[e] != groups[a].version || G.cache_vb[e] != groups[b].version) {
-    K.mechanism_bounds(groups[a].cb, groups[b].cb, m);
-    const double wmax = std::max(groups[a].cb.w_max, groups[b].cb.w_max);
-    m[nm] = 0.0;
-    for (std::size_t k = 0; k < nm; ++k) m[nm] += (m[k] *= wmax);
-    G.cache_va[e] = groups[a].version;
-    G.cache_vb[e] = groups[b].version;
-  }
-  return m;
+// The pair-majorant cache holds every pair of the groups in use (re-laid out, all entries stale, when the
+// number of groups outgrows it).
+void BinnedCell::ensure_cache() {
+  if (G.cache_cap >= G.count) return;
+  G.cache_cap = std::bit_ceil(2 * G.count);
+  const std::size_t pairs = G.cache_cap * G.cache_cap;
+  G.cache_sum.assign(pairs, 0.0);
+  G.cache_m.assign(pairs * nm, 0.0);
+  G.cache_va.assign(pairs, 0);
+  G.cache_vb.assign(pairs, 0);
 }
 
-// Candidate rate of the pair (a, b) over n_a (the row's common factor) [1/s].
+// Majorants M_m(a, b) of entry e = a * cache_cap + b from the groups' bounds, and their sum.
+void BinnedCell::refresh_majorant(std::uint32_t a, std::uint32_t b, std::size_t e) {
+  double* m = G.cache_m.data() + e * nm;
+  double M[kMaxMechanisms];
+  K.mechanism_bounds(groups[a].cb, groups[b].cb, M);
+  const double wmax = std::max(groups[a].cb.w_max, groups[b].cb.w_max);
+  double sum = 0.0;
+  for (std::size_t k = 0; k < nm; ++k) sum += (m[k] = M[k] * wmax);
+  G.cache_sum[e] = sum;
+  G.cache_va[e] = G.version[a];
+  G.cache_vb[e] = G.version[b];
+}
+
+// Candidate rate of the pair (a, b), a <= b, over n_a (the row's common factor) [1/s].
 double BinnedCell::row_entry(std::uint32_t a, std::uint32_t b) {
-  const double na = static_cast<double>(groups[a].members.size()), nb = static_cast<double>(groups[b].members.size());
-  const double n = a == b ? 0.5 * (na - 1.0) : nb;
-  return n > 0.0 && na > 0.0 ? n * majorant_entry(a, b)[nm] / Vc : 0.0;
+  const std::size_t e = a * G.cache_cap + b;
+  if (G.cache_va[e] != G.version[a] || G.cache_vb[e] != G.version[b]) refresh_majorant(a, b, e);
+  const double nb = a == b ? 0.5 * (G.size[a] - 1.0) : G.size[b];
+  return nb > 0.0 ? nb * G.cache_sum[e] * inv_vc : 0.0;
 }
 
-// Candidate rates of the pairs (a, b), b >= a, over n_a into row_ (all of them, or after a collision only
-// those of the groups it changed, unless group a's bounds changed); returns the row's total rate.
-double BinnedCell::row_rates(std::uint32_t a, bool all) {
-  if (all || groups[a].version != row_version_) {
-    row_.assign(G.count - a, 0.0);
-    for (std::uint32_t b = a; b < G.count; ++b) row_[b - a] = row_entry(a, b);
-    row_version_ = groups[a].version;
-    ++st.row_rate_updates;
-  } else {
-    row_.resize(G.count - a, 0.0);
-    for (const std::uint32_t g : changed_)
-      if (g >= a) row_[g - a] = row_entry(a, g);
+// All candidate rates of the pairs (a, b >= a) into row_; returns the row's total rate.
+double BinnedCell::full_row(std::uint32_t a) {
+  scratch_.resize(G.count - a);
+  for (std::uint32_t b = a; b < G.count; ++b) scratch_[b - a] = row_entry(a, b);
+  row_.assign(scratch_.data(), scratch_.size());
+  row_version_ = G.version[a];
+  row_count_ = G.count;
+  changed_.clear();
+  ++st.row_rate_updates;
+  return G.size[a] * row_.total();
+}
+
+// After a collision: the rates of the groups it changed (all of them if group a's bounds grew or a group
+// was opened); returns the row's total rate.
+double BinnedCell::update_row(std::uint32_t a) {
+  if (G.version[a] != row_version_ || G.count != row_count_) return full_row(a);
+  for (std::size_t c = 0; c < changed_.size(); ++c) {
+    const std::uint32_t g = changed_[c];
+    if (g < a || std::find(changed_.begin(), changed_.begin() + static_cast<std::ptrdiff_t>(c), g) !=
+                     changed_.begin() + static_cast<std::ptrdiff_t>(c))
+      continue;
+    row_.set(g - a, row_entry(a, g));
   }
   changed_.clear();
-  cum_.resize(row_.size());
-  double sum = 0.0;
-  for (std::size_t k = 0; k < row_.size(); ++k) cum_[k] = (sum += row_[k]);
-  return static_cast<double>(groups[a].members.size()) * sum;
+  return G.size[a] * row_.total();
 }
 
 // Poisson process of the candidates of all pairs (a, b >= a) together over an interval h (total rate the
 // sum of the pair rates, exponential gaps; b drawn with probability rate_ab / sum). The rates are
-// recomputed after every collision.
+// updated after every collision.
 void BinnedCell::process_row(std::uint32_t a, double h) {
-  changed_.clear();
-  double t = 0.0, R = row_rates(a, true);
+  double t = 0.0, R = full_row(a);
   for (;;) {
     if (!(R > 0.0)) return;
     // u > R (h - t) already implies a gap beyond the interval (1 - exp(-x) <= x): no logarithm needed.
@@ -275,33 +319,25 @@ void BinnedCell::process_row(std::uint32_t a, double h) {
     if (u > R * (h - t)) return;
     t -= std::log1p(-u) / R;
     if (t >= h) return;
-    const double x = rng.uniform() * R / static_cast<double>(groups[a].members.size());
-    auto k = static_cast<std::size_t>(std::upper_bound(cum_.begin(), cum_.end(), x) - cum_.begin());
-    k = std::min(k, row_.size() - 1);
-    while (k > 0 && !(row_[k] > 0.0)) --k;  // rounding at the end of the row
-    if (!(row_[k] > 0.0)) continue;
-    const auto b = static_cast<std::uint32_t>(a + k);
-    if (candidate(a, b, majorant_entry(a, b))) R = row_rates(a, false);
+    const std::size_t k = row_.find(rng.uniform() * row_.total());
+    if (k == RateTree::npos) return;
+    if (candidate(a, a + static_cast<std::uint32_t>(k))) R = update_row(a);
   }
 }
 
 // Expected candidates of the whole step (an upper bound of its collisions) when the cell has no history.
-double BinnedCell::first_step_candidates() const {
-  double M[kMaxMechanisms], c = 0.0;
+double BinnedCell::first_step_candidates() {
+  double c = 0.0;
   for (std::uint32_t a = 0; a < G.count; ++a)
-    for (std::uint32_t b = a; b < G.count; ++b) {
-      K.mechanism_bounds(groups[a].cb, groups[b].cb, M);
-      double m = 0.0;
-      for (std::size_t k = 0; k < nm; ++k) m += M[k];
-      c += pair_count(a, b) * m * std::max(groups[a].cb.w_max, groups[b].cb.w_max) * ctx.dt / Vc;
-    }
+    for (std::uint32_t b = a; b < G.count; ++b) c += G.size[a] * row_entry(a, b) * ctx.dt;
   return c;
 }
 
 // Sub-steps: as many as keep the collisions of the cell's previous step below kMaxCollisionFraction of its
 // live samples per sub-step (the group pairs are processed one after the other in each sub-step).
-void BinnedCell::run(bool reuse) {
-  if (!reuse) build();
+void BinnedCell::run(GroupReuse mode) {
+  if (mode == GroupReuse::rebuild) build();
+  if (mode == GroupReuse::retighten) retighten();
   std::uint64_t live = 0;
   for (std::size_t g = 0; g < G.count; ++g) live += groups[g].members.size();
   st.particle_steps += live;
@@ -325,8 +361,9 @@ void BinnedCell::run(bool reuse) {
 
 void binned_collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell,
                          std::uint64_t step, const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of,
-                         BinnedGroups& groups, bool reuse) {
-  reuse = reuse && groups.group_of.size() == n;
+                         BinnedGroups& groups, GroupReuse mode) {
+  if (groups.group_of.size() != n) mode = GroupReuse::rebuild;
+  const bool reuse = mode != GroupReuse::rebuild;
   std::size_t live = 0;
   if (reuse)
     for (std::size_t g = 0; g < groups.count; ++g) live += groups.groups[g].members.size();
@@ -336,7 +373,7 @@ void binned_collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, 
     groups.group_of.clear();  // not reusable
     return;
   }
-  BinnedCell(p, idx, n, cell, step, ctx, st, local_of, groups).run(reuse);
+  BinnedCell(p, idx, n, cell, step, ctx, st, local_of, groups).run(mode);
 }
 
 }  // namespace agglo::acoustics

@@ -5,14 +5,16 @@
 
 namespace agglo::acoustics {
 
+// Dead samples (w = 0) add exact zeros, so the sums need no branch.
 Counts count(const SampleSet& p, double V) {
   Counts c;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const double w = p.w[i];
-    if (w <= 0.0) continue;
-    ++c.live_samples;
+    const double w = p.w[i], ph = p.phase_code[i];
+    c.live_samples += w > 0.0 ? 1 : 0;
     c.n_total += w;
-    c.n_phase[static_cast<int>(p.phase(i))] += w;
+    c.n_phase[0] += ph == 0.0 ? w : 0.0;
+    c.n_phase[1] += ph == 1.0 ? w : 0.0;
+    c.n_phase[2] += ph == 2.0 ? w : 0.0;
     c.solid_volume += w * p.vol_s[i];
     c.liquid_volume += w * p.vol_l[i];
     c.mass += w * p.mass[i];

@@ -206,7 +206,9 @@ void Engine::collide_cells() {
   const std::uint64_t st = step_;
   const bool binned = s_.selection == Selection::binned;
   // Binned groups are kept while only collisions change the samples: no motion, same order (binned.hpp).
-  const bool reuse = binned && !moving && !regroup_ && st % kRegroupEvery != 0;
+  const GroupReuse reuse = !binned || moving || regroup_ ? GroupReuse::rebuild
+                           : st % kRegroupEvery == 0   ? GroupReuse::retighten
+                                                       : GroupReuse::keep;
   regroup_ = false;
   if (binned) {
     local_of_.resize(n);

@@ -49,7 +49,7 @@ void coalesce_weighted(SampleSet& p, std::size_t i, std::size_t j, const Gas& ga
     p.debt[i] += p.debt[j];
     p.debt[j] = 0.0;
     p.refresh(i, gas, sound);
-    p.refresh(j, gas, sound);
+    p.copy_derived(i, j);
   } else if (wi > wj) {  // eq. 20
     p.w[i] = wi - wj;
     assign(p, j, m);

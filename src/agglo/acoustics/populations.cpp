@@ -93,6 +93,7 @@ SampledPopulation sample_population(const PopulationSpec& s, int index, const Do
   const double Ntot = s.number_concentration * dom.volume();
   std::vector<double> diam, num;  // diameter and real number per sample
   draft(s, Ntot, diam, num);
+  p.reserve(p.size() + diam.size());
   SampledPopulation out;
   out.first = p.size();
   out.real_number = Ntot;

@@ -129,9 +129,9 @@ std::string startup_log(const AcousticCase& c, const Engine& eng, const RunHooks
   }
   log += sampling_log(eng, hooks);
   if (eng.settings().selection == Selection::binned)
-    log += fmt::format("selection: binned ({:g} size classes per decade, weight classes by powers of 4, one majorant "
-                       "per group pair and kernel mechanism)\n",
-                       kSizeClassesPerDecade);
+    log += fmt::format("selection: binned ({} size classes per octave of diameter, weight classes by powers of {}, "
+                       "one majorant per group pair and kernel mechanism)\n",
+                       kSizeClassesPerOctave, 1 << kWeightOctavesPerClass);
   else
     log += fmt::format("nanbu guard at start: max N*P_bound(dt_c) = {:.4g} ({})\n", eng.max_guard_pn(),
                        eng.max_guard_pn() > 1.0 ? "sub-cycling needed" : "bound met without sub-cycling");

@@ -27,19 +27,31 @@ void SampleSet::resize(std::size_t n) {
   id.resize(n, 0);
 }
 
+void SampleSet::reserve(std::size_t n) {
+  for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &vol_s, &vol_l, &mass, &w, &debt, &debt_ref, &d, &rho, &cc, &tau,
+                  &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd, &acc_z, &x_ref, &skx, &ckx})
+    v->reserve(n);
+  pop.reserve(n);
+  id.reserve(n);
+}
+
 std::size_t SampleSet::add(double x_, double y_, double z_, double vs, double vl, double m, double w_, int p,
                              const Gas& gas, const Sound& sound) {
   const std::size_t i = size();
-  resize(i + 1);
-  x[i] = x_;
-  y[i] = y_;
-  z[i] = z_;
-  vol_s[i] = vs;
-  vol_l[i] = vl;
-  mass[i] = m;
-  w[i] = w_;
-  pop[i] = p;
-  id[i] = i;
+  for (auto* v : {&vx, &vy, &vz, &debt, &debt_ref, &d, &rho, &cc, &tau, &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd,
+                  &acc_z, &skx})
+    v->push_back(0.0);
+  ckx.push_back(1.0);
+  x_ref.push_back(std::numeric_limits<double>::quiet_NaN());
+  x.push_back(x_);
+  y.push_back(y_);
+  z.push_back(z_);
+  vol_s.push_back(vs);
+  vol_l.push_back(vl);
+  mass.push_back(m);
+  w.push_back(w_);
+  pop.push_back(p);
+  id.push_back(i);
   refresh(i, gas, sound);
   return i;
 }
@@ -59,6 +71,10 @@ void SampleSet::refresh(std::size_t i, const Gas& gas, const Sound& sound) {
   dl[i] = d[i] * slip_l[i];
   ccd[i] = cc[i] / d[i];
   acc_z[i] = -gas.gravity * (rho[i] - gas.density) / rho[i];
+}
+
+void SampleSet::copy_derived(std::size_t from, std::size_t to) {
+  for (auto* v : {&d, &rho, &cc, &tau, &slip_l, &cphi, &sphi, &phase_code, &dl, &ccd, &acc_z}) (*v)[to] = (*v)[from];
 }
 
 void SampleSet::copy_sample(std::size_t from, std::size_t to) {

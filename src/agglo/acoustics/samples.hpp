@@ -44,11 +44,14 @@ struct SampleSet {
 
   std::size_t size() const { return x.size(); }
   void resize(std::size_t n);
+  void reserve(std::size_t n);
   // Append one sample; returns its index (caches refreshed).
   std::size_t add(double x, double y, double z, double vol_s, double vol_l, double mass, double w, int pop,
                   const Gas& gas, const Sound& sound);
   Phase phase(std::size_t i) const { return static_cast<Phase>(static_cast<int>(phase_code[i])); }
   void refresh(std::size_t i, const Gas& gas, const Sound& sound);
+  // The derived caches of `to` from those of `from` (both with the same volumes and mass).
+  void copy_derived(std::size_t from, std::size_t to);
   void copy_sample(std::size_t from, std::size_t to);
   // Reorders the samples: new sample k = old sample order[k] (memory locality of cells).
   void permute(const std::vector<std::uint32_t>& order);
