@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "agglo/core/settings_acoustic.hpp"
+#include "agglo/core/settings_calibrate.hpp"
 #include "agglo/core/settings_electrostatics.hpp"
 #include "agglo/core/settings_impact.hpp"
 
@@ -19,6 +20,11 @@ const ImpactSettings& impact_settings() {
 
 const ElectrostaticsSettings& electrostatics_settings() {
   static const ElectrostaticsSettings s;
+  return s;
+}
+
+const CalibrateSettings& calibrate_settings() {
+  static const CalibrateSettings s;
   return s;
 }
 
@@ -38,7 +44,8 @@ std::vector<const Table*> AcousticSettings::tables() const {
 
 std::vector<const Table*> all_tables() {
   std::vector<const Table*> out;
-  for (const auto& part : {impact_settings().tables(), electrostatics_settings().tables(), acoustic_settings().tables()})
+  for (const auto& part : {impact_settings().tables(), electrostatics_settings().tables(), acoustic_settings().tables(),
+                           calibrate_settings().tables()})
     out.insert(out.end(), part.begin(), part.end());
   return out;
 }

@@ -9,7 +9,7 @@
 
 namespace agglo::settings {
 
-// Every table, in documentation order (impact, electrostatics, acoustic).
+// Every table, in documentation order (impact, electrostatics, acoustic, calibrate).
 std::vector<const Table*> all_tables();
 
 // One line per key: key, type, unit, default, range, meaning (tab-separated), under a header line

@@ -1,0 +1,102 @@
+#include "agglo/run/calibrate_case.hpp"
+
+#include <fmt/format.h>
+
+#include "agglo/core/error.hpp"
+#include "agglo/core/settings_calibrate.hpp"
+#include "agglo/impact/impact_case.hpp"
+
+namespace agglo::run {
+
+namespace {
+
+void parse_fit(const ConfigSection& root, calibrate::Spec& spec) {
+  const auto& f = settings::calibrate_settings().fit;
+  const auto s = f.t.open(root);
+  spec.grid_points = static_cast<int>(f.grid_points.read(s));
+  spec.refine_rounds = static_cast<int>(f.refine_rounds.read(s));
+  spec.refine_points = static_cast<int>(f.refine_points.read(s));
+  spec.fine_points = static_cast<int>(f.fine_points.read(s));
+  spec.span = f.span.read(s);
+  spec.smoothing = f.smoothing.read(s);
+  spec.robustness_iterations = static_cast<int>(f.robustness_iterations.read(s));
+  spec.check = f.check.read(s);
+  spec.widths = f.widths.read(s);
+}
+
+void parse_parameters(const ConfigSection& root, calibrate::Spec& spec) {
+  const auto& p = settings::calibrate_settings().parameter;
+  const auto elems = p.t.elements(root);
+  if (elems.empty() || elems.size() > 2) p.t.fail(root, fmt::format("1 or 2 [[parameter]] tables required, {} given", elems.size()));
+  for (const auto& s : elems) {
+    calibrate::Parameter q;
+    q.key = p.key.read(s);
+    q.lower = p.lower.read(s);
+    q.upper = p.upper.read(s);
+    q.log_scale = p.scale.read(s) == "log";
+    if (!(q.upper > q.lower))
+      p.upper.reject(s, fmt::format("empty range: must exceed {} = {:g}", p.lower.dotted(), q.lower));
+    if (q.log_scale && !(q.lower > 0.0)) p.lower.reject(s, "a log-scale range must start above 0");
+    spec.parameters.push_back(q);
+  }
+}
+
+void parse_targets(const ConfigSection& root, const std::filesystem::path& dir, CalibrateCase& c) {
+  const auto& t = settings::calibrate_settings().target;
+  const auto elems = t.t.elements(root);
+  if (elems.empty()) t.t.fail(root, "at least one [[target]] table is required");
+  for (const auto& s : elems) {
+    CalibrationTarget ct;
+    ct.file = dir / t.case_file.read(s);
+    ct.observable = t.observable.read(s);
+    calibrate::Target target;
+    target.value = t.value.read(s);
+    target.tolerance = t.tolerance.read(s);
+    if (!std::filesystem::is_regular_file(ct.file)) t.case_file.reject(s, fmt::format("no such file {}", ct.file.string()));
+    ct.base = Config::load(ct.file);
+    target.name = fmt::format("{} {}", ct.file.stem().string(), ct.observable);
+    c.spec.targets.push_back(target);
+    c.targets.push_back(std::move(ct));
+  }
+}
+
+}  // namespace
+
+Config target_config(const CalibrateCase& c, std::size_t target, const std::vector<double>& x) {
+  Config cfg = c.targets[target].base.clone();
+  for (std::size_t j = 0; j < x.size(); ++j) cfg.apply_override(fmt::format("{}={:.17g}", c.spec.parameters[j].key, x[j]));
+  (void)impact::parse_impact_case(cfg);
+  cfg.check_unknown_keys();
+  return cfg;
+}
+
+CalibrateCase parse_calibrate_case(Config& cfg) {
+  CalibrateCase c;
+  auto root = cfg.root();
+  parse_fit(root, c.spec);
+  parse_parameters(root, c.spec);
+  parse_targets(root, std::filesystem::path(cfg.file()).parent_path(), c);
+  cfg.check_unknown_keys();
+  // Every parameter key must be accepted by every target case at both ends of its range.
+  const auto& p = settings::calibrate_settings().parameter;
+  const auto elems = p.t.elements(root);
+  for (std::size_t k = 0; k < c.targets.size(); ++k) {
+    Config probe = c.targets[k].base.clone();
+    (void)impact::parse_impact_case(probe);
+    c.targets[k].resolved = probe.resolved_toml();
+    for (std::size_t j = 0; j < c.spec.parameters.size(); ++j)
+      for (double v : {c.spec.parameters[j].lower, c.spec.parameters[j].upper}) {
+        std::vector<double> x;
+        for (const auto& q : c.spec.parameters) x.push_back(q.lower);
+        x[j] = v;
+        try {
+          (void)target_config(c, k, x);
+        } catch (const ConfigError& e) {
+          p.key.reject(elems[j], fmt::format("not accepted by target case {} at {:g}: {}", c.targets[k].file.filename().string(), v, e.what()));
+        }
+      }
+  }
+  return c;
+}
+
+}  // namespace agglo::run

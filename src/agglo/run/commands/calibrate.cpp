@@ -1,0 +1,128 @@
+// agglo calibrate: fit one or two keys of impact cases so that their v_crit / v50 hit target values
+// (calibrate/calibration.hpp for the method, docs/calibrate.md). Every run of a map is a job of the
+// ensemble runner (all cores, journaled: --resume repeats only the missing runs); inside a job the
+// vcrit bisection or the break-up curve runs on one thread.
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "agglo/core/error.hpp"
+#include "agglo/core/settings_calibrate.hpp"
+#include "agglo/impact/breakup.hpp"
+#include "agglo/impact/experiment.hpp"
+#include "agglo/impact/vcrit.hpp"
+#include "agglo/io/calibration_writers.hpp"
+#include "agglo/run/calibrate_case.hpp"
+#include "agglo/run/commands.hpp"
+#include "agglo/run/ensemble.hpp"
+#include "agglo/run/impact_ensemble.hpp"
+#include "agglo/run/journal.hpp"
+
+namespace agglo::run {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// One observable at one parameter point: {"value": v, "width": w} (value null when undefined).
+nlohmann::json observe(const CalibrateCase& c, std::size_t k, const std::vector<double>& x, bool widths,
+                       const JobContext& job) {
+  Config cfg = target_config(c, k, x);
+  const auto ic = impact::parse_impact_case(cfg);
+  const auto relaxed = impact::relaxed_agglomerate(ic);
+  const EnsembleOptions inner{1, nullptr, job.cancel, nullptr, "calibrate"};
+  nlohmann::json r{{"value", nullptr}, {"width", 0.0}};
+  if (c.targets[k].observable == "v_crit") {
+    const auto v = impact::find_vcrit(ic.vcrit, speed_batch(ic, relaxed, inner));
+    r["value"] = v.v_crit;
+    r["runs"] = v.runs.size();
+  }
+  if (c.targets[k].observable == "v50" || widths) {
+    const auto b = impact::breakup_probability(ic.breakup, ic.projectile.offset_radii, impact_batch(ic, relaxed, inner));
+    if (c.targets[k].observable == "v50" && b.v50 > 0.0) r["value"] = b.v50;
+    if (b.v10 > 0.0 && b.v90 > 0.0) r["width"] = (b.v90 - b.v10) / 2.563;  // normal p(v): v90 - v10 = 2.563 sigma
+  }
+  return r;
+}
+
+// A run the model cannot complete (e.g. no break-up up to the scan's highest speed) is a point without a
+// value: the surrogate skips it and calibration.json counts it; interruptions and bad input still stop the fit.
+nlohmann::json observe_or_note(const CalibrateCase& c, std::size_t k, const std::vector<double>& x, bool widths,
+                               const JobContext& job) {
+  try {
+    return observe(c, k, x, widths, job);
+  } catch (const NumericalError& e) {
+    return {{"value", nullptr}, {"width", 0.0}, {"failed", e.what()}};
+  }
+}
+
+calibrate::Evaluator evaluator(const CalibrateCase& c, Journal& journal, const RunContext& ctx) {
+  return [&c, &journal, &ctx](const std::vector<std::vector<double>>& points, bool widths) {
+    std::vector<Job> jobs;
+    for (const auto& x : points)
+      for (std::size_t k = 0; k < c.targets.size(); ++k) {
+        std::string key = fmt::format("target={} x=", k);
+        for (double v : x) key += fmt::format("{:.17g};", v);
+        if (widths) key += " widths";
+        jobs.push_back({key, [&c, k, x, widths](const JobContext& j) { return observe_or_note(c, k, x, widths, j); }});
+      }
+    const EnsembleOptions opt{ctx.threads, &journal, ctx.cancel, &ctx.report(), "calibrate"};
+    const auto outcomes = run_jobs(jobs, opt);
+    rethrow_first_error(outcomes, &jobs);
+    std::vector<std::vector<calibrate::Observation>> obs(points.size());
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+      const auto& r = outcomes[i].result;
+      obs[i / c.targets.size()].push_back({r["value"].is_null() ? kNaN : r["value"].get<double>(), r["width"].get<double>()});
+    }
+    return obs;
+  };
+}
+
+class Calibrate final : public Command {
+ public:
+  std::string_view name() const override { return "calibrate"; }
+  std::string_view help() const override {
+    return "Fit one or two keys of impact cases so that their v_crit / v50 hit target values";
+  }
+  bool resumable() const override { return true; }
+  void parse(Config& cfg) const override { (void)parse_calibrate_case(cfg); }
+
+  CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
+    const CalibrateCase c = parse_calibrate_case(cfg);
+    std::string context = "calibrate\n";
+    for (const auto& t : c.targets) context += t.observable + "\n" + t.resolved + "\n";
+    Journal journal(out.file("journal.jsonl"), hash_hex(context), ctx.resume);
+    calibrate::Result res;
+    try {
+      res = calibrate::calibrate(c.spec, evaluator(c, journal, ctx));
+    } catch (const calibrate::UnreachableTarget& e) {
+      const auto& t = settings::calibrate_settings().target;
+      t.value.reject(t.t.elements(cfg.root())[e.target], e.what());
+    }
+    std::vector<std::string> files, observables;
+    for (const auto& t : c.targets) {
+      files.push_back(t.file.filename().string());
+      observables.push_back(t.observable);
+    }
+    io::write_calibration(out, c.spec, res, files, observables);
+    CommandResult r;
+    r.summary = {{"chi2", res.chi2}, {"feasible", res.feasible}, {"mapped_points", res.points.size()}};
+    for (std::size_t j = 0; j < res.best.size(); ++j) r.summary[c.spec.parameters[j].key] = res.best[j];
+    r.plot_script = "plot_calibration.py";
+    std::string line = "calibrate: best";
+    for (std::size_t j = 0; j < res.best.size(); ++j) line += fmt::format(" {} = {:.5g}", c.spec.parameters[j].key, res.best[j]);
+    ctx.report().info(line + fmt::format(" (chi2 {:.3g}, {} runs, {})", res.chi2, res.points.size(),
+                                         res.feasible ? "every target met" : "no point meets every target"));
+    return r;
+  }
+};
+
+}  // namespace
+
+const Command& calibrate_command() {
+  static const Calibrate c;
+  return c;
+}
+
+}  // namespace agglo::run
