@@ -64,8 +64,8 @@ std::vector<Rotation> rotations(int m) {
   return rs;
 }
 
-// Bounds for M = 32 rotations; M random rotations miss them by far (typical deviations about 0.14,
-// 0.08, 0.19 and 0.14, docs/dem.md).
+// Bounds for M = 32 rotations (the set reaches about 0.003, 0.004, 0.045 and 0.063); 32 uniform
+// random rotations miss them by far (typical largest deviations about 0.14, 0.08, 0.19 and 0.14).
 void expect_even(const Moments& mo, int m) {
   EXPECT_LT(mo.direction_mean, 0.01) << "M = " << m;
   EXPECT_LT(mo.direction_second, 0.01) << "M = " << m;
