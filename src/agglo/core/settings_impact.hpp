@@ -78,6 +78,14 @@ struct ImpactSettings {
                         Range::closed(0.0, 1e-2)};
     Real permittivity{t, {"agglomerate.permittivity", "", "relative permittivity kappa_p of the built-in shapes"},
                       1.0, Range::open_closed(0.0, 1e6)};
+    // Read only when set: absent, the resolved config stays as it was before the key existed.
+    Choice orientation{t,
+                       {"agglomerate.orientation", "",
+                        "how the built-in shape faces the projectile (moving along +x, offset along y): "
+                        "edge_across / edge_along = an edge (square: a side) faces it, normal to / along y; "
+                        "face = a face (square: its plane) normal to x; vertex = a vertex (corner) points at it",
+                        "the shape's original geometry: edge_across (tetrahedron), edge_along (square)"},
+                       std::nullopt, {"edge_across", "edge_along", "face", "vertex"}};
   } agglomerate;
 
   struct Projectile {
@@ -119,6 +127,13 @@ struct ImpactSettings {
     Integer samples{t, {"breakup.samples", "", "runs per speed (offsets spread evenly)"}, 16, 1, 100000};
     Real offset_spread{t, {"breakup.offset_spread", "r_p", "half-width of the offset range"}, 0.05,
                        Range::closed(0.0, 10.0)};
+    // Read only when set (as the orientation of the agglomerate).
+    Integer orientations{t,
+                         {"breakup.orientations", "",
+                          "rigid rotations of the agglomerate, each run with every offset: a stratified covering of "
+                          "all orientations (runs per speed = samples x orientations)",
+                          "1 = only the configured orientation"},
+                         std::nullopt, 1, 10000};
   } breakup;
 
   std::vector<const Table*> tables() const;

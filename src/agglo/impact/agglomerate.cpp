@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "agglo/dem/jkr.hpp"
+#include "agglo/impact/orientation.hpp"
 
 namespace agglo::impact {
 
@@ -25,6 +26,8 @@ dem::Particles build_agglomerate(const ImpactCase& c) {
   } else {  // square, ring order 0 -> 1 -> 2 -> 3
     pos = {{-L / 2, -L / 2, 0.0}, {L / 2, -L / 2, 0.0}, {L / 2, L / 2, 0.0}, {-L / 2, L / 2, 0.0}};
   }
+  if (const auto rot = named_orientation(a.shape, a.orientation))
+    for (auto& x : pos) x = rot->apply(x);  // about the centroid, the origin
   const double sign[4] = {1.0, -1.0, 1.0, -1.0};
   for (int k = 0; k < 4; ++k) p.add(pos[k], r, a.density, {}, sign[k] * q, a.permittivity);
   return p;

@@ -4,6 +4,8 @@
 // of gap_radii * r_p before the agglomerate and moves along +x towards its centroid, offset along y.
 //   tetrahedron: regular, edge (0,1) along z facing the projectile; charges +,-,+,-.
 //   square:      2x2 in the x-y plane, side (0,3) facing the projectile; charges +,-,+,- round the ring.
+// agglomerate.orientation then rotates the shape rigidly about its centroid (orientation.hpp lists
+// the geometry of each orientation); particles keep their indices and charges.
 #include "agglo/impact/impact_case.hpp"
 #include "agglo/dem/particles.hpp"
 

@@ -32,19 +32,22 @@ double first_crossing(const std::vector<BreakupPoint>& pts, double level) {
 std::vector<ImpactJob> breakup_jobs(const BreakupSpec& spec, double offset_radii) {
   std::vector<double> speeds = spec.speeds;
   std::sort(speeds.begin(), speeds.end());
-  const int m = spec.samples;
+  const int m = spec.samples, n = spec.orientations;
   std::vector<ImpactJob> jobs;
   for (double v : speeds)
-    for (int k = 0; k < m; ++k)
-      jobs.push_back({v, m == 1 ? offset_radii : offset_radii + spec.offset_spread * (2.0 * (k + 0.5) / m - 1.0)});
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < m; ++k)
+        jobs.push_back(
+            {v, m == 1 ? offset_radii : offset_radii + spec.offset_spread * (2.0 * (k + 0.5) / m - 1.0), j, n});
   return jobs;
 }
 
 BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, const ImpactBatch& run_batch) {
   BreakupResult res;
   const std::vector<ImpactJob> jobs = breakup_jobs(spec, offset_radii);
-  const std::size_t m = static_cast<std::size_t>(spec.samples);
-  for (std::size_t k = 0; k < m; ++k) res.offsets.push_back(jobs[k].offset_radii);
+  for (std::size_t k = 0; k < static_cast<std::size_t>(spec.samples); ++k) res.offsets.push_back(jobs[k].offset_radii);
+  res.orientations = spec.orientations;
+  const std::size_t m = static_cast<std::size_t>(spec.samples) * static_cast<std::size_t>(spec.orientations);
   std::vector<double> speeds;
   for (std::size_t j = 0; j < jobs.size(); j += m) speeds.push_back(jobs[j].speed);
   res.outcomes = run_batch(jobs);

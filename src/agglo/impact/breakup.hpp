@@ -4,7 +4,9 @@
 // single-trajectory v_crit of vcrit.hpp depends on which speeds a scan happens to test. This
 // observable runs, at each speed, M collisions whose lateral impact offset is spread evenly over
 // offset_radii +- offset_spread (stratified: offset_k = offset + spread (2(k + 1/2)/M - 1), no random
-// numbers), and reports the fraction that breaks with its Wilson 95 % interval, and the speeds at which
+// numbers), for each of breakup.orientations rigid rotations of the agglomerate (orientation_set.hpp:
+// a stratified covering of all orientations, so p(v) is orientation-averaged; 1 = the agglomerate as
+// oriented), and reports the fraction that breaks with its Wilson 95 % interval, and the speeds at which
 // the fraction first reaches 0.1, 0.5 and 0.9 (linear interpolation between tested speeds).
 #include <functional>
 #include <vector>
@@ -22,20 +24,25 @@ struct BreakupPoint {
 
 struct BreakupResult {
   std::vector<BreakupPoint> points;        // sorted by speed
-  std::vector<double> offsets;             // offsets used at every speed [r_p]
+  std::vector<double> offsets;             // offsets used at every speed and orientation [r_p]
+  int orientations = 1;                    // rotations of the agglomerate (orientation_set.hpp)
   double v10 = -1.0, v50 = -1.0, v90 = -1.0;  // first speed where p reaches 0.1 / 0.5 / 0.9; -1 if never
-  std::vector<ImpactOutcome> outcomes;  // every run, speed-major, offset-minor
+  std::vector<ImpactOutcome> outcomes;  // every run, speed-major, then orientation, offset-minor
 };
 
-// One impact of the ensemble: projectile speed [m/s] and lateral offset [r_p].
+// One impact of the ensemble: projectile speed [m/s], lateral offset [r_p], and rotation
+// `orientation` of the stratified set of `orientations` (stratified_orientation(orientation,
+// orientations)) applied rigidly to the agglomerate; orientations = 1: the agglomerate as oriented.
 struct ImpactJob {
   double speed = 0.0, offset_radii = 0.0;
+  int orientation = 0, orientations = 1;
 };
 // Runs independent impacts and returns their outcomes in the same order (e.g. run::ensemble_impacts:
 // in parallel, journaled; results do not depend on the thread count).
 using ImpactBatch = std::function<std::vector<ImpactOutcome>(const std::vector<ImpactJob>& jobs)>;
 
-// The jobs of a break-up curve: speeds sorted ascending (speed-major), offsets stratified (minor).
+// The jobs of a break-up curve: speeds sorted ascending (speed-major), then the orientations, offsets
+// stratified (minor).
 std::vector<ImpactJob> breakup_jobs(const BreakupSpec& spec, double offset_radii);
 BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, const ImpactBatch& run_batch);
 

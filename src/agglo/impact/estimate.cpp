@@ -178,9 +178,10 @@ Estimate breakup_estimate(const ImpactCase& c, int threads) {
   const auto& k = impact_keys().breakup;
   std::vector<double> speeds = c.breakup.speeds;
   std::sort(speeds.begin(), speeds.end());
-  const double runs = static_cast<double>(speeds.size()) * c.breakup.samples;
+  const double runs = static_cast<double>(speeds.size()) * c.breakup.samples * c.breakup.orientations;
   return ensemble_estimate(c, speeds, runs, threads, std::string(k.speeds.dotted()),
-                           {std::string(k.speeds.dotted()), std::string(k.samples.dotted())});
+                           {std::string(k.speeds.dotted()), std::string(k.samples.dotted()),
+                            std::string(k.orientations.dotted())});
 }
 
 }  // namespace agglo::impact

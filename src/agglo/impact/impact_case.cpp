@@ -6,6 +6,7 @@
 
 #include "agglo/core/error.hpp"
 #include "agglo/impact/agglomerate.hpp"
+#include "agglo/impact/orientation.hpp"
 
 namespace agglo::impact {
 
@@ -87,6 +88,14 @@ void parse_bodies(const ConfigSection& root, ImpactCase& c) {
   a.charged = ka.charged.read(ag);
   a.charge_density = ka.charge_density.read(ag);
   a.permittivity = ka.permittivity.read(ag);
+  a.orientation = original_orientation(a.shape);
+  if (ka.orientation.present(ag)) {  // read only when set, so the resolved config stays unchanged
+    a.orientation = ka.orientation.read(ag);
+    if (a.shape == "list")
+      ka.orientation.reject(ag, fmt::format("applies to the built-in shapes only; {} = \"list\" places the [[{}]] "
+                                            "entries as given",
+                                            ka.shape.dotted(), particles.name()));
+  }
   auto plist = particles.elements(root);
   if (a.shape == "list") {
     if (plist.size() < 2)
@@ -139,6 +148,7 @@ void parse_searches(const ConfigSection& root, ImpactCase& c) {
   if (c.breakup.speeds.empty()) kb.speeds.reject(bu, "needs at least one speed");
   c.breakup.samples = static_cast<int>(kb.samples.read(bu));
   c.breakup.offset_spread = kb.offset_spread.read(bu);
+  if (kb.orientations.present(bu)) c.breakup.orientations = static_cast<int>(kb.orientations.read(bu));
 }
 
 void parse_coupling(const ConfigSection& root, double real_modulus, ImpactCase& c) {
@@ -159,6 +169,17 @@ void parse_coupling(const ConfigSection& root, double real_modulus, ImpactCase& 
   }
   c.medium_permittivity = c.coupling.es.medium_permittivity;
   c.electrostatics = c.electrostatics || norm(c.coupling.es.external_field) > 0.0;
+}
+
+// Several orientations rotate one relaxed agglomerate rigidly (breakup.hpp), which is exact only when
+// no external field acts on its relaxation.
+void check_orientations(const ConfigSection& root, const ImpactCase& c) {
+  if (c.breakup.orientations <= 1 || norm(c.coupling.es.external_field) == 0.0) return;
+  const auto& kb = impact_keys().breakup;
+  kb.orientations.reject(kb.t.open(root), fmt::format("more than one orientation needs {} = 0 (the relaxed "
+                                                      "agglomerate is rotated rigidly, which an external field "
+                                                      "would not leave in equilibrium)",
+                                                      es::es_keys().external_field.dotted()));
 }
 
 // A time step set above dem::kMaxDtOverPeriod T0 (T0 of the launch configuration, agglomerate and
@@ -188,6 +209,7 @@ ImpactCase parse_impact_case(Config& cfg) {
   parse_bodies(root, c);
   parse_searches(root, c);
   parse_coupling(root, real_modulus, c);
+  check_orientations(root, c);
   check_list_overlaps(root, c);
   check_time_step(root, c);
   return c;

@@ -28,6 +28,8 @@ struct AgglomerateSpec {
   bool charged = impact_keys().agglomerate.charged.def();                 // alternate +/- sigma_f (built-in shapes)
   double charge_density = impact_keys().agglomerate.charge_density.def(); // |sigma_f| [C/m^2]
   double permittivity = impact_keys().agglomerate.permittivity.def();     // kappa_p (built-in shapes)
+  // edge_across | edge_along | face | vertex (orientation.hpp); empty = the shape's original geometry
+  std::string orientation;
   std::vector<ListParticle> particles;                                    // shape = list
 };
 
@@ -66,11 +68,13 @@ struct VcritSpec {
 };
 
 // Break-up probability (agglo breakup): at each speed, `samples` runs whose projectile offset is
-// spread evenly over offset_radii +- offset_spread (stratified, no random numbers).
+// spread evenly over offset_radii +- offset_spread (stratified, no random numbers), for each of
+// `orientations` rigid rotations of the agglomerate (orientation_set.hpp; 1 = as oriented).
 struct BreakupSpec {
   std::vector<double> speeds;  // [m/s]; default: the vcrit scan grid (v_min .. v_max, scan_points)
   int samples = static_cast<int>(impact_keys().breakup.samples.def());  // runs per speed
   double offset_spread = impact_keys().breakup.offset_spread.def();     // half-width of the offset range [r_p]
+  int orientations = 1;  // rotations of the stratified orientation set; 1 = the agglomerate as oriented
 };
 
 struct ImpactCase {

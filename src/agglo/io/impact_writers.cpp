@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "agglo/impact/orientation_set.hpp"
+
 namespace agglo::io {
 
 void write_timeseries(const OutputDir& out, const Recorder& rec) {
@@ -85,6 +87,19 @@ nlohmann::json vcrit_json(const VcritResult& r) {
           {"warnings", r.warnings}};
 }
 
+namespace {
+
+// The stratified rotations of an orientation-averaged break-up curve: impact direction in the
+// agglomerate's frame and roll about the impact axis.
+nlohmann::json orientations_json(int n) {
+  nlohmann::json set = nlohmann::json::array();
+  for (const auto& o : impact::stratified_orientations(n))
+    set.push_back({{"direction", {o.direction.x, o.direction.y, o.direction.z}}, {"roll_rad", o.roll}});
+  return set;
+}
+
+}  // namespace
+
 void write_breakup(const OutputDir& out, const BreakupResult& r) {
   out.write("breakup.csv", [&](std::ostream& os) {
     os << "speed_m_s,runs,broken,undecided,p_break,ci95_lo,ci95_hi\n";
@@ -97,14 +112,17 @@ void write_breakup(const OutputDir& out, const BreakupResult& r) {
   for (const auto& p : r.points)
     pts.push_back({{"speed", p.speed}, {"runs", p.runs}, {"broken", p.broken}, {"undecided", p.undecided},
                    {"p_break", p.p}, {"ci95", {p.ci_lo, p.ci_hi}}});
-  const std::size_t m = r.offsets.size();
+  const std::size_t m = r.offsets.size(), n = static_cast<std::size_t>(r.orientations);
   for (std::size_t j = 0; j < r.outcomes.size(); ++j) {
     const auto& o = r.outcomes[j];
     runs.push_back({{"v", o.speed}, {"offset_radii", r.offsets[j % m]}, {"broken", o.broken},
                     {"undecided", o.undecided}, {"contact", o.contact}});
+    if (n > 1) runs.back()["orientation"] = (j / m) % n;
   }
-  out.write_json("breakup.json", {{"v10", level(r.v10)}, {"v50", level(r.v50)}, {"v90", level(r.v90)},
-                                  {"offsets_radii", r.offsets}, {"points", pts}, {"runs", runs}});
+  nlohmann::json doc{{"v10", level(r.v10)}, {"v50", level(r.v50)}, {"v90", level(r.v90)},
+                     {"offsets_radii", r.offsets}, {"points", pts}, {"runs", runs}};
+  if (n > 1) doc["orientations"] = orientations_json(r.orientations);
+  out.write_json("breakup.json", doc);
 }
 
 }  // namespace agglo::io

@@ -24,7 +24,8 @@ nlohmann::json outcome_json(const ImpactOutcome& o);
 ImpactOutcome outcome_from_json(const nlohmann::json& j);
 nlohmann::json vcrit_json(const VcritResult& r);
 // breakup.csv: speed_m_s,runs,broken,undecided,p_break,ci95_lo,ci95_hi; breakup.json: the same plus
-// v10/v50/v90 (null if not reached), the offsets and every run's outcome.
+// v10/v50/v90 (null if not reached), the offsets and every run's outcome; with breakup.orientations
+// > 1 also each run's orientation index and the set ("orientations": direction, roll_rad).
 void write_breakup(const OutputDir& out, const BreakupResult& r);
 
 }  // namespace agglo::io

@@ -3,20 +3,33 @@
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/impact/orientation_set.hpp"
 #include "agglo/io/impact_writers.hpp"
 
 namespace agglo::run {
+
+std::string impact_job_key(const impact::ImpactJob& b) {
+  std::string key = fmt::format("v={:.17g} offset={:.17g}", b.speed, b.offset_radii);
+  if (b.orientations > 1) key += fmt::format(" orientation={}/{}", b.orientation, b.orientations);
+  return key;
+}
 
 impact::ImpactBatch impact_batch(const impact::ImpactCase& c, const dem::Particles& relaxed, EnsembleOptions opt) {
   return [&c, &relaxed, opt](const std::vector<impact::ImpactJob>& batch) {
     std::vector<Job> jobs;
     for (const auto& b : batch) {
-      jobs.push_back({fmt::format("v={:.17g} offset={:.17g}", b.speed, b.offset_radii),
-                      [&c, &relaxed, b](const JobContext& ctx) {
+      jobs.push_back({impact_job_key(b), [&c, &relaxed, b](const JobContext& ctx) {
                         auto ck = c;
                         ck.projectile.offset_radii = b.offset_radii;
                         auto poll = [&ctx](double, double) { throw_if_cancelled(ctx.cancel); };
-                        return io::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &relaxed));
+                        if (b.orientations <= 1)
+                          return io::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &relaxed));
+                        // Rigid rotation of the relaxed agglomerate: contact overlaps and pair
+                        // distances are unchanged, so it is still relaxed (no external field).
+                        dem::Particles turned = relaxed;
+                        impact::rotate_about_centroid(
+                            turned, impact::stratified_orientation(b.orientation, b.orientations).rotation);
+                        return io::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &turned));
                       }});
     }
     const auto outcomes = run_jobs(jobs, opt);
