@@ -106,9 +106,11 @@ def analyse(folder):
 
 
 def metrics(t, y, t_c):
-    """rise: max over [t_c, t_c + 0.5 ms] minus y(t_c); range: max - min after t_c; net: end - y(t_c)."""
-    after = t >= t_c
-    y0 = y[after][0]
+    """y0: the last value before first contact t_c (pre-impact level); rise: max over
+    [t_c, t_c + 0.5 ms] minus y0; range: max - min from y0 on; net: end - y0."""
+    k0 = np.where(t < t_c)[0][-1]
+    after = np.arange(len(t)) >= k0
+    y0 = y[k0]
     win = after & (t <= t_c + RISE_WINDOW)
     return dict(rise=y[win].max() - y0, range=y[after].max() - y[after].min(), net=y[after][-1] - y0,
                 level=y0)
@@ -170,13 +172,13 @@ def main():
     print(f"U0 = 2 pi r^3 sigma^2 / eps0 = {a1['u0']:.4e} J; q = {abs(a1['q'][0]):.4e} C; "
           f"projectile kinetic energy at launch = {a1['ke_in']:.3f} U0")
     for name, a in runs.items():
-        print(f"{LABEL[name]}: t_contact = {a['t_c'] * 1e3:.4f} ms, U(t_c) = {metrics(a['t'], a['u'], a['t_c'])['level']:.3f} U0 "
+        print(f"{LABEL[name]}: t_contact = {a['t_c'] * 1e3:.4f} ms, U before contact = {metrics(a['t'], a['u'], a['t_c'])['level']:.3f} U0 "
               f"(self {a['self']:.3f}, Coulomb pairs {metrics(a['t'], a['coul'], a['t_c'])['level']:.3f}, "
               f"polarisation {metrics(a['t'], a['pol'], a['t_c'])['level']:.3f}); U range {a['u'].min():.3f}..{a['u'].max():.3f}")
     names = list(runs)
     head = "| definition | " + " | ".join(f"{LABEL[n]}: rise 0.5 ms / range" for n in names) + " | seed |"
-    print("\nDelta U / U0 after the impact (rise: max over the first 0.5 ms after contact minus U at contact;"
-          " range: max - min after contact)\n")
+    print("\nDelta U / U0 after the impact (rise: max over the first 0.5 ms after contact minus U just"
+          " before contact; range: max - min from then on)\n")
     print(head)
     print("|---" * (len(names) + 2) + "|")
     defs = {n: definitions(runs[n]) for n in names}
@@ -190,7 +192,7 @@ def main():
     for n in names:
         a = runs[n]
         lvl = metrics(a["t"], a["inter"], a["t_c"])["level"]
-        print(f"| depth of the well |U_int(t_c)| (reference: spheres at infinity), {LABEL[n]} | {-lvl:.3f} U0; x 4 pi = {-lvl * 4 * math.pi:.1f} |")
+        print(f"| depth of the well |U_int| before contact (reference: spheres at infinity), {LABEL[n]} | {-lvl:.3f} U0; x 4 pi = {-lvl * 4 * math.pi:.1f} |")
     r1 = metrics(runs["k1"]["t"], runs["k1"]["u"], runs["k1"]["t_c"])
     print("\nFactor-free check: ratio kappa 15 / kappa 1 of Delta U (seed: 40-50 / 25-30 = 1.33-2.0):")
     for n in names[1:]:
@@ -209,7 +211,7 @@ def main():
         for n in ("k15", "k15p"):
             a = runs[n]
             after = np.where(a["t"] >= a["t_c"])[0]
-            for label, k in (("contact", after[0]), ("max U", after[np.argmax(a["u"][after])]),
+            for label, k in (("before contact", after[0] - 1), ("max U", after[np.argmax(a["u"][after])]),
                              ("min U", after[np.argmin(a["u"][after])])):
                 v = resolve(o.agglo, a, k, o.out, gaps)
                 print(f"  {LABEL[n]} at {label} (t = {a['t'][k] * 1e3:.3f} ms): "
