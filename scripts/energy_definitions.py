@@ -15,6 +15,7 @@ import argparse
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import tomllib
@@ -133,9 +134,9 @@ def definitions(a):
     ]
 
 
-def resolve(agglo, a, k, out, gaps):
+def resolve(agglo, a, k, out, gaps, tag):
     """U/U0 of snapshot k re-solved by `agglo electrostatics` at each min_gap (spectral, 1e-4)."""
-    path = os.path.join(out, f"config_{k}.toml")
+    path = os.path.join(out, f"config_{tag}_{k}.toml")
     with open(path, "w") as f:
         f.write('[electrostatics]\nsolver = "spectral"\ntarget_accuracy = 1e-4\nmax_degree_limit = 200\n')
         kap = [a["kappa"]] * (len(a["q"]) - 1) + [a["kp"]]
@@ -144,7 +145,7 @@ def resolve(agglo, a, k, out, gaps):
                     f"charge = {qi!r}\npermittivity = {ki!r}\n")
     vals = []
     for g in gaps:
-        o = os.path.join(out, f"es_{k}_{g}")
+        o = os.path.join(out, f"es_{tag}_{k}_{g}")
         subprocess.run([agglo, "-q", "electrostatics", path, "--overwrite", "--out", o, "-j", "1", "--set",
                         f"electrostatics.min_gap={g}"], check=True, stdout=subprocess.DEVNULL)
         e = json.load(open(os.path.join(o, "energy.json")))["energy_J"] / a["u0"]
@@ -213,9 +214,10 @@ def main():
             after = np.where(a["t"] >= a["t_c"])[0]
             for label, k in (("before contact", after[0] - 1), ("max U", after[np.argmax(a["u"][after])]),
                              ("min U", after[np.argmin(a["u"][after])])):
-                v = resolve(o.agglo, a, k, o.out, gaps)
-                print(f"  {LABEL[n]} at {label} (t = {a['t'][k] * 1e3:.3f} ms): "
-                      + ", ".join(f"min_gap {g}: {x:.3f}" for g, x in zip(gaps, v)))
+                v = resolve(o.agglo, a, k, o.out, gaps, n)
+                print(f"  {LABEL[n]}, {label} (t = {a['t'][k] * 1e3:.3f} ms): recorded {a['inter'][k]:.5f}; "
+                      + ", ".join(f"min_gap {g}: {x:.5f}" if g == gaps[0] else f"min_gap {g}: {x:.3f}"
+                                   for g, x in zip(gaps, v)))
     if o.sensitivity:
         sensitivity(o)
     return 0
@@ -230,7 +232,7 @@ def sensitivity(o):
     for tag, sets in VARIANTS.items():
         cells, rises, broken = [], [], []
         for name in ("k1", "k15"):
-            folder = os.path.join(o.out, "sensitivity", tag.replace(" ", "_").replace(",", "") + "_" + name)
+            folder = os.path.join(o.out, "sensitivity", re.sub(r"[^\w.]+", "_", tag) + "_" + name)
             if not done(o, folder):
                 run_collide(o.agglo, name, folder, sets)
             a = analyse(folder)
