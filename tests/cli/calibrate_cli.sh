@@ -5,7 +5,8 @@
 # (exact point charges) tetrahedron to targets generated at (E, e) = (2e9, 0.8): the generating point lies
 # in the reported feasible set and the check runs meet both targets; (3) an interrupted fit (journal
 # cut short, as a killed run leaves it) resumed with --resume gives the same calibration.json;
-# (4) bad input: unknown key, empty range, unreachable target -> exit 2, one line.
+# (4) bad input: unknown key, empty range, unreachable target -> exit 2, one line; (5) a [[prediction]]
+# at the best fit equals a plain vcrit run there.
 # $1 = agglo executable, $2 = source dir.
 set -u
 AGGLO="$1"
@@ -16,6 +17,7 @@ fail=0
 PY=/usr/bin/python3
 neutral="$SRC/cases/seed000_neutral_tetrahedron.toml"
 k1="$SRC/cases/seed000_charged_tetrahedron_k1.toml"
+square="$SRC/cases/seed000_neutral_square.toml"
 
 vcrit_of() {  # case, extra --set args... -> prints v_crit
   local c=$1; shift
@@ -38,8 +40,15 @@ upper = 0.98
 case = "$neutral"
 value = $v09
 tolerance = 0.002
+[[prediction]]
+case = "$square"
 EOF
 "$AGGLO" -q --no-plots calibrate "$TMP/e.toml" --out "$TMP/e" > /dev/null 2>&1 || { echo "FAIL e-fit did not run"; fail=1; }
+# The prediction at the best fit is the v_crit a plain vcrit run gives there (same runs, bit for bit).
+best=$($PY -c "import json,sys; print(repr(json.load(open(sys.argv[1]))['parameters'][0]['best']))" "$TMP/e/calibration.json")
+vsq=$(vcrit_of "$square" --set "material.restitution=$best")
+psq=$($PY -c "import json,sys; print(json.load(open(sys.argv[1]))['predictions'][0]['at_best'])" "$TMP/e/calibration.json")
+if [ "$vsq" = "$psq" ]; then echo "ok   prediction at the best fit = vcrit there ($psq)"; else echo "FAIL prediction $psq != vcrit $vsq"; fail=1; fi
 $PY - "$TMP/e/calibration.json" << 'EOF' || fail=1
 import json, sys
 c = json.load(open(sys.argv[1]))

@@ -38,6 +38,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct Scan {
   std::vector<double> best_u, lo, hi;  // best point; bounding box of the feasible points (unit)
+  std::vector<std::vector<double>> lo_at, hi_at;  // feasible points where each parameter is lowest / highest
   double chi2 = std::numeric_limits<double>::infinity();
   std::size_t feasible = 0;
 };
@@ -130,6 +131,8 @@ class Calibrator {
     Scan sc;
     sc.lo.assign(d_, 1.0);
     sc.hi.assign(d_, 0.0);
+    sc.lo_at.assign(d_, {});
+    sc.hi_at.assign(d_, {});
     for (const auto& u : unit_grid(lo, hi, spec_.fine_points)) {
       bool met = false;
       const double c = chi2(predict(u), met);
@@ -140,6 +143,8 @@ class Calibrator {
       if (!met) continue;
       ++sc.feasible;
       for (std::size_t j = 0; j < d_; ++j) {
+        if (sc.lo_at[j].empty() || u[j] < sc.lo[j]) sc.lo_at[j] = u;
+        if (sc.hi_at[j].empty() || u[j] > sc.hi[j]) sc.hi_at[j] = u;
         sc.lo[j] = std::min(sc.lo[j], u[j]);
         sc.hi[j] = std::max(sc.hi[j], u[j]);
       }
@@ -180,6 +185,10 @@ void Calibrator::finish(const Scan& sc) {
   if (res_.feasible) {
     res_.feasible_lo = physical(sc.lo);
     res_.feasible_hi = physical(sc.hi);
+    for (std::size_t j = 0; j < d_; ++j) {
+      res_.feasible_extremes.push_back(physical(sc.lo_at[j]));
+      res_.feasible_extremes.push_back(physical(sc.hi_at[j]));
+    }
   }
   for (std::size_t i = 0; i < res_.points.size(); ++i)
     for (std::size_t k = 0; k < surrogates_.size(); ++k) {

@@ -77,12 +77,23 @@ struct Result {
   bool feasible = false;                  // some point meets every target
   std::vector<double> feasible_lo, feasible_hi;  // bounding box of the feasible set (physical)
   std::size_t feasible_points = 0;        // fine-grid points in the set (last box)
+  // Points of the feasible set where one parameter is lowest or highest (2 d points, physical; empty
+  // when the set is empty): with the best fit, where predictions are run to give them as ranges.
+  std::vector<std::vector<double>> feasible_extremes;
   std::vector<Observation> achieved;      // checked at the best fit (empty when not checked)
   std::vector<double> sigma;              // parameter standard uncertainty (NaN: not determined)
   // Surrogate over the whole box for the plots: grid of plot_points^d unit coordinates, values by target.
   std::vector<std::vector<double>> plot_u;
   std::vector<std::vector<double>> plot_values;  // [target][grid point]
   int rounds = 0;
+};
+
+// An observable of another case predicted with the calibrated parameters: at the best fit and at the
+// feasible set's extreme points, so that the prediction is a range.
+struct Prediction {
+  std::string name;
+  std::vector<std::vector<double>> x;  // parameter points: the best fit first
+  std::vector<double> values;          // by point (NaN: no value)
 };
 
 // A target outside the range its observable takes over the first map (widened by its tolerance).

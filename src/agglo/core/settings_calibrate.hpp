@@ -26,6 +26,11 @@ struct CalibrateSettings {
                    1.5, Range::open_closed(0.0, 10.0)};
     Integer robustness_iterations{
         t, {"calibrate.robustness_iterations", "", "bisquare reweightings that reject runs off the trend"}, 2, 0, 10};
+    Text case_overrides{t,
+                        {"calibrate.case_overrides", "",
+                         "key=value assignments (separated by ';') applied to every target case, e.g. "
+                         "agglomerate.orientation=\"edge_along\""},
+                        ""};
     Bool check{t, {"calibrate.check", "", "run the observables again at the best fit"}, true};
     Bool widths{t,
                 {"calibrate.widths", "",
@@ -55,7 +60,15 @@ struct CalibrateSettings {
                    Range::positive()};
   } target;
 
-  std::vector<const Table*> tables() const { return {&fit.t, &parameter.t, &target.t}; }
+  struct Prediction {
+    Table t{"prediction", kCalibrateCommands,
+            "an observable predicted at the best fit and over the set that meets every target (optional tables)", true};
+    Text case_file{t, {"prediction.case", "", "vcrit/breakup case file, relative to the calibration file"},
+                   std::nullopt};
+    Choice observable{t, {"prediction.observable", "", "v_crit or v50, as for a target"}, "v_crit", {"v_crit", "v50"}};
+  } prediction;
+
+  std::vector<const Table*> tables() const { return {&fit.t, &parameter.t, &target.t, &prediction.t}; }
 };
 
 const CalibrateSettings& calibrate_settings();

@@ -1,5 +1,6 @@
 #include "agglo/io/calibration_writers.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -44,11 +45,31 @@ nlohmann::json targets_json(const calibrate::Spec& spec, const calibrate::Result
   return a;
 }
 
+nlohmann::json predictions_json(const std::vector<calibrate::Prediction>& predictions) {
+  auto a = nlohmann::json::array();
+  for (const auto& p : predictions) {
+    double lo = INFINITY, hi = -INFINITY;
+    auto pts = nlohmann::json::array();
+    for (std::size_t i = 0; i < p.x.size(); ++i) {
+      pts.push_back({{"x", p.x[i]}, {"value", num(p.values[i])}});
+      if (std::isfinite(p.values[i])) {
+        lo = std::min(lo, p.values[i]);
+        hi = std::max(hi, p.values[i]);
+      }
+    }
+    a.push_back({{"name", p.name}, {"at_best", num(p.values.empty() ? NAN : p.values[0])}, {"min", num(lo)},
+                 {"max", num(hi)}, {"points", pts}});
+  }
+  return a;
+}
+
 }  // namespace
 
 nlohmann::json calibration_json(const calibrate::Spec& spec, const calibrate::Result& r,
-                                const std::vector<std::string>& files, const std::vector<std::string>& observables) {
+                                const std::vector<std::string>& files, const std::vector<std::string>& observables,
+                                const std::vector<calibrate::Prediction>& predictions) {
   return {{"parameters", parameters_json(spec, r)},
+          {"predictions", predictions_json(predictions)},
           {"targets", targets_json(spec, r, files, observables)},
           {"chi2", num(r.chi2)},
           {"feasible", r.feasible},
@@ -60,8 +81,9 @@ nlohmann::json calibration_json(const calibrate::Spec& spec, const calibrate::Re
 }
 
 void write_calibration(const OutputDir& out, const calibrate::Spec& spec, const calibrate::Result& r,
-                       const std::vector<std::string>& files, const std::vector<std::string>& observables) {
-  out.write_json("calibration.json", calibration_json(spec, r, files, observables));
+                       const std::vector<std::string>& files, const std::vector<std::string>& observables,
+                       const std::vector<calibrate::Prediction>& predictions) {
+  out.write_json("calibration.json", calibration_json(spec, r, files, observables, predictions));
   const std::size_t d = spec.parameters.size(), nt = spec.targets.size();
   out.write("calibration_points.csv", [&](std::ostream& o) {
     o << "round";

@@ -41,6 +41,27 @@ void parse_parameters(const ConfigSection& root, calibrate::Spec& spec) {
   }
 }
 
+// The assignments of calibrate.case_overrides applied to a target case (ConfigError naming that key).
+void apply_case_overrides(const ConfigSection& root, Config& target) {
+  const auto& f = settings::calibrate_settings().fit;
+  const auto s = f.t.open(root);
+  const std::string text = f.case_overrides.read(s);
+  try {
+    std::size_t from = 0;
+    while (from <= text.size()) {
+      const std::size_t to = std::min(text.find(';', from), text.size());
+      const auto a = text.substr(from, to - from);
+      if (a.find_first_not_of(" \t") != std::string::npos) target.apply_override(a);
+      from = to + 1;
+    }
+    Config probe = target.clone();
+    (void)impact::parse_impact_case(probe);
+    probe.check_unknown_keys();
+  } catch (const ConfigError& e) {
+    f.case_overrides.reject(s, fmt::format("not accepted by target case {}: {}", target.file(), e.what()));
+  }
+}
+
 void parse_targets(const ConfigSection& root, const std::filesystem::path& dir, CalibrateCase& c) {
   const auto& t = settings::calibrate_settings().target;
   const auto elems = t.t.elements(root);
@@ -54,16 +75,33 @@ void parse_targets(const ConfigSection& root, const std::filesystem::path& dir, 
     target.tolerance = t.tolerance.read(s);
     if (!std::filesystem::is_regular_file(ct.file)) t.case_file.reject(s, fmt::format("no such file {}", ct.file.string()));
     ct.base = Config::load(ct.file);
+    apply_case_overrides(root, ct.base);
     target.name = fmt::format("{} {}", ct.file.stem().string(), ct.observable);
     c.spec.targets.push_back(target);
     c.targets.push_back(std::move(ct));
   }
 }
 
+void parse_predictions(const ConfigSection& root, const std::filesystem::path& dir, CalibrateCase& c) {
+  const auto& t = settings::calibrate_settings().prediction;
+  for (const auto& s : t.t.elements(root)) {
+    CalibrationTarget ct;
+    ct.file = dir / t.case_file.read(s);
+    ct.observable = t.observable.read(s);
+    if (!std::filesystem::is_regular_file(ct.file)) t.case_file.reject(s, fmt::format("no such file {}", ct.file.string()));
+    ct.base = Config::load(ct.file);
+    apply_case_overrides(root, ct.base);
+    Config probe = ct.base.clone();
+    (void)impact::parse_impact_case(probe);
+    ct.resolved = probe.resolved_toml();
+    c.predictions.push_back(std::move(ct));
+  }
+}
+
 }  // namespace
 
-Config target_config(const CalibrateCase& c, std::size_t target, const std::vector<double>& x) {
-  Config cfg = c.targets[target].base.clone();
+Config target_config(const CalibrateCase& c, const CalibrationTarget& t, const std::vector<double>& x) {
+  Config cfg = t.base.clone();
   for (std::size_t j = 0; j < x.size(); ++j) cfg.apply_override(fmt::format("{}={:.17g}", c.spec.parameters[j].key, x[j]));
   (void)impact::parse_impact_case(cfg);
   cfg.check_unknown_keys();
@@ -75,7 +113,9 @@ CalibrateCase parse_calibrate_case(Config& cfg) {
   auto root = cfg.root();
   parse_fit(root, c.spec);
   parse_parameters(root, c.spec);
-  parse_targets(root, std::filesystem::path(cfg.file()).parent_path(), c);
+  const auto dir = std::filesystem::path(cfg.file()).parent_path();
+  parse_targets(root, dir, c);
+  parse_predictions(root, dir, c);
   cfg.check_unknown_keys();
   // Every parameter key must be accepted by every target case at both ends of its range.
   const auto& p = settings::calibrate_settings().parameter;
@@ -90,7 +130,7 @@ CalibrateCase parse_calibrate_case(Config& cfg) {
         for (const auto& q : c.spec.parameters) x.push_back(q.lower);
         x[j] = v;
         try {
-          (void)target_config(c, k, x);
+          (void)target_config(c, c.targets[k], x);
         } catch (const ConfigError& e) {
           p.key.reject(elems[j], fmt::format("not accepted by target case {} at {:g}: {}", c.targets[k].file.filename().string(), v, e.what()));
         }

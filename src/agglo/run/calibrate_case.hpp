@@ -21,13 +21,15 @@ struct CalibrationTarget {
 struct CalibrateCase {
   calibrate::Spec spec;
   std::vector<CalibrationTarget> targets;
+  std::vector<CalibrationTarget> predictions;  // [[prediction]] cases
 };
 
 // ConfigError (one line naming the key) for a bad fit setting, an empty range, a missing case file or
 // a parameter key that a target case does not accept.
 CalibrateCase parse_calibrate_case(Config& cfg);
 
-// The target case with the parameters set to x, parsed as an impact case would be (ConfigError otherwise).
-Config target_config(const CalibrateCase& c, std::size_t target, const std::vector<double>& x);
+// The case of a target (or prediction) with the parameters set to x, parsed as an impact case would be
+// (ConfigError otherwise).
+Config target_config(const CalibrateCase& c, const CalibrationTarget& t, const std::vector<double>& x);
 
 }  // namespace agglo::run

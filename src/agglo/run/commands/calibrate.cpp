@@ -2,6 +2,7 @@
 // (calibrate/calibration.hpp for the method, docs/calibrate.md). Every run of a map is a job of the
 // ensemble runner (all cores, journaled: --resume repeats only the missing runs); inside a job the
 // vcrit bisection or the break-up curve runs on one thread.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -26,21 +27,21 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // One observable at one parameter point: {"value": v, "width": w} (value null when undefined).
-nlohmann::json observe(const CalibrateCase& c, std::size_t k, const std::vector<double>& x, bool widths,
+nlohmann::json observe(const CalibrateCase& c, const CalibrationTarget& t, const std::vector<double>& x, bool widths,
                        const JobContext& job) {
-  Config cfg = target_config(c, k, x);
+  Config cfg = target_config(c, t, x);
   const auto ic = impact::parse_impact_case(cfg);
   const auto relaxed = impact::relaxed_agglomerate(ic);
   const EnsembleOptions inner{1, nullptr, job.cancel, nullptr, "calibrate"};
   nlohmann::json r{{"value", nullptr}, {"width", 0.0}};
-  if (c.targets[k].observable == "v_crit") {
+  if (t.observable == "v_crit") {
     const auto v = impact::find_vcrit(ic.vcrit, speed_batch(ic, relaxed, inner));
     r["value"] = v.v_crit;
     r["runs"] = v.runs.size();
   }
-  if (c.targets[k].observable == "v50" || widths) {
+  if (t.observable == "v50" || widths) {
     const auto b = impact::breakup_probability(ic.breakup, ic.projectile.offset_radii, impact_batch(ic, relaxed, inner));
-    if (c.targets[k].observable == "v50" && b.v50 > 0.0) r["value"] = b.v50;
+    if (t.observable == "v50" && b.v50 > 0.0) r["value"] = b.v50;
     if (b.v10 > 0.0 && b.v90 > 0.0) r["width"] = (b.v90 - b.v10) / 2.563;  // normal p(v): v90 - v10 = 2.563 sigma
   }
   return r;
@@ -48,10 +49,10 @@ nlohmann::json observe(const CalibrateCase& c, std::size_t k, const std::vector<
 
 // A run the model cannot complete (e.g. no break-up up to the scan's highest speed) is a point without a
 // value: the surrogate skips it and calibration.json counts it; interruptions and bad input still stop the fit.
-nlohmann::json observe_or_note(const CalibrateCase& c, std::size_t k, const std::vector<double>& x, bool widths,
-                               const JobContext& job) {
+nlohmann::json observe_or_note(const CalibrateCase& c, const CalibrationTarget& t, const std::vector<double>& x,
+                               bool widths, const JobContext& job) {
   try {
-    return observe(c, k, x, widths, job);
+    return observe(c, t, x, widths, job);
   } catch (const NumericalError& e) {
     return {{"value", nullptr}, {"width", 0.0}, {"failed", e.what()}};
   }
@@ -65,7 +66,9 @@ calibrate::Evaluator evaluator(const CalibrateCase& c, Journal& journal, const R
         std::string key = fmt::format("target={} x=", k);
         for (double v : x) key += fmt::format("{:.17g};", v);
         if (widths) key += " widths";
-        jobs.push_back({key, [&c, k, x, widths](const JobContext& j) { return observe_or_note(c, k, x, widths, j); }});
+        jobs.push_back({key, [&c, k, x, widths](const JobContext& j) {
+                          return observe_or_note(c, c.targets[k], x, widths, j);
+                        }});
       }
     const EnsembleOptions opt{ctx.threads, &journal, ctx.cancel, &ctx.report(), "calibrate"};
     const auto outcomes = run_jobs(jobs, opt);
@@ -77,6 +80,34 @@ calibrate::Evaluator evaluator(const CalibrateCase& c, Journal& journal, const R
     }
     return obs;
   };
+}
+
+// Every [[prediction]] at the best fit and at the feasible set's extreme points (journaled like the maps).
+std::vector<calibrate::Prediction> predict(const CalibrateCase& c, const calibrate::Result& res, Journal& journal,
+                                           const RunContext& ctx) {
+  std::vector<std::vector<double>> points{res.best};
+  for (const auto& x : res.feasible_extremes)
+    if (std::find(points.begin(), points.end(), x) == points.end()) points.push_back(x);
+  std::vector<Job> jobs;
+  for (std::size_t k = 0; k < c.predictions.size(); ++k)
+    for (const auto& x : points) {
+      std::string key = fmt::format("prediction={} x=", k);
+      for (double v : x) key += fmt::format("{:.17g};", v);
+      jobs.push_back({key, [&c, k, x](const JobContext& j) { return observe_or_note(c, c.predictions[k], x, false, j); }});
+    }
+  const auto outcomes = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), "predictions"});
+  rethrow_first_error(outcomes, &jobs);
+  std::vector<calibrate::Prediction> out;
+  for (std::size_t k = 0; k < c.predictions.size(); ++k) {
+    calibrate::Prediction p{fmt::format("{} {}", c.predictions[k].file.stem().string(), c.predictions[k].observable),
+                            points, {}};
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const auto& r = outcomes[k * points.size() + i].result;
+      p.values.push_back(r["value"].is_null() ? kNaN : r["value"].get<double>());
+    }
+    out.push_back(p);
+  }
+  return out;
 }
 
 class Calibrate final : public Command {
@@ -92,6 +123,7 @@ class Calibrate final : public Command {
     const CalibrateCase c = parse_calibrate_case(cfg);
     std::string context = "calibrate\n";
     for (const auto& t : c.targets) context += t.observable + "\n" + t.resolved + "\n";
+    for (const auto& t : c.predictions) context += "prediction " + t.observable + "\n" + t.resolved + "\n";
     Journal journal(out.file("journal.jsonl"), hash_hex(context), ctx.resume);
     calibrate::Result res;
     try {
@@ -105,7 +137,8 @@ class Calibrate final : public Command {
       files.push_back(t.file.filename().string());
       observables.push_back(t.observable);
     }
-    io::write_calibration(out, c.spec, res, files, observables);
+    const auto predictions = predict(c, res, journal, ctx);
+    io::write_calibration(out, c.spec, res, files, observables, predictions);
     CommandResult r;
     r.summary = {{"chi2", res.chi2}, {"feasible", res.feasible}, {"mapped_points", res.points.size()}};
     for (std::size_t j = 0; j < res.best.size(); ++j) r.summary[c.spec.parameters[j].key] = res.best[j];
