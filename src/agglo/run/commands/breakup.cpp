@@ -18,8 +18,8 @@ class Breakup final : public ImpactCommand {
  public:
   std::string_view name() const override { return "breakup"; }
   std::string_view help() const override {
-    return "Break-up probability vs speed over an ensemble of impact offsets ([breakup] speeds, samples, "
-           "offset_spread)";
+    return "Break-up probability vs speed over an ensemble of impact offsets and agglomerate orientations "
+           "([breakup] speeds, samples, offset_spread, orientations)";
   }
 
   bool resumable() const override { return true; }
@@ -39,8 +39,9 @@ class Breakup final : public ImpactCommand {
     r.summary = {{"v10", level(res.v10)}, {"v50", level(res.v50)}, {"v90", level(res.v90)},
                  {"runs", res.outcomes.size()}};
     r.plot_script = "plot_breakup.py";
-    ctx.report().info(fmt::format("{}: break-up probability at {} speeds x {} offsets: v10 = {}, v50 = {}, v90 = {}",
-                                  c.name, res.points.size(), res.offsets.size(), level_text(res.v10),
+    const std::string rotations = res.orientations > 1 ? fmt::format(" x {} orientations", res.orientations) : "";
+    ctx.report().info(fmt::format("{}: break-up probability at {} speeds x {} offsets{}: v10 = {}, v50 = {}, v90 = {}",
+                                  c.name, res.points.size(), res.offsets.size(), rotations, level_text(res.v10),
                                   level_text(res.v50), level_text(res.v90)));
     return r;
   }
