@@ -149,3 +149,24 @@ TEST(Calibration, BatchesAndResultDependOnlyOnTheSpec) {
   EXPECT_EQ(r1.best, r2.best);
   EXPECT_EQ(r1.points.size(), static_cast<std::size_t>(7 * 7 + 5 * 5));
 }
+
+// Runs scattered +-3 mm/s about a linear trend (alternating by map point): the local scatter reported at
+// the best fit is of that size.
+TEST(Calibration, LocalScatterMeasuresHowFarSingleRunsFallFromTheTrend) {
+  Spec s;
+  s.parameters = {{"theta", 0.0, 1.0, false}};
+  s.targets = {{"v", 0.2, 0.005}};
+  s.grid_points = 21;
+  s.refine_rounds = 0;
+  s.robustness_iterations = 0;
+  auto f = [](const std::vector<double>& x) {
+    const long i = std::lround(x[0] * 20.0);  // index of the map point
+    return std::vector<double>{0.15 + 0.1 * x[0] + (i % 2 == 0 ? 0.003 : -0.003)};
+  };
+  const Result r = calibrate(s, synthetic(f));
+  EXPECT_GT(r.local_scatter[0], 0.002);
+  EXPECT_LT(r.local_scatter[0], 0.006);
+  // Without the scatter the same fit reports (almost) none.
+  const Result smooth = calibrate(s, synthetic([](const std::vector<double>& x) { return std::vector<double>{0.15 + 0.1 * x[0]}; }));
+  EXPECT_LT(smooth.local_scatter[0], 1e-6);
+}

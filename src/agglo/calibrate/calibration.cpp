@@ -161,6 +161,7 @@ class Calibrator {
   }
 
   void finish(const Scan& sc);
+  void scatter_near_best(const std::vector<double>& best_u);
   void uncertainty(const std::vector<double>& sigma_obs);
   std::vector<double> parameters_unit() const {
     std::vector<double> u(d_);
@@ -198,6 +199,7 @@ void Calibrator::finish(const Scan& sc) {
       res_.points[i].robust_weight.push_back(
           std::isfinite(res_.points[i].observables[k].value) ? surrogates_[k].weight(idx) : 0.0);
     }
+  scatter_near_best(sc.best_u);
   const std::vector<double> lo(d_, 0.0), hi(d_, 1.0);
   res_.plot_u = unit_grid(lo, hi, std::min(spec_.fine_points, 61));
   res_.plot_values.assign(surrogates_.size(), {});
@@ -211,6 +213,25 @@ void Calibrator::finish(const Scan& sc) {
       if (res_.achieved[k].width > 0.0) sigma_obs[k] = res_.achieved[k].width;
   }
   uncertainty(sigma_obs);
+}
+
+void Calibrator::scatter_near_best(const std::vector<double>& best_u) {
+  const double width = spec_.smoothing / std::max(1, spec_.grid_points - 1);
+  for (std::size_t k = 0; k < surrogates_.size(); ++k) {
+    std::vector<double> dev;
+    for (std::size_t i = 0; i < res_.points.size(); ++i) {
+      double r2 = 0.0;
+      for (std::size_t j = 0; j < d_; ++j) r2 += (u_[i][j] - best_u[j]) * (u_[i][j] - best_u[j]);
+      const double y = res_.points[i].observables[k].value;
+      if (std::sqrt(r2) <= width && std::isfinite(y)) dev.push_back(std::abs(y - surrogates_[k](u_[i])));
+    }
+    if (dev.size() < 3) {
+      res_.local_scatter.push_back(kNaN);
+      continue;
+    }
+    std::nth_element(dev.begin(), dev.begin() + static_cast<std::ptrdiff_t>(dev.size() / 2), dev.end());
+    res_.local_scatter.push_back(1.4826 * dev[dev.size() / 2]);
+  }
 }
 
 // sigma of the parameters from the surrogate's Jacobian at the best fit: cov = (J^T W J)^-1, computed in the

@@ -81,6 +81,10 @@ struct Result {
   // when the set is empty): with the best fit, where predictions are run to give them as ranges.
   std::vector<std::vector<double>> feasible_extremes;
   std::vector<Observation> achieved;      // checked at the best fit (empty when not checked)
+  // By target: robust scatter (1.4826 x median |run - surrogate|) of the mapped runs within one smoothing
+  // width of the best fit: how far a single run (e.g. the check) may fall from the trend there. NaN with
+  // fewer than 3 runs.
+  std::vector<double> local_scatter;
   std::vector<double> sigma;              // parameter standard uncertainty (NaN: not determined)
   // Surrogate over the whole box for the plots: grid of plot_points^d unit coordinates, values by target.
   std::vector<std::vector<double>> plot_u;

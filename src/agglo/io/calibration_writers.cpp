@@ -31,6 +31,7 @@ nlohmann::json targets_json(const calibrate::Spec& spec, const calibrate::Result
     nlohmann::json e{{"name", t.name},          {"case", files[k]},           {"observable", observables[k]},
                      {"value", t.value},        {"tolerance", t.tolerance},  {"predicted", num(r.predicted[k])},
                      {"predicted_residual", num(r.predicted[k] - t.value)}};
+    e["local_scatter"] = num(r.local_scatter[k]);  // single runs near the best fit scatter this much
     std::size_t without = 0;
     for (const auto& p : r.points) without += std::isfinite(p.observables[k].value) ? 0 : 1;
     e["runs_without_value"] = without;  // e.g. no break-up up to the scan's highest speed
