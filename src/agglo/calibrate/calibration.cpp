@@ -191,14 +191,11 @@ void Calibrator::finish(const Scan& sc) {
       res_.feasible_extremes.push_back(physical(sc.hi_at[j]));
     }
   }
-  for (std::size_t i = 0; i < res_.points.size(); ++i)
-    for (std::size_t k = 0; k < surrogates_.size(); ++k) {
-      // Surrogates skip non-finite values: map the i-th point to its index among the finite ones.
-      std::size_t idx = 0;
-      for (std::size_t m = 0; m < i; ++m) idx += std::isfinite(res_.points[m].observables[k].value) ? 1 : 0;
-      res_.points[i].robust_weight.push_back(
-          std::isfinite(res_.points[i].observables[k].value) ? surrogates_[k].weight(idx) : 0.0);
-    }
+  // Surrogates skip non-finite values: finite[k] counts the finite ones so far (the surrogate's index).
+  std::vector<std::size_t> finite(surrogates_.size(), 0);
+  for (auto& p : res_.points)
+    for (std::size_t k = 0; k < surrogates_.size(); ++k)
+      p.robust_weight.push_back(std::isfinite(p.observables[k].value) ? surrogates_[k].weight(finite[k]++) : 0.0);
   scatter_near_best(sc.best_u);
   const std::vector<double> lo(d_, 0.0), hi(d_, 1.0);
   res_.plot_u = unit_grid(lo, hi, std::min(spec_.fine_points, 61));

@@ -62,20 +62,27 @@ void apply_case_overrides(const ConfigSection& root, Config& target) {
   }
 }
 
+// The case of a [[target]] or [[prediction]] table, loaded relative to `dir`, with calibrate.case_overrides.
+CalibrationTarget load_case(const ConfigSection& root, const ConfigSection& s, const std::filesystem::path& dir,
+                            const settings::Text& case_file, const settings::Choice& observable) {
+  CalibrationTarget ct;
+  ct.file = dir / case_file.read(s);
+  ct.observable = observable.read(s);
+  if (!std::filesystem::is_regular_file(ct.file)) case_file.reject(s, fmt::format("no such file {}", ct.file.string()));
+  ct.base = Config::load(ct.file);
+  apply_case_overrides(root, ct.base);
+  return ct;
+}
+
 void parse_targets(const ConfigSection& root, const std::filesystem::path& dir, CalibrateCase& c) {
   const auto& t = settings::calibrate_settings().target;
   const auto elems = t.t.elements(root);
   if (elems.empty()) t.t.fail(root, "at least one [[target]] table is required");
   for (const auto& s : elems) {
-    CalibrationTarget ct;
-    ct.file = dir / t.case_file.read(s);
-    ct.observable = t.observable.read(s);
+    CalibrationTarget ct = load_case(root, s, dir, t.case_file, t.observable);
     calibrate::Target target;
     target.value = t.value.read(s);
     target.tolerance = t.tolerance.read(s);
-    if (!std::filesystem::is_regular_file(ct.file)) t.case_file.reject(s, fmt::format("no such file {}", ct.file.string()));
-    ct.base = Config::load(ct.file);
-    apply_case_overrides(root, ct.base);
     target.name = fmt::format("{} {}", ct.file.stem().string(), ct.observable);
     c.spec.targets.push_back(target);
     c.targets.push_back(std::move(ct));
@@ -85,12 +92,7 @@ void parse_targets(const ConfigSection& root, const std::filesystem::path& dir, 
 void parse_predictions(const ConfigSection& root, const std::filesystem::path& dir, CalibrateCase& c) {
   const auto& t = settings::calibrate_settings().prediction;
   for (const auto& s : t.t.elements(root)) {
-    CalibrationTarget ct;
-    ct.file = dir / t.case_file.read(s);
-    ct.observable = t.observable.read(s);
-    if (!std::filesystem::is_regular_file(ct.file)) t.case_file.reject(s, fmt::format("no such file {}", ct.file.string()));
-    ct.base = Config::load(ct.file);
-    apply_case_overrides(root, ct.base);
+    CalibrationTarget ct = load_case(root, s, dir, t.case_file, t.observable);
     Config probe = ct.base.clone();
     (void)impact::parse_impact_case(probe);
     ct.resolved = probe.resolved_toml();

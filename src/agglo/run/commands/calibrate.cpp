@@ -58,26 +58,43 @@ nlohmann::json observe_or_note(const CalibrateCase& c, const CalibrationTarget& 
   }
 }
 
+// One observable of one case at one parameter point: the job's journal key ("target=k x=...;[ widths]",
+// "prediction=k x=...;") and the case it runs.
+struct Request {
+  std::string kind;  // "target" or "prediction"
+  std::size_t index = 0;
+  const CalibrationTarget* target = nullptr;
+  std::vector<double> x;
+  bool widths = false;
+  std::string key() const {
+    std::string k = fmt::format("{}={} x=", kind, index);
+    for (double v : x) k += fmt::format("{:.17g};", v);
+    return widths ? k + " widths" : k;
+  }
+};
+
+// Runs the requests as journaled jobs of the ensemble runner; observations in request order.
+std::vector<calibrate::Observation> run_requests(const CalibrateCase& c, const std::vector<Request>& requests,
+                                                 Journal& journal, const RunContext& ctx, std::string_view label) {
+  std::vector<Job> jobs;
+  for (const auto& q : requests)
+    jobs.push_back({q.key(), [&c, &q](const JobContext& j) { return observe_or_note(c, *q.target, q.x, q.widths, j); }});
+  const auto outcomes = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), std::string(label)});
+  rethrow_first_error(outcomes, &jobs);
+  std::vector<calibrate::Observation> obs;
+  for (const auto& o : outcomes)
+    obs.push_back({o.result["value"].is_null() ? kNaN : o.result["value"].get<double>(), o.result["width"].get<double>()});
+  return obs;
+}
+
 calibrate::Evaluator evaluator(const CalibrateCase& c, Journal& journal, const RunContext& ctx) {
   return [&c, &journal, &ctx](const std::vector<std::vector<double>>& points, bool widths) {
-    std::vector<Job> jobs;
+    std::vector<Request> requests;
     for (const auto& x : points)
-      for (std::size_t k = 0; k < c.targets.size(); ++k) {
-        std::string key = fmt::format("target={} x=", k);
-        for (double v : x) key += fmt::format("{:.17g};", v);
-        if (widths) key += " widths";
-        jobs.push_back({key, [&c, k, x, widths](const JobContext& j) {
-                          return observe_or_note(c, c.targets[k], x, widths, j);
-                        }});
-      }
-    const EnsembleOptions opt{ctx.threads, &journal, ctx.cancel, &ctx.report(), "calibrate"};
-    const auto outcomes = run_jobs(jobs, opt);
-    rethrow_first_error(outcomes, &jobs);
+      for (std::size_t k = 0; k < c.targets.size(); ++k) requests.push_back({"target", k, &c.targets[k], x, widths});
+    const auto flat = run_requests(c, requests, journal, ctx, "calibrate");
     std::vector<std::vector<calibrate::Observation>> obs(points.size());
-    for (std::size_t i = 0; i < jobs.size(); ++i) {
-      const auto& r = outcomes[i].result;
-      obs[i / c.targets.size()].push_back({r["value"].is_null() ? kNaN : r["value"].get<double>(), r["width"].get<double>()});
-    }
+    for (std::size_t i = 0; i < flat.size(); ++i) obs[i / c.targets.size()].push_back(flat[i]);
     return obs;
   };
 }
@@ -88,23 +105,15 @@ std::vector<calibrate::Prediction> predict(const CalibrateCase& c, const calibra
   std::vector<std::vector<double>> points{res.best};
   for (const auto& x : res.feasible_extremes)
     if (std::find(points.begin(), points.end(), x) == points.end()) points.push_back(x);
-  std::vector<Job> jobs;
+  std::vector<Request> requests;
   for (std::size_t k = 0; k < c.predictions.size(); ++k)
-    for (const auto& x : points) {
-      std::string key = fmt::format("prediction={} x=", k);
-      for (double v : x) key += fmt::format("{:.17g};", v);
-      jobs.push_back({key, [&c, k, x](const JobContext& j) { return observe_or_note(c, c.predictions[k], x, false, j); }});
-    }
-  const auto outcomes = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), "predictions"});
-  rethrow_first_error(outcomes, &jobs);
+    for (const auto& x : points) requests.push_back({"prediction", k, &c.predictions[k], x, false});
+  const auto flat = run_requests(c, requests, journal, ctx, "predictions");
   std::vector<calibrate::Prediction> out;
   for (std::size_t k = 0; k < c.predictions.size(); ++k) {
     calibrate::Prediction p{fmt::format("{} {}", c.predictions[k].file.stem().string(), c.predictions[k].observable),
                             points, {}};
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const auto& r = outcomes[k * points.size() + i].result;
-      p.values.push_back(r["value"].is_null() ? kNaN : r["value"].get<double>());
-    }
+    for (std::size_t i = 0; i < points.size(); ++i) p.values.push_back(flat[k * points.size() + i].value);
     out.push_back(p);
   }
   return out;
