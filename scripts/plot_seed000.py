@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""Table 2 and Figs. 3d/4d/5 of Ruan & Li (2022) from the outputs of scripts/reproduce_seed000.sh.
-Usage: plot_seed000.py OUTDIR [TABLE2_WALL_SECONDS]"""
+"""Table 2 and Figs. 3d/4d/5 of Ruan & Li (2022) from the outputs of scripts/reproduce_seed000.sh, with the
+calibration that set the contact parameters (OUTDIR/calibration) and the predictions over its fitted set.
+Usage: plot_seed000.py OUTDIR [CALIBRATION_AND_PREDICTION_WALL_SECONDS [CALIBRATION_WALL_SECONDS]]"""
 import csv
 import json
 import os
 import sys
+import tomllib
 
 import matplotlib
 
@@ -22,7 +24,52 @@ def save(fig, path):
     os.replace(tmp, path)
 
 
-def main(out, wall):
+def calibration_summary(out):
+    """The fit (best point, fitted set) and whether the shipped cases' (E, e) lies in the fitted set."""
+    f = os.path.join(out, "calibration", "calibration.json")
+    if not os.path.exists(f):
+        return None
+    c = json.load(open(f))
+    case = os.path.join(os.path.dirname(__file__), "..", "cases", "seed000_neutral_tetrahedron.toml")
+    shipped = tomllib.load(open(case, "rb"))
+    summary = {"chi2": c["chi2"], "feasible": c["feasible"], "parameters": [], "predictions": c.get("predictions", [])}
+    inside = c["feasible"]
+    for p in c["parameters"]:
+        section, key = p["key"].split(".")
+        value = shipped[section][key]
+        lo, hi = p["feasible_lo"], p["feasible_hi"]
+        inside = inside and lo is not None and lo <= value <= hi
+        summary["parameters"].append({"key": p["key"], "best": p["best"], "fitted_lo": lo, "fitted_hi": hi,
+                                      "shipped": value})
+    summary["shipped_inside_fitted_box"] = inside
+    summary["targets"] = [{k: t[k] for k in ("name", "value", "tolerance", "predicted", "achieved", "met")}
+                          for t in c["targets"]]
+    return summary
+
+
+def plot_predictions(out, rows, summary):
+    """kappa_p = 2.5 and 15: the shipped cases' v_crit, the range over the fitted set (when run), the seed."""
+    fig, ax = plt.subplots(figsize=(6, 4))
+    names = {"k2p5": "seed000_charged_tetrahedron_k2p5 v_crit", "k15": "seed000_charged_tetrahedron_k15 v_crit"}
+    preds = {p["name"]: p for p in (summary or {}).get("predictions", [])}
+    for i, k in enumerate(names):
+        row = next((r for r in rows if r["case"] == k), None)
+        if row:
+            ax.plot(i - 0.1, row["v_crit"], "o", color="C0", label="agglo, shipped cases" if i == 0 else None)
+        p = preds.get(names[k])
+        if p and p["min"] is not None:
+            ax.vlines(i, p["min"], p["max"], color="C1", lw=4, label="agglo, over the fitted set" if i == 0 else None)
+        ax.plot(i + 0.1, SEED[k], "s", color="C2", label="seed (Table 2)" if i == 0 else None)
+    ax.set_xticks([0, 1], [LABEL[k] for k in names])
+    ax.set_xlim(-0.6, 1.6)
+    ax.set_ylabel("predicted v_crit [m/s]")
+    ax.legend()
+    ax.grid(alpha=0.3, axis="y")
+    fig.tight_layout()
+    save(fig, os.path.join(out, "predictions.png"))
+
+
+def main(out, wall, calibration_wall):
     rows = []
     for k in SEED:
         f = os.path.join(out, f"vcrit_{k}", "vcrit.json")
@@ -42,8 +89,11 @@ def main(out, wall):
         w.writerows(rows)
     os.replace(tmp, os.path.join(out, "table2.csv"))
     with open(os.path.join(out, "table2.json.tmp"), "w") as f:
-        json.dump({"rows": rows, "wall_time_s": float(wall) if wall else None}, f, indent=2)
+        summary = calibration_summary(out)
+        json.dump({"rows": rows, "calibration": summary, "wall_time_s": float(wall) if wall else None,
+                   "calibration_wall_time_s": float(calibration_wall) if calibration_wall else None}, f, indent=2)
     os.replace(os.path.join(out, "table2.json.tmp"), os.path.join(out, "table2.json"))
+    plot_predictions(out, rows, summary)
 
     fig, ax = plt.subplots(figsize=(6, 4))
     x = np.arange(len(rows))
@@ -87,4 +137,4 @@ def main(out, wall):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else None)
+    main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else None, sys.argv[3] if len(sys.argv) > 3 else None)

@@ -21,7 +21,7 @@ namespace {
 
 const char* kOrientations[] = {"edge_across", "edge_along", "face", "vertex"};
 
-Config seed_case() { return Config::load(std::string(AGGLO_SOURCE_DIR) + "/cases/seed000_neutral_tetrahedron.toml"); }
+Config seed_case() { return Config::load(std::string(AGGLO_SOURCE_DIR) + "/cases/seed000_neutral_tetrahedron_e0p9.toml"); }  // no orientation key
 
 ImpactCase oriented_case(const std::string& shape, const std::string& orientation) {
   Config cfg = seed_case();

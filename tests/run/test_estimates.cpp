@@ -61,7 +61,7 @@ constexpr bool kResidentMemoryMeasurable = true;
 #endif
 
 TEST(Estimates, CollideStepsBoundTheRun) {
-  for (const char* name : {"seed000_neutral_tetrahedron.toml", "seed000_charged_square_k1.toml"}) {
+  for (const char* name : {"seed000_neutral_tetrahedron_e0p9.toml", "seed000_charged_square_k1.toml"}) {
     Config cfg = shipped(name);
     const auto c = impact::parse_impact_case(cfg);
     const Estimate e = impact::collide_estimate(c);

@@ -32,6 +32,12 @@ struct CalibrateSettings {
                          "agglomerate.orientation=\"edge_along\""},
                         ""};
     Bool check{t, {"calibrate.check", "", "run the observables again at the best fit"}, true};
+    Choice predict{t,
+                   {"calibrate.predict", "",
+                    "where the [[prediction]] observables are run: range = best fit and the extreme points of the "
+                    "set that meets every target; best = best fit only; none = skipped"},
+                   "range",
+                   {"range", "best", "none"}};
     Bool widths{t,
                 {"calibrate.widths", "",
                  "at the best fit also run each target's break-up curve: the width of p(v) is the observable's "

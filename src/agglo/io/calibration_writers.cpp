@@ -75,6 +75,7 @@ nlohmann::json calibration_json(const calibrate::Spec& spec, const calibrate::Re
           {"chi2", num(r.chi2)},
           {"feasible", r.feasible},
           {"feasible_points", r.feasible_points},
+          {"feasible_extremes", r.feasible_extremes},
           {"fine_points", spec.fine_points},
           {"rounds", r.rounds},
           {"mapped_points", r.points.size()},

@@ -114,6 +114,7 @@ CalibrateCase parse_calibrate_case(Config& cfg) {
   CalibrateCase c;
   auto root = cfg.root();
   parse_fit(root, c.spec);
+  c.predict = settings::calibrate_settings().fit.predict.read(settings::calibrate_settings().fit.t.open(root));
   parse_parameters(root, c.spec);
   const auto dir = std::filesystem::path(cfg.file()).parent_path();
   parse_targets(root, dir, c);

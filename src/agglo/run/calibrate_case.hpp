@@ -15,13 +15,14 @@ struct CalibrationTarget {
   std::filesystem::path file;
   std::string observable;  // "v_crit" | "v50"
   Config base;             // the target case as loaded (overrides are applied to clones)
-  std::string resolved;    // its resolved TOML (journal context)
+  std::string resolved;    // its resolved TOML (hashed into the journal keys of its runs)
 };
 
 struct CalibrateCase {
   calibrate::Spec spec;
   std::vector<CalibrationTarget> targets;
   std::vector<CalibrationTarget> predictions;  // [[prediction]] cases
+  std::string predict;                         // calibrate.predict: "none" | "best" | "range"
 };
 
 // ConfigError (one line naming the key) for a bad fit setting, an empty range, a missing case file or

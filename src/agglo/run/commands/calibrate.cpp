@@ -58,8 +58,10 @@ nlohmann::json observe_or_note(const CalibrateCase& c, const CalibrationTarget& 
   }
 }
 
-// One observable of one case at one parameter point: the job's journal key ("target=k x=...;[ widths]",
-// "prediction=k x=...;") and the case it runs.
+// One observable of one case at one parameter point: the job's journal key ("target=k case=<hash> x=...;[
+// widths]", "prediction=k case=<hash> x=...;") and the case it runs. The key carries the hash of the resolved
+// case, so that a resumed fit reuses every run whose case is unchanged (e.g. after [[prediction]] tables were
+// added or calibrate.predict changed).
 struct Request {
   std::string kind;  // "target" or "prediction"
   std::size_t index = 0;
@@ -67,7 +69,7 @@ struct Request {
   std::vector<double> x;
   bool widths = false;
   std::string key() const {
-    std::string k = fmt::format("{}={} x=", kind, index);
+    std::string k = fmt::format("{}={} case={} x=", kind, index, hash_hex(target->observable + "\n" + target->resolved));
     for (double v : x) k += fmt::format("{:.17g};", v);
     return widths ? k + " widths" : k;
   }
@@ -99,11 +101,14 @@ calibrate::Evaluator evaluator(const CalibrateCase& c, Journal& journal, const R
   };
 }
 
-// Every [[prediction]] at the best fit and at the feasible set's extreme points (journaled like the maps).
+// Every [[prediction]] at the best fit and (calibrate.predict = "range") at the feasible set's extreme points,
+// journaled like the maps; none for calibrate.predict = "none".
 std::vector<calibrate::Prediction> predict(const CalibrateCase& c, const calibrate::Result& res, Journal& journal,
                                            const RunContext& ctx) {
+  if (c.predict == "none") return {};
   std::vector<std::vector<double>> points{res.best};
-  for (const auto& x : res.feasible_extremes)
+  if (c.predict == "range")
+    for (const auto& x : res.feasible_extremes)
     if (std::find(points.begin(), points.end(), x) == points.end()) points.push_back(x);
   std::vector<Request> requests;
   for (std::size_t k = 0; k < c.predictions.size(); ++k)
@@ -130,10 +135,7 @@ class Calibrate final : public Command {
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const CalibrateCase c = parse_calibrate_case(cfg);
-    std::string context = "calibrate\n";
-    for (const auto& t : c.targets) context += t.observable + "\n" + t.resolved + "\n";
-    for (const auto& t : c.predictions) context += "prediction " + t.observable + "\n" + t.resolved + "\n";
-    Journal journal(out.file("journal.jsonl"), hash_hex(context), ctx.resume);
+    Journal journal(out.file("journal.jsonl"), hash_hex("calibrate 2"), ctx.resume);  // cases: in the job keys
     calibrate::Result res;
     try {
       res = calibrate::calibrate(c.spec, evaluator(c, journal, ctx));
