@@ -6,7 +6,7 @@
 //   order, with random velocities of 1 mm/s (well below the sticking velocity, so contacts stay).
 //   Counter "ns_per_particle_step" = wall time / (N x steps); it stays flat if the step is O(N).
 //   Neighbour-list rebuilds are rare at these speeds; BM_NeighborBuild/N times one rebuild.
-// BM_Collision2ms: one complete collision run of cases/seed000_neutral_tetrahedron.toml
+// BM_Collision2ms: one complete collision run of cases/seed000_neutral_tetrahedron_e0p9.toml
 //   (5 particles, approach + 2 ms after first contact, break-up classification, no file output),
 //   with the LAMMPS cross-check settings (break_rule = lammps, tangential = marshall). The LAMMPS
 //   side of this comparison is bench/dem_benchmarks.sh.
@@ -96,7 +96,7 @@ BENCHMARK(BM_NeighborBuild)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kM
 void BM_Collision2ms(benchmark::State& state) {
   // The case file lives next to this source (bench/ -> ../cases/); __FILE__ is absolute under CMake.
   const auto src = std::filesystem::path(__FILE__).parent_path().parent_path();
-  auto cfg = agglo::Config::load(src / "cases" / "seed000_neutral_tetrahedron.toml");
+  auto cfg = agglo::Config::load(src / "cases" / "seed000_neutral_tetrahedron_e0p9.toml");
   for (const char* s : {"contact.break_rule=lammps", "contact.tangential=marshall", "material.restitution=0.9",
                         "material.friction=0.3", "time.early_stop=false"})  // full 2 ms, as LAMMPS
     cfg.apply_override(s);

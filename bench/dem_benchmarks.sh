@@ -12,7 +12,7 @@ SRC=$(cd "$(dirname "$0")/.." && pwd)
 OUT=${1:-$SRC/results/dem_benchmarks}
 BUILD=${BUILD:-$SRC/build-bench}
 REPS=${REPS:-10}
-CASE=$SRC/cases/seed000_neutral_tetrahedron.toml
+CASE=$SRC/cases/seed000_neutral_tetrahedron_e0p9.toml
 PY=/usr/bin/python3
 export LMP=${LMP:-lmp}
 

@@ -3,7 +3,7 @@
 #
 #   bench/lammps_compare.sh [OUT_DIR]        (default OUT_DIR: results/lammps_compare)
 #
-# Same set-up in both codes: the tetrahedron + projectile of cases/seed000_neutral_tetrahedron.toml
+# Same set-up in both codes: the tetrahedron + projectile of cases/seed000_neutral_tetrahedron_e0p9.toml
 # (positions, radii, density 2500, E = 1e9, nu = 0.33, gamma = 0.01, e, mu = 0.3, the same time step),
 # JKR with the pull-off break rule and Marshall/Mindlin sliding spring, no rolling/twisting:
 #   agglo : --set contact.break_rule=lammps --set contact.tangential=marshall
@@ -17,7 +17,7 @@
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 OUT=${1:-$SRC/results/lammps_compare}
-CASE=${CASE:-$SRC/cases/seed000_neutral_tetrahedron.toml}
+CASE=${CASE:-$SRC/cases/seed000_neutral_tetrahedron_e0p9.toml}
 AGGLO=${AGGLO:-$SRC/build-bench/agglo}
 PY=/usr/bin/python3
 export LMP=${LMP:-lmp}

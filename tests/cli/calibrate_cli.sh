@@ -69,6 +69,10 @@ cp "$TMP/e/calibration.json" "$TMP/e_full.json"
 head -n 4 "$TMP/e/journal.jsonl" > "$TMP/j" && mv "$TMP/j" "$TMP/e/journal.jsonl"
 "$AGGLO" -q --no-plots calibrate "$TMP/e.toml" --out "$TMP/e" --resume > /dev/null 2>&1 || { echo "FAIL resume did not run"; fail=1; }
 if cmp -s "$TMP/e_full.json" "$TMP/e/calibration.json"; then echo "ok   resumed fit identical"; else echo "FAIL resumed fit differs"; fail=1; fi
+# The fit's batches are fixed by the configuration, not the core count: one thread gives the same result.
+"$AGGLO" -q --no-plots calibrate "$TMP/e.toml" --out "$TMP/e1" --threads 1 > /dev/null 2>&1 || { echo "FAIL --threads 1 did not run"; fail=1; }
+if cmp -s "$TMP/e_full.json" "$TMP/e1/calibration.json"; then echo "ok   --threads 1 gives the same calibration.json"; else echo "FAIL --threads 1 differs"; fail=1; fi
+
 # A fit run without its predictions, then resumed with them, reuses the map (job keys carry the case, not the
 # [calibrate] settings) and ends with the same calibration.json as the fit run at once.
 "$AGGLO" -q --no-plots calibrate "$TMP/e.toml" --out "$TMP/ep" --set 'calibrate.predict="none"' > /dev/null 2>&1 || { echo "FAIL predict=none did not run"; fail=1; }
