@@ -39,15 +39,21 @@ def case_toml(x, r, q, kappa, medium, min_gap, solver, extra):
 
 def solve(agglo, toml_text, work, name, sets):
     path = os.path.join(work, name + ".toml")
-    with open(path, "w") as f:
-        f.write(toml_text)
     out = os.path.join(work, name)
+    done = os.path.exists(os.path.join(out, "forces.csv")) and os.path.exists(path) and open(path).read() == toml_text
+    if not done or sets:  # an interrupted or repeated study reuses the solves it already has
+        with open(path, "w") as f:
+            f.write(toml_text)
+        run(agglo, path, out, sets)
+    f = np.genfromtxt(os.path.join(out, "forces.csv"), delimiter=",", names=True)
+    return np.column_stack([f["fx"], f["fy"], f["fz"]])
+
+
+def run(agglo, path, out, sets):
     cmd = [agglo, "-q", "--no-plots", "electrostatics", path, "--out", out, "--overwrite", "--threads", "1"]
     for s in sets:
         cmd += ["--set", s]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-    f = np.genfromtxt(os.path.join(out, "forces.csv"), delimiter=",", names=True)
-    return np.column_stack([f["fx"], f["fy"], f["fz"]])
 
 
 def main():
@@ -93,6 +99,11 @@ def main():
         w.writeheader()
         w.writerows(rows)
     os.replace(tmp, os.path.join(a.out_dir, "force_error.csv"))
+    for label in ("spectral", "bem"):
+        e = np.array([r[f"max_error_{label}"] for r in rows])
+        q = np.array([r[f"projected_ratio_{label}"] for r in rows])
+        print(f"{label}: max force error median {np.median(e):.3g}, range {e.min():.3g}-{e.max():.3g}; "
+              f"projected force ratio median {np.median(q):.3g}, range {q.min():.3g}-{q.max():.3g} ({len(rows)} frames)")
     plot(rows, a.out_dir)
 
 

@@ -26,7 +26,7 @@ echo "== 2. Table 2 with the shipped cases (kappa_p = 2.5 and 15: predictions of
 pids=()
 for k in k15 k2p5 k1 neutral; do
   if [ $k = neutral ]; then c=cases/seed000_neutral_tetrahedron.toml; else c=cases/seed000_charged_tetrahedron_$k.toml; fi
-  $A -q --no-plots vcrit "$c" --threads 1 --overwrite --out "$OUT/vcrit_$k" "$@" &
+  $A -q --no-plots vcrit "$c" --overwrite --out "$OUT/vcrit_$k" "$@" &
   pids+=($!)
 done
 # --resume: an interrupted fit (or the fit of a run without --ranges) continues from its journal.
