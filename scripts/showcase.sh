@@ -10,7 +10,7 @@ echo "== 1. Critical break-up velocity of the neutral agglomerates (Ruan & Li 20
 $A -q vcrit cases/seed000_neutral_tetrahedron.toml --overwrite --out results/neutral_tetrahedron-vcrit
 $A -q vcrit cases/seed000_neutral_square.toml --overwrite --out results/neutral_square-vcrit
 echo "== 2. Collision histories just below and above v_crit (time series, VTK snapshots, plots)"
-$A -q collide cases/seed000_neutral_tetrahedron.toml --speed 0.175 --overwrite --out results/neutral_tetrahedron-0.175
+$A -q collide cases/seed000_neutral_tetrahedron.toml --speed 0.17 --overwrite --out results/neutral_tetrahedron-0.170
 $A -q collide cases/seed000_neutral_tetrahedron.toml --speed 0.20 --overwrite --out results/neutral_tetrahedron-0.200
 for extra in scripts/showcase.d/*.sh; do
   [ -e "$extra" ] && bash "$extra"
