@@ -16,6 +16,7 @@ void add_subcommand(CLI::App& app, const agglo::run::Command& cmd) {
   auto values = std::make_shared<std::vector<std::string>>(shortcuts.size());
   auto* sub = app.add_subcommand(std::string(cmd.name()), std::string(cmd.help()));
   agglo::cli::add_common_options(*sub, *args);
+  if (cmd.restartable()) agglo::cli::add_checkpoint_option(*sub, *args);
   for (std::size_t k = 0; k < shortcuts.size(); ++k) {
     const auto* key = shortcuts[k].key;
     sub->add_option(shortcuts[k].flags, (*values)[k],

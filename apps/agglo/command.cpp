@@ -45,7 +45,31 @@ CLI::Validator thread_count() {
       },
       "INT>=0");
 }
+
+// --format: a comma-separated, non-empty list of csv and netcdf.
+CLI::Validator output_formats() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        run::OutputFormats f{false, false};
+        return parse_formats(s, f) ? std::string() : "'" + s + "' is not csv, netcdf or csv,netcdf";
+      },
+      "csv|netcdf|csv,netcdf");
+}
 }  // namespace
+
+bool parse_formats(const std::string& text, run::OutputFormats& f) {
+  f = {false, false};
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const auto end = std::min(text.find(',', start), text.size());
+    const auto item = text.substr(start, end - start);
+    if (item == "csv") f.csv = true;
+    else if (item == "netcdf") f.netcdf = true;
+    else return false;
+    start = end + 1;
+  }
+  return true;
+}
 
 void add_common_options(CLI::App& sub, CommonArgs& args) {
   sub.add_option("case", args.case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
@@ -62,6 +86,16 @@ void add_common_options(CLI::App& sub, CommonArgs& args) {
   sub.add_option("--max-memory", args.budget.max_memory, "Memory budget, e.g. 8G (default: AGGLO_MAX_MEMORY or 0.8 x RAM)");
   sub.add_option("--max-output", args.budget.max_output, "Output size budget, e.g. 2G (default: AGGLO_MAX_OUTPUT or 1G)");
   sub.add_flag("--dry-run", args.dry_run, "Validate and print the estimated steps, memory and output; run nothing");
+  sub.add_option("--format", args.format,
+                 "Result files: csv, netcdf or csv,netcdf (default; CSV/JSON files and results.nc)")
+      ->check(output_formats());
+}
+
+void add_checkpoint_option(CLI::App& sub, CommonArgs& args) {
+  sub.add_option("--checkpoint", args.checkpoint,
+                 "Write a checkpoint every INTERVAL simulated seconds into the output folder; --resume continues "
+                 "from the last one")
+      ->check(CLI::PositiveNumber);
 }
 
 Config load_case(const CommonArgs& args) {
@@ -95,7 +129,16 @@ run::RunContext context(const CommonArgs& args) {
   std::signal(SIGTERM, on_interrupt);
   static run::Budgets budgets;
   budgets = run::resolve_budgets(args.budget);
-  return run::RunContext{&reporter, &interrupt_token(), args.threads, args.resume, args.overwrite, &budgets};
+  run::RunContext ctx;
+  ctx.reporter = &reporter;
+  ctx.cancel = &interrupt_token();
+  ctx.threads = args.threads;
+  ctx.resume = args.resume;
+  ctx.overwrite = args.overwrite;
+  ctx.budgets = &budgets;
+  ctx.checkpoint_interval = args.checkpoint;
+  parse_formats(args.format, ctx.formats);  // validated by the option's check
+  return ctx;
 }
 
 void dry_run(const std::string& what, const Estimate& e, const run::RunContext& ctx) {

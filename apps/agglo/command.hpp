@@ -23,10 +23,18 @@ struct CommonArgs {
   bool overwrite = false;
   run::BudgetArgs budget;  // --max-steps, --max-memory, --max-output
   bool dry_run = false;    // --dry-run
+  std::string format = "csv,netcdf";  // --format: comma-separated csv, netcdf
+  double checkpoint = 0.0;            // --checkpoint [simulated s] (restartable commands only)
 };
 
 // Adds CASE.toml, --out, --set, --threads, --resume, --overwrite, the budgets and --dry-run to a subcommand.
 void add_common_options(CLI::App& sub, CommonArgs& args);
+
+// Parses "csv", "netcdf" or "csv,netcdf" into f; false for anything else.
+bool parse_formats(const std::string& text, run::OutputFormats& f);
+
+// --checkpoint SECONDS on a subcommand whose command writes checkpoints.
+void add_checkpoint_option(CLI::App& sub, CommonArgs& args);
 
 // Loads the case and applies --set overrides (ConfigError on any problem); sets the OpenMP threads.
 Config load_case(const CommonArgs& args);

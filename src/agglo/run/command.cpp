@@ -78,7 +78,8 @@ CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::pa
   check_budgets(plan(cmd, cfg, ctx), budgets_of(ctx), cfg.file());
   std::error_code ec;
   const bool existed = std::filesystem::exists(out_dir, ec);
-  const bool restart = ctx.resume && !cmd.resumable();  // no checkpoint yet: a single run starts again
+  // A single run without checkpoints starts again under --resume; a restartable one continues in place.
+  const bool restart = ctx.resume && !cmd.resumable() && !cmd.restartable();
   claim_output_folder(out_dir, folder_policy(ctx), cmd.name());
   if (restart) claim_output_folder(out_dir, FolderPolicy::overwrite, cmd.name());
   const OutputDir out(out_dir);

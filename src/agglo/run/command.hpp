@@ -17,11 +17,18 @@
 #include "agglo/core/config.hpp"
 #include "agglo/core/estimate.hpp"
 #include "agglo/core/settings.hpp"
+#include "agglo/io/dataset.hpp"
 #include "agglo/io/output_dir.hpp"
 #include "agglo/run/budget.hpp"
 #include "agglo/run/reporter.hpp"
 
 namespace agglo::run {
+
+// Which result files a run writes besides config.resolved.toml and run.json (--format).
+struct OutputFormats {
+  bool csv = true;      // the CSV/JSON files of each command (and VTK snapshots, plots)
+  bool netcdf = true;   // results.nc (io/netcdf_writer.hpp)
+};
 
 struct RunContext {
   Reporter* reporter = nullptr;          // null = silent
@@ -30,6 +37,8 @@ struct RunContext {
   bool resume = false;                   // reuse the journal of finished jobs in the output folder
   bool overwrite = false;                // clear an output folder holding an earlier run
   const Budgets* budgets = nullptr;      // null = resolve_budgets({}): environment, then defaults
+  double checkpoint_interval = 0.0;      // simulated seconds between checkpoints (0 = none; --checkpoint)
+  OutputFormats formats;                 // --format
   Reporter& report() const;
   int thread_count() const;              // threads, or all cores when 0
 };
@@ -40,6 +49,7 @@ struct CommandResult {
   long long seed = 0;                    // recorded in run.json
   std::string plot_script;               // scripts/<name> making the PNGs ("" = none)
   std::vector<std::string> plot_args;
+  io::DatasetPtr data;                   // the results as labelled arrays (results.nc, Python); may be null
 };
 
 // A command-line shortcut for one config key, e.g. `collide --speed V` for projectile.speed.
@@ -67,6 +77,9 @@ class Command {
   virtual long long seed(const Config& cfg) const;
   // True for ensembles that continue from their journal under --resume; a single run restarts instead.
   virtual bool resumable() const { return false; }
+  // True for single runs that write checkpoints (--checkpoint) and continue from the last one under
+  // --resume (the folder is kept; run() reads out.file(kCheckpointFile) when ctx.resume is set).
+  virtual bool restartable() const { return false; }
   // Runs a parsed case and writes the command's own files into `out`.
   virtual CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const = 0;
 };

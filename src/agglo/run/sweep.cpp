@@ -85,7 +85,9 @@ SweepPlan plan_sweep(const Command& cmd, const Config& base, const std::vector<S
 Estimate sweep_estimate(const Command& cmd, const SweepPlan& plan, const RunContext& ctx) {
   Estimate total;
   std::vector<double> memory;
-  const RunContext one{nullptr, nullptr, 1, false, false, ctx.budgets};
+  RunContext one;
+  one.threads = 1;
+  one.budgets = ctx.budgets;
   for (const auto& c : plan.configs) {
     Config cfg = c.clone();
     cmd.parse(cfg);
@@ -108,7 +110,11 @@ SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out,
   std::vector<Job> jobs;
   for (std::size_t i = 0; i < res.cases.size(); ++i)
     jobs.push_back({joined(res.cases[i].assignments), [&, i](const JobContext& jc) {
-                      RunContext sub{nullptr, jc.cancel, jc.threads, ctx.resume, true, ctx.budgets};  // owns its case folders
+                      RunContext sub = ctx;  // owns its case folders: overwrite
+                      sub.reporter = nullptr;
+                      sub.cancel = jc.cancel;
+                      sub.threads = jc.threads;
+                      sub.overwrite = true;
                       nlohmann::json extra = {{"sweep_assignment", joined(res.cases[i].assignments)}};
                       return execute(cmd, plan.configs[i], out.path() / res.cases[i].folder, sub, extra).summary;
                     }});
