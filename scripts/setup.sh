@@ -16,3 +16,12 @@ if [ -n "$missing" ]; then
 fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null
 cmake --build build -j"$(nproc)"
+# Make `import agglo` work for /usr/bin/python3: a .pth file in the site folder for local packages
+# pointing at this build's module (docs/python.md).
+site=$(/usr/bin/python3 -c 'import sys; print(f"/usr/local/lib/python3.{sys.version_info.minor}/dist-packages")')
+pth="$site/agglo-build.pth"
+if [ "$(cat "$pth" 2>/dev/null)" != "$PWD/build/python" ]; then
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO mkdir -p "$site"
+  echo "$PWD/build/python" | $SUDO tee "$pth" >/dev/null
+fi
