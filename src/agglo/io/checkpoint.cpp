@@ -45,12 +45,16 @@ std::string encode(const CheckpointHeader& h, const std::string& payload) {
   return bytes;
 }
 
+int& write_count() {
+  static int count = 0;
+  return count;
+}
+
 // AGGLO_FAULT_KILL_CHECKPOINT=N: true on the N-th write of this process.
 bool fault_now() {
-  static int count = 0;
-  ++count;
+  const int n = ++write_count();
   const char* env = std::getenv("AGGLO_FAULT_KILL_CHECKPOINT");
-  return env && std::atoi(env) == count;
+  return env && std::atoi(env) == n;
 }
 
 void write_all(int fd, const char* p, std::size_t n, const std::string& name) {
@@ -95,6 +99,8 @@ void CheckpointReader::expect_end() const {
 std::string config_hash(const std::string& resolved_toml) {
   return fmt::format("{:016x}", fnv1a(resolved_toml.data(), resolved_toml.size()));
 }
+
+int checkpoint_writes() { return write_count(); }
 
 bool has_checkpoint(const OutputDir& out) { return std::filesystem::exists(out.file(kCheckpointFile)); }
 

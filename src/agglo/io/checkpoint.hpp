@@ -115,6 +115,9 @@ std::string config_hash(const std::string& resolved_toml);
 // process (counting from 1) sends SIGKILL to the process after half of the temporary file is on disk.
 void write_checkpoint(const OutputDir& out, const CheckpointHeader& header, const std::string& payload);
 
+// Number of write_checkpoint calls of this process so far (for the fault hook's N).
+int checkpoint_writes();
+
 // True when out/checkpoint.bin exists.
 bool has_checkpoint(const OutputDir& out);
 
