@@ -98,7 +98,11 @@ std::string toml_value(const std::string& name, const py::handle& v) {
     if (overflow) fail(fmt::format("argument '{}' = {} is out of range", name, py::str(v).cast<std::string>()));
     return std::to_string(i);
   }
-  if (py::isinstance<py::float_>(v)) return fmt::format("{}", v.cast<double>());
+  if (py::isinstance<py::float_>(v)) {  // a TOML float also when integral (2.0 is no integer, as in a case file)
+    std::string f = fmt::format("{}", v.cast<double>());
+    if (f.find_first_of(".eni") == std::string::npos) f += ".0";
+    return f;
+  }
   fail(fmt::format("argument '{}' has type {} (must be a number or a string)", name,
                    py::str(py::type::of(v).attr("__name__")).cast<std::string>()));
 }

@@ -251,3 +251,39 @@ def test_help_documents_parameters_and_units(agglo_module):
                  "max_degree", "[N m]", "[J]"):
         assert word in doc
     assert "forces" in agglo_module.ElectrostaticResult.__doc__
+
+
+def test_gmres_failure_is_a_numerical_error(agglo_module):
+    x, r, q, kappa = cluster()
+    with pytest.raises(getattr(agglo_module, "NumericalError", RuntimeError)) as err:
+        agglo_module.electrostatic_forces(x, r, q, kappa, max_iterations=1, tolerance=1e-12)
+    assert "GMRES did not converge" in str(err.value) and "\n" not in str(err.value)
+
+
+def test_results_are_views_of_the_solver_output(agglo_module):
+    res = agglo_module.electrostatic_forces(**GOOD)
+    for a in (res.forces, res.torques):
+        assert not a.flags.owndata and a.base is not None and a.flags.c_contiguous
+    single = agglo_module.electrostatic_forces([[0.0, 0.0, 0.0]], [2e-6], [1e-15], [3.0], medium_permittivity=2.0)
+    assert np.array_equal(single.forces, np.zeros((1, 3)))
+    assert single.energy == pytest.approx(1e-30 / (8 * math.pi * EPS0 * 2.0 * 2e-6), rel=1e-12)
+
+
+def test_concurrent_calls_from_python_threads(agglo_module):
+    """The GIL is released during the solve: two threads solving at once get the sequential results."""
+    import threading
+    x, r, q, kappa = cluster()
+    jobs = [dict(solver="spectral", target_accuracy=1e-8), dict(solver="bem", patches_per_sphere=300, matvec="direct")]
+    expected = [agglo_module.electrostatic_forces(x, r, q, kappa, threads=1, **j).forces for j in jobs]
+    got = [None, None]
+
+    def run(i):
+        got[i] = agglo_module.electrostatic_forces(x, r, q, kappa, threads=1, **jobs[i]).forces
+
+    threads = [threading.Thread(target=run, args=(i,)) for i in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for g, e in zip(got, expected):
+        assert np.array_equal(g, e)
