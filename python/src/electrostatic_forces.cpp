@@ -71,10 +71,12 @@ py::dict surface_dict(const es::Solver& solver) {
   d["sigma_free"] = member_view<double>(cap, *s, offsetof(S, sigma_free), 1);
   d["sigma_bound"] = member_view<double>(cap, *s, offsetof(S, sigma_bound), 1);
   d["body"] = member_view<int>(cap, *s, offsetof(S, body), 1);
-  const auto tri = solver.surface_triangles();
-  if (!tri.empty()) {
-    auto [tcap, t] = owner(std::vector<std::array<int, 3>>(tri));
-    d["triangles"] = py::array_t<int>({static_cast<py::ssize_t>(t->size()), py::ssize_t{3}}, t->data()->data(), tcap);
+  if (auto tri = solver.surface_triangles(); !tri.empty()) {
+    auto [tcap, t] = owner(std::move(tri));
+    const auto k = static_cast<py::ssize_t>(t->size());
+    py::array tri_view = py::array_t<int>({k, py::ssize_t{3}}, t->data()->data(), tcap);
+    tri_view.attr("setflags")(py::arg("write") = false);
+    d["triangles"] = tri_view;
   }
   return d;
 }
@@ -123,13 +125,13 @@ ElectrostaticResult electrostatic_forces(py::object positions, py::object radii,
   return r;
 }
 
-constexpr const char* kForcesDoc = R"(Electrostatic forces, torques and energy of charged dielectric spheres (one static solve).
+constexpr const char* kForcesDoc = R"(Electrostatic forces, torques and energy of charged dielectric spheres.
 
-The library call behind the CLI's `agglo electrostatics` (docs/model.md Part B): spheres with
-uniform free surface charge in a medium of relative permittivity kappa_0, polarised by each other
-and by an optional uniform applied field. The spheres are solved exactly as given: no contact-gap
-regularisation unless min_gap is passed. Touching or overlapping spheres raise ConfigError naming
-the pair and the gap.
+One static solve, the library call behind the CLI's `agglo electrostatics` (docs/model.md Part B):
+spheres with uniform free surface charge in a medium of relative permittivity kappa_0, polarised by
+each other and by an optional uniform applied field. The spheres are solved exactly as given: no
+contact-gap regularisation unless min_gap is passed. Touching or overlapping spheres raise
+ConfigError naming the pair and the gap.
 
 Parameters
 ----------
@@ -219,8 +221,9 @@ stats : dict
 surface : dict of ndarrays, or None
     With surface=True: M surface samples, 'position' (M, 3) [m], 'normal' (M, 3) (outward unit
     normal), 'area' (M,) [m^2], 'sigma_free' and 'sigma_bound' (M,) [C/m^2], 'body' (M,) int (sphere
-    index), and for the bem solver 'triangles' (K, 3) int (sample indices, counter-clockwise seen
-    from outside). The arrays are strided read-only views of one buffer.
+    index) and, when the solver triangulates its samples (spectral, bem), 'triangles' (K, 3) int
+    (sample indices, counter-clockwise seen from outside, as in the CLI's surface.vtu). The arrays
+    are read-only views of the solver's output (no copies).
 )";
 
 }  // namespace

@@ -55,7 +55,8 @@ std::vector<Vec3> read_positions(const py::object& o) {
   const double* p = a.data();
   for (std::size_t i = 0; i < x.size(); ++i) {
     x[i] = {p[3 * i], p[3 * i + 1], p[3 * i + 2]};
-    if (!isfinite(x[i])) fail(fmt::format("positions[{}] = [{}, {}, {}] m (must be finite)", i, x[i].x, x[i].y, x[i].z));
+    if (!isfinite(x[i]))
+      fail(fmt::format("positions[{}] = [{}, {}, {}] m (must be finite)", i, x[i].x, x[i].y, x[i].z));
   }
   return x;
 }
@@ -72,7 +73,8 @@ std::vector<double> read_per_sphere(const py::object& o, const char* name, const
   for (std::size_t i = 0; i < n; ++i) {
     v[i] = a.data()[scalar ? 0 : i];
     const bool ok = std::isfinite(v[i]) && (!positive || v[i] > 0.0);
-    if (!ok) fail(fmt::format("{}[{}] = {}{} (must be {})", name, i, v[i], unit, positive ? "> 0 and finite" : "finite"));
+    if (!ok)
+      fail(fmt::format("{}[{}] = {}{} (must be {})", name, i, v[i], unit, positive ? "> 0 and finite" : "finite"));
   }
   return v;
 }

@@ -212,7 +212,8 @@ def test_input_conversion_and_scalars(agglo_module):
     assert np.array_equal(a.forces, c.forces)
     x32 = np.array(GOOD["positions"], dtype=np.float32)
     d = agglo_module.electrostatic_forces(x32, GOOD["radii"], GOOD["charges"], GOOD["permittivities"])
-    e = agglo_module.electrostatic_forces(x32.astype(np.float64), GOOD["radii"], GOOD["charges"], GOOD["permittivities"])
+    e = agglo_module.electrostatic_forces(x32.astype(np.float64), GOOD["radii"], GOOD["charges"],
+                                          GOOD["permittivities"])
     assert np.array_equal(d.forces, e.forces)
     # A neutral dielectric sphere is attracted by the charged one: the force on sphere 1 points to it.
     assert a.forces[1, 2] < 0 and a.forces[0, 2] > 0
@@ -242,6 +243,10 @@ def test_surface_samples(agglo_module):
             dist = np.linalg.norm(s["position"][on] - x[i], axis=1)
             assert np.allclose(dist, r[i], rtol=1e-9)
         assert not s["position"].flags.writeable
+        if solver == "bem":
+            t = s["triangles"]
+            assert t.shape[1] == 3 and t.min() >= 0 and t.max() < m
+            assert np.all(s["body"][t[:, 0]] == s["body"][t[:, 2]])  # a triangle stays on one sphere
     assert agglo_module.electrostatic_forces(x, r, q, kappa).surface is None
 
 
