@@ -399,7 +399,7 @@ def mut_out(rng, m, schema):
 
 def mut_options(rng, m, schema):
     op = rng.choice(["unknown", "dup_out", "positional", "no_case", "case_dir", "case_missing", "case_dev",
-                     "help_mix", "no_set_value", "speed", "resume", "empty_set"])
+                     "help_mix", "no_set_value", "speed", "resume", "empty_set", "format", "checkpoint"])
     if op == "unknown":
         m.args_tail += [rng.choice(["--bogus", "-x", "--set-", "--threads=", "---", "--out=", "-j"])]
     elif op == "dup_out":
@@ -422,6 +422,11 @@ def mut_options(rng, m, schema):
         m.args_tail += ["--speed", nasty_value(rng).strip('"')]
     elif op == "resume":
         m.args_tail += ["--resume"]
+    elif op == "format":
+        m.args_tail += ["--format", rng.choice(["csv", "netcdf", "csv,netcdf", "netcdf,csv", "", ",", "csv,",
+                                                "xml", "CSV", "csv,csv"])]
+    elif op == "checkpoint":  # an option of collide, acoustic and sectional only; refused elsewhere
+        m.args_tail += ["--checkpoint", rng.choice(["0", "-1", "nan", "inf", "0.5", "x", "", "1e300"])]
     else:
         m.sets.append("")
     m.notes.append(f"option {op}")
