@@ -34,6 +34,15 @@ $A -q --no-plots collide "$DEM" --out "$T/cc" --format csv "${SHORT[@]}" > /dev/
 [ -s "$T/cc/timeseries.csv" ] || fail "--format csv: timeseries.csv missing"
 cmp -s "$T/c/timeseries.csv" "$T/cc/timeseries.csv" || fail "--format changed timeseries.csv"
 
+# electrostatics (default formats) and a sweep with --format netcdf: its own results.nc over `case`, one per
+# case folder, no sweep.csv
+ES="$SRC/cases/electrostatics_two_spheres.toml"
+$A -q --no-plots electrostatics "$ES" --out "$T/e" > /dev/null 2>&1 || fail "electrostatics"
+$A -q --no-plots sweep "$DEM" --command collide --param projectile.speed --values 0.1,0.3 --format netcdf \
+  --set time.after_contact=2e-5 --set output.snapshot_interval=0 --out "$T/s" > /dev/null 2>&1 || fail "sweep"
+[ -e "$T/s/sweep.csv" ] && fail "sweep --format netcdf wrote sweep.csv"
+for f in s/results.nc s/case_00_0.1/results.nc s/case_01_0.3/results.nc; do [ -s "$T/$f" ] || fail "$f missing"; done
+
 /usr/bin/python3 - "$T" <<'PY' || fail "xarray check"
 import sys
 import numpy as np
@@ -84,5 +93,26 @@ same(np.tile(ds["diameter"].values, ds.sizes["psd_time"]), psd["d_mid_m"], "diam
 assert ds.sizes["diameter_edge"] == ds.sizes["diameter"] + 1
 import json
 assert int(ds.attrs["seed"]) == json.load(open(f"{T}/a/run.json"))["seed"] and ds.attrs["command"] == "acoustic"
+
+# electrostatics: force/torque (particle, xyz) equal forces.csv's columns, energy equals energy.json
+ds = xr.open_dataset(f"{T}/e/results.nc")
+check_units(ds)
+f = np.genfromtxt(f"{T}/e/forces.csv", delimiter=",", names=True)
+same(ds["particle"], f["id"], "particle")
+for k, c in enumerate("xyz"):
+    same(ds["force"][:, k], f["f" + c], "f" + c)
+    same(ds["torque"][:, k], f["t" + c], "t" + c)
+assert ds["force"].attrs["units"] == "N" and ds["force"].dims == ("particle", "xyz")
+same(ds["energy"], json.load(open(f"{T}/e/energy.json"))["energy_J"], "energy", 1e-15)
+
+# sweep: the swept key over `case` with its unit, a summary column per case
+ds = xr.open_dataset(f"{T}/s/results.nc")
+check_units(ds)
+assert "case" in ds.coords and ds.sizes["case"] == 2
+same(ds["projectile.speed"], [0.1, 0.3], "swept speeds")
+assert ds["projectile.speed"].attrs["units"] == "m s-1"
+for i in range(2):
+    case = xr.open_dataset(f"{T}/s/case_0{i}_{[0.1, 0.3][i]}/results.nc")
+    assert int(ds["broken"][i]) == int(case["broken"]), "sweep summary differs from the case's results.nc"
 PY
 echo "netcdf_outputs: ok"
