@@ -31,7 +31,7 @@ void add_subcommand(CLI::App& app, const agglo::run::Command& cmd) {
     const auto ctx = agglo::cli::context(*args);
     if (args->dry_run) return agglo::cli::dry_run(cfg.file(), agglo::run::plan(cmd, cfg, ctx), ctx);
     const auto res = agglo::run::execute(cmd, cfg, out, ctx);
-    agglo::cli::run_plot_script(res.plot_script, out, res.plot_args);
+    if (ctx.formats.csv) agglo::cli::run_plot_script(res.plot_script, out, res.plot_args);  // plots read the CSV files
   });
 }
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/io/sweep_dataset.hpp"
 #include "agglo/io/sweep_table.hpp"
 #include "agglo/run/sweep.hpp"
 #include "command.hpp"
@@ -76,13 +77,15 @@ void run(const SweepArgs& a) {
     rows.push_back({res.cases[i].values, res.cases[i].folder, res.summaries[i]});
   std::vector<std::string> keys;
   for (const auto& x : ax) keys.push_back(x.key);
-  agglo::io::write_sweep_table(out, keys, rows);
+  if (ctx.formats.csv) agglo::io::write_sweep_table(out, keys, rows);
+  if (ctx.formats.netcdf)
+    agglo::run::write_results_nc(out, resolved, "sweep", seed, agglo::io::sweep_dataset(keys, rows));
   nlohmann::json details = {{"param", a.params.size() == 1 ? nlohmann::json(a.params[0]) : nlohmann::json(a.params)},
                             {"values", ax.size() == 1 ? nlohmann::json(ax[0].values) : nlohmann::json(a.values)},
                             {"command", a.command}};
   agglo::run::write_run_files(out, resolved, "sweep", seed, seconds(), details);
   std::vector<std::string> plot_args = keys;
-  agglo::cli::run_plot_script("plot_sweep.py", path, plot_args);
+  if (ctx.formats.csv) agglo::cli::run_plot_script("plot_sweep.py", path, plot_args);  // the plots read sweep.csv
 }
 
 agglo::cli::Registration reg([](CLI::App& app) {

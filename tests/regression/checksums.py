@@ -8,7 +8,10 @@ Stripped before hashing (they change from run to run or machine to machine, neve
   JSON keys  wall_time_s, time_s, finished_utc, git_hash, version, threads, and any key containing 'seconds'
              (run.json, summary.json, result.json, stats.json, vcrit.json, breakup.json);
   run.log    'wall_time=<x> s';
-  CSV        columns whose header is one of those keys or contains 'seconds' (sweep.csv).
+  CSV        columns whose header is one of those keys or contains 'seconds' (sweep.csv);
+  results.nc compared by content, not bytes (HDF5 files are not byte-stable): dimensions, variables (name,
+             dimensions, type, attributes, values), global attributes; the variables named like the
+             stripped JSON keys and the provenance attributes agglo_version and git_hash are left out.
 PNG files are skipped (matplotlib versions differ), and so are the ensemble journals journal.jsonl (a
 work log: its lines are in the order the jobs finished, which depends on scheduling; the results it
 holds are checked through vcrit.json, breakup.json and sweep.csv).
@@ -36,7 +39,32 @@ def strip_json(x):
     return x
 
 
+NC_PROVENANCE = {"agglo_version", "git_hash"}
+
+
+def normalised_netcdf(path: Path) -> bytes:
+    import netCDF4  # Debian python3-netcdf4
+    import numpy
+    lines = []
+    with netCDF4.Dataset(str(path)) as ds:
+        ds.set_auto_mask(False)
+        for name, dim in ds.dimensions.items():
+            lines.append(f"dim {name} {len(dim)}")
+        for key in ds.ncattrs():
+            if key not in NC_PROVENANCE:
+                lines.append(f"attr {key} {ds.getncattr(key)!r}")
+        for name, var in ds.variables.items():
+            if dropped(name):
+                continue
+            attrs = {k: repr(var.getncattr(k)) for k in var.ncattrs()}
+            values = numpy.ascontiguousarray(var[...]).tobytes()
+            lines.append(f"var {name} {var.dimensions} {var.dtype} {attrs} {hashlib.sha256(values).hexdigest()}")
+    return "\n".join(lines).encode()
+
+
 def normalised(path: Path) -> bytes:
+    if path.suffix == ".nc":
+        return normalised_netcdf(path)
     data = path.read_bytes()
     if path.suffix == ".json":
         return json.dumps(strip_json(json.loads(data)), indent=1, sort_keys=True).encode()

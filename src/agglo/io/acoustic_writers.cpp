@@ -97,12 +97,14 @@ nlohmann::json acoustic_summary(const AcousticObservations& o) {
           {"wall_time_s", o.wall_time_s}};
 }
 
-void write_acoustic(const OutputDir& out, const AcousticObservations& o) {
-  out.write("efficiency.csv", [&](std::ostream& os) { write_efficiency(os, o); });
-  out.write("psd.csv", [&](std::ostream& os) { write_psd(os, o); });
-  out.write("snapshots.csv", [&](std::ostream& os) { write_snapshots(os, o); });
+void write_acoustic(const OutputDir& out, const AcousticObservations& o, bool tables) {
+  if (tables) {
+    out.write("efficiency.csv", [&](std::ostream& os) { write_efficiency(os, o); });
+    out.write("psd.csv", [&](std::ostream& os) { write_psd(os, o); });
+    out.write("snapshots.csv", [&](std::ostream& os) { write_snapshots(os, o); });
+  }
   out.write_text("run.log", o.log);
-  out.write_json("summary.json", acoustic_summary(o));
+  if (tables) out.write_json("summary.json", acoustic_summary(o));
 }
 
 }  // namespace agglo::io

@@ -11,7 +11,7 @@ namespace agglo::io {
 // The scalars of summary.json (also the row of a sweep table and run.json's details).
 nlohmann::json acoustic_summary(const acoustics::AcousticObservations& o);
 
-// Writes all five files.
-void write_acoustic(const OutputDir& out, const acoustics::AcousticObservations& o);
+// Writes all five files; run.log only when `tables` is false (--format netcdf: results.nc holds the rest).
+void write_acoustic(const OutputDir& out, const acoustics::AcousticObservations& o, bool tables = true);
 
 }  // namespace agglo::io

@@ -24,14 +24,21 @@ void flatten_scalars(const nlohmann::json& j, const std::string& prefix,
   }
 }
 
-void write_sweep_table(const OutputDir& out, const std::vector<std::string>& keys, const std::vector<SweepRow>& rows) {
+std::vector<std::string> summary_columns(const std::vector<SweepRow>& rows,
+                                         std::vector<std::vector<std::pair<std::string, double>>>& flat) {
   std::vector<std::string> cols;
-  std::vector<std::vector<std::pair<std::string, double>>> flat(rows.size());
+  flat.assign(rows.size(), {});
   for (std::size_t i = 0; i < rows.size(); ++i) {
     flatten_scalars(rows[i].summary, "", flat[i]);
     for (const auto& [k, v] : flat[i])
       if (std::find(cols.begin(), cols.end(), k) == cols.end()) cols.push_back(k);
   }
+  return cols;
+}
+
+void write_sweep_table(const OutputDir& out, const std::vector<std::string>& keys, const std::vector<SweepRow>& rows) {
+  std::vector<std::vector<std::pair<std::string, double>>> flat;
+  const auto cols = summary_columns(rows, flat);
   out.write("sweep.csv", [&](std::ostream& os) {
     os << "index";
     for (const auto& k : keys) os << ',' << csv_field(k);

@@ -25,6 +25,11 @@ struct SweepRow {
   nlohmann::json summary;
 };
 
+// The flattened scalars of every row's summary (flat[i]) and the union of their names in first-seen
+// order (the summary columns of sweep.csv and results.nc).
+std::vector<std::string> summary_columns(const std::vector<SweepRow>& rows,
+                                         std::vector<std::vector<std::pair<std::string, double>>>& flat);
+
 void write_sweep_table(const OutputDir& out, const std::vector<std::string>& keys, const std::vector<SweepRow>& rows);
 
 }  // namespace agglo::io

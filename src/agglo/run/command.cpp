@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/core/version.hpp"
+#include "agglo/io/netcdf_writer.hpp"
 #include "agglo/run/commands.hpp"
 
 namespace agglo::run {
@@ -72,6 +74,19 @@ void write_run_files(const OutputDir& out, const Config& cfg, std::string_view c
   out.write_json("run.json", meta);
 }
 
+void write_results_nc(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
+                      const io::Dataset& data) {
+  io::Dataset d = data;
+  d.attributes["Conventions"] = "CF-1.8";
+  d.attributes["title"] = fmt::format("agglo {} of {}", command, std::filesystem::path(cfg.file()).filename().string());
+  d.attributes["agglo_version"] = kVersion;
+  d.attributes["git_hash"] = kGitHash;
+  d.attributes["command"] = std::string(command);
+  d.attributes["seed"] = seed;
+  d.attributes["config"] = cfg.resolved_toml();
+  io::write_netcdf(out, d);
+}
+
 CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
                       const nlohmann::json& extra) {
   const auto start = std::chrono::steady_clock::now();
@@ -105,6 +120,7 @@ CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::pa
     write_run_files(out, cfg, cmd.name(), cmd.seed(cfg), seconds(), merged({{"error", e.what()}}), "failed");
     throw;
   }
+  if (ctx.formats.netcdf && res.data) write_results_nc(out, cfg, cmd.name(), res.seed, *res.data);
   write_run_files(out, cfg, cmd.name(), res.seed, seconds(), merged(res.details));
   return res;
 }

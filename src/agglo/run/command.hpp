@@ -103,7 +103,8 @@ Budgets budgets_of(const RunContext& ctx);
 // --resume) and created only after the case has been validated and found within the budgets, and removed
 // again, if new, when the engine rejects the input with a ConfigError. run.json says "status": "running"
 // while the run goes on, "complete" at the end, "incomplete" after an interruption (the command flushes
-// what it has) and "failed" after an error; the exception is rethrown.
+// what it has) and "failed" after an error; the exception is rethrown. results.nc is written for a complete
+// run whose command returned data, when ctx.formats.netcdf (--format).
 CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
                       const nlohmann::json& extra = {});
 
@@ -112,6 +113,11 @@ FolderPolicy folder_policy(const RunContext& ctx);
 
 // run.json of a run that has started: command, case, "status": "running", pid.
 void write_run_started(const OutputDir& out, std::string_view command, const std::string& case_file);
+
+// results.nc (io/netcdf_writer.hpp) of a complete run: `data` plus the global attributes Conventions
+// ("CF-1.8"), title, agglo_version, git_hash, command, seed and config (the resolved TOML text).
+void write_results_nc(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
+                      const io::Dataset& data);
 
 // config.resolved.toml and run.json of a finished ("complete") or interrupted ("incomplete") run (also
 // used by sweep for its own folder).

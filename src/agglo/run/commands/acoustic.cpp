@@ -2,6 +2,7 @@
 #include "agglo/acoustics/estimate.hpp"
 #include "agglo/acoustics/run.hpp"
 #include "agglo/core/error.hpp"
+#include "agglo/io/acoustic_dataset.hpp"
 #include "agglo/io/acoustic_writers.hpp"
 #include "agglo/run/commands.hpp"
 
@@ -37,12 +38,13 @@ class Acoustic final : public Command {
     hooks.warning = [&](const std::string& w) { ctx.report().warning(w); };
     hooks.cancelled = [&] { return ctx.cancel && ctx.cancel->cancelled(); };
     const auto obs = acoustics::run_acoustic(c, hooks);
-    io::write_acoustic(out, obs);
+    io::write_acoustic(out, obs, ctx.formats.csv);
     if (!obs.interrupted.empty()) throw InterruptedError(obs.interrupted);  // partial results flushed
     CommandResult r;
     r.summary = io::acoustic_summary(obs);
     r.details = r.summary;
     r.seed = static_cast<long long>(c.engine.seed);
+    r.data = std::make_shared<const io::Dataset>(io::acoustic_dataset(obs));
     if (c.output.plots) r.plot_script = "plot_acoustic.py";
     return r;
   }

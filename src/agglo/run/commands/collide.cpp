@@ -5,6 +5,7 @@
 #include "agglo/core/settings_impact.hpp"
 #include "agglo/impact/estimate.hpp"
 #include "agglo/impact/experiment.hpp"
+#include "agglo/io/impact_dataset.hpp"
 #include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/run/commands/impact_command.hpp"
@@ -36,15 +37,18 @@ class Collide final : public ImpactCommand {
     try {
       res = impact::run_impact(c, c.projectile.speed, &rec, progress);
     } catch (const InterruptedError&) {  // flush the history so far; run.json marks the run incomplete
-      io::write_timeseries(out, rec);
-      io::write_snapshots(out, rec);
+      if (ctx.formats.csv) io::write_timeseries(out, rec);
+      if (ctx.formats.csv) io::write_snapshots(out, rec);
       throw;
     }
-    io::write_timeseries(out, rec);
-    io::write_snapshots(out, rec);
     CommandResult r;
     r.summary = io::outcome_json(res);
-    out.write_json("result.json", r.summary);
+    if (ctx.formats.csv) {
+      io::write_timeseries(out, rec);
+      io::write_snapshots(out, rec);
+      out.write_json("result.json", r.summary);
+    }
+    r.data = std::make_shared<const io::Dataset>(io::collide_dataset(rec, &res));
     r.plot_script = "plot_collision.py";
     ctx.report().info(fmt::format("{}: v_in = {:.6g} m/s -> {} ({} fragment(s)); outputs in {}", c.name, res.speed,
                                   res.broken ? "BROKEN" : (res.undecided ? "undecided" : "not broken"),

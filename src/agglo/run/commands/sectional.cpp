@@ -1,5 +1,6 @@
 // agglo sectional: deterministic sectional (fixed-pivot) coagulation of an acoustic case file with a
 // kernel of the sizes only; the same efficiency.csv and psd.csv as agglo acoustic (docs/sectional.md).
+#include "agglo/io/acoustic_dataset.hpp"
 #include "agglo/io/acoustic_writers.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/sectional/run.hpp"
@@ -26,10 +27,11 @@ class Sectional final : public Command {
     hooks.progress = [&](double f, double t) { ctx.report().progress("sectional", f, t); };
     hooks.cancelled = [&] { return ctx.cancel && ctx.cancel->cancelled(); };
     const auto obs = sectional::run_sectional(c, hooks);
-    io::write_acoustic(out, obs);
+    io::write_acoustic(out, obs, ctx.formats.csv);
     CommandResult r;
     r.summary = io::acoustic_summary(obs);
     r.details = r.summary;
+    r.data = std::make_shared<const io::Dataset>(io::acoustic_dataset(obs));
     if (c.base.output.plots) r.plot_script = "plot_acoustic.py";
     return r;
   }

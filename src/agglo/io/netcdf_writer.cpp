@@ -1,0 +1,130 @@
+#include "agglo/io/netcdf_writer.hpp"
+
+#include <fmt/format.h>
+#include <netcdf.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+namespace agglo::io {
+
+namespace {
+
+// Throws, naming the file and the operation, unless a netCDF call returned NC_NOERR.
+struct Check {
+  const std::filesystem::path& file;
+  void operator()(int status, const std::string& what) const {
+    if (status != NC_NOERR)
+      throw std::runtime_error(fmt::format("cannot write {}: {}: {}", file.string(), what, nc_strerror(status)));
+  }
+};
+
+bool all_numbers(const nlohmann::json& a) {
+  if (!a.is_array() || a.empty()) return false;
+  for (const auto& v : a)
+    if (!v.is_number()) return false;
+  return true;
+}
+
+bool all_integers(const nlohmann::json& a) {
+  for (const auto& v : a)
+    if (!v.is_number_integer()) return false;
+  return true;
+}
+
+// One attribute of variable `var` (NC_GLOBAL for the file) from a JSON value.
+void put_attribute(const Check& ok, int nc, int var, const std::string& key, const nlohmann::json& v) {
+  const std::string what = fmt::format("attribute {}", key);
+  if (v.is_string()) {
+    const auto& s = v.get_ref<const std::string&>();
+    ok(nc_put_att_text(nc, var, key.c_str(), s.size(), s.c_str()), what);
+  } else if (v.is_boolean() || v.is_number_integer()) {
+    const long long x = v.is_boolean() ? (v.get<bool>() ? 1 : 0) : v.get<long long>();
+    ok(nc_put_att_longlong(nc, var, key.c_str(), NC_INT64, 1, &x), what);
+  } else if (v.is_number()) {
+    const double x = v.get<double>();
+    ok(nc_put_att_double(nc, var, key.c_str(), NC_DOUBLE, 1, &x), what);
+  } else if (all_numbers(v) && all_integers(v)) {
+    const auto x = v.get<std::vector<long long>>();
+    ok(nc_put_att_longlong(nc, var, key.c_str(), NC_INT64, x.size(), x.data()), what);
+  } else if (all_numbers(v)) {
+    const auto x = v.get<std::vector<double>>();
+    ok(nc_put_att_double(nc, var, key.c_str(), NC_DOUBLE, x.size(), x.data()), what);
+  } else {
+    put_attribute(ok, nc, var, key, nlohmann::json(v.dump()));
+  }
+}
+
+void put_attributes(const Check& ok, int nc, int var, const nlohmann::json& attrs) {
+  for (auto it = attrs.begin(); it != attrs.end(); ++it) put_attribute(ok, nc, var, it.key(), it.value());
+}
+
+// Defines the dimensions and variables with their attributes; returns the variable ids.
+std::vector<int> define(const Check& ok, int nc, const Dataset& d) {
+  std::vector<int> dim_ids;
+  for (const auto& [name, len] : d.dims) {
+    int id = 0;  // a dimension of length 0 becomes unlimited (NC_UNLIMITED == 0) and stays empty
+    ok(nc_def_dim(nc, name.c_str(), len, &id), fmt::format("dimension {}", name));
+    dim_ids.push_back(id);
+  }
+  std::vector<int> var_ids;
+  for (const auto& v : d.variables) {
+    std::vector<int> dims;
+    for (const auto& dn : v.dims)
+      for (std::size_t k = 0; k < d.dims.size(); ++k)
+        if (d.dims[k].first == dn) dims.push_back(dim_ids[k]);
+    int id = 0;
+    ok(nc_def_var(nc, v.name.c_str(), v.integer ? NC_INT64 : NC_DOUBLE, static_cast<int>(dims.size()), dims.data(),
+                  &id),
+       fmt::format("variable {}", v.name));
+    put_attribute(ok, nc, id, "units", v.units);
+    put_attribute(ok, nc, id, "long_name", v.long_name);
+    put_attributes(ok, nc, id, v.attributes);
+    var_ids.push_back(id);
+  }
+  put_attributes(ok, nc, NC_GLOBAL, d.attributes);
+  return var_ids;
+}
+
+void write_values(const Check& ok, int nc, const Dataset& d, const std::vector<int>& ids) {
+  for (std::size_t k = 0; k < d.variables.size(); ++k) {
+    const auto& v = d.variables[k];
+    if (v.size() == 0) continue;
+    const std::string what = fmt::format("values of {}", v.name);
+    if (v.integer) {
+      std::vector<long long> x(v.ints.begin(), v.ints.end());
+      ok(nc_put_var_longlong(nc, ids[k], x.data()), what);
+    } else {
+      ok(nc_put_var_double(nc, ids[k], v.reals.data()), what);
+    }
+  }
+}
+
+}  // namespace
+
+void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& name) {
+  const auto path = out.file(name);
+  auto tmp = path;
+  tmp += fmt::format(".tmp-{}", static_cast<long>(::getpid()));
+  const Check ok{path};
+  int nc = -1;
+  try {
+    ok(nc_create(tmp.c_str(), NC_NETCDF4 | NC_CLOBBER, &nc), "create");
+    const auto ids = define(ok, nc, d);
+    ok(nc_enddef(nc), "end of definitions");
+    write_values(ok, nc, d, ids);
+    const int status = nc_close(nc);
+    nc = -1;
+    ok(status, "close");
+  } catch (...) {
+    if (nc >= 0) nc_abort(nc);
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    throw;
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace agglo::io
