@@ -65,6 +65,7 @@ class Engine {
   void refresh_all();
 
  private:
+  friend class EngineCheckpoint;  // saves and restores the state below (checkpoint.hpp)
   void bin();
   void move_and_bin();   // motion over one collision step, state check, cells; advances the step counter
   void collide_cells();  // one collision step in every cell

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "agglo/acoustics/checkpoint.hpp"
 #include "agglo/acoustics/engine.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_acoustic.hpp"
@@ -160,11 +161,17 @@ class Observer {
  public:
   Observer(const AcousticCase& c, const Engine& eng, AcousticObservations& obs)
       : c_(c), eng_(eng), obs_(obs), V_(eng.settings().motion.domain.volume()) {
-    obs_.initial = count(eng.particles(), V_);
-    obs_.bins = PsdBins::log_spaced(c.output.psd_d_min, c.output.psd_d_max, c.output.psd_bins);
-    obs_.last_time_with_pure_droplets = obs_.initial.n_phase[1] > 0 ? 0.0 : -1.0;
     const double dt = eng.settings().collision_dt;
     every_ = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(c.output.efficiency_interval / dt)));
+  }
+
+  // The initial state: its counts, the PSD bins and the observations of step 0 (not on a resumed run,
+  // whose observations so far come from the checkpoint).
+  void start() {
+    obs_.initial = count(eng_.particles(), V_);
+    obs_.bins = PsdBins::log_spaced(c_.output.psd_d_min, c_.output.psd_d_max, c_.output.psd_bins);
+    obs_.last_time_with_pure_droplets = obs_.initial.n_phase[1] > 0 ? 0.0 : -1.0;
+    observe(0);
   }
 
   void observe(std::uint64_t s) {
@@ -256,18 +263,63 @@ void check_startup(const AcousticCase& c, const Engine& e) {
     throw ConfigError(subcycle_message(c, e, worst, pn));
 }
 
+namespace {
+// Writes the checkpoints of a run (RunHooks::checkpoint): when the simulated time crosses a multiple of
+// the interval, and on request (cancel, end) unless the state of that step was already written.
+class Checkpointer {
+ public:
+  Checkpointer(const RunHooks& h, const Engine& e, const AcousticObservations& o)
+      : h_(h), e_(e), o_(o), on_(h.checkpoint && h.checkpoint_interval > 0.0), period_(period(e.time())) {
+    if (h.resume) last_ = e.step_index();  // the file in place holds this step
+  }
+  void after_step() {
+    if (!on_ || period(e_.time()) <= period_) return;
+    period_ = period(e_.time());
+    write();
+  }
+  void now() {
+    if (on_ && last_ != e_.step_index()) write();
+  }
+
+ private:
+  // Index of the interval holding t (a relative 1e-9 absorbs the rounding of step * dt).
+  double period(double t) const { return on_ ? std::floor(t / h_.checkpoint_interval * (1.0 + 1e-9)) : 0.0; }
+  void write() {
+    io::CheckpointWriter w;
+    save_engine(e_, w);
+    save_observations(o_, w);
+    h_.checkpoint(e_.step_index(), e_.time(), w.bytes());
+    last_ = e_.step_index();
+  }
+  const RunHooks& h_;
+  const Engine& e_;
+  const AcousticObservations& o_;
+  bool on_;
+  double period_;
+  std::uint64_t last_ = std::numeric_limits<std::uint64_t>::max();
+};
+}  // namespace
+
 AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) {
   const auto wall0 = std::chrono::steady_clock::now();
   Engine eng(c.engine);
-  check_startup(c, eng);
   AcousticObservations obs;
-  obs.log = startup_log(c, eng, hooks);
   Observer observer(c, eng, obs);
+  if (hooks.resume) {  // continue from a checkpoint: the engine's state and the observations so far
+    load_engine(eng, *hooks.resume);
+    load_observations(obs, *hooks.resume);
+    hooks.resume->expect_end();
+  } else {
+    check_startup(c, eng);
+    obs.log = startup_log(c, eng, hooks);
+    observer.start();
+  }
+  Checkpointer checkpoints(hooks, eng, obs);
   const std::uint64_t nsteps = eng.total_steps();
-  observer.observe(0);
-  for (std::uint64_t s = 1; s <= nsteps; ++s) {
+  for (std::uint64_t s = eng.step_index() + 1; s <= nsteps; ++s) {
     eng.step();
     observer.observe(s);
+    checkpoints.after_step();
     if ((s & 63) != 0) continue;
     if (hooks.progress) hooks.progress(static_cast<double>(s) / static_cast<double>(nsteps), eng.time());
     if (hooks.cancelled && hooks.cancelled()) {
@@ -276,6 +328,7 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
       break;
     }
   }
+  checkpoints.now();  // the state at the interruption or at the end
   obs.final = count(eng.particles(), eng.settings().motion.domain.volume());
   obs.samples = eng.particles().size();
   if (obs.interrupted.empty()) obs.steps = nsteps;

@@ -15,6 +15,10 @@
 #include "agglo/acoustics/case_config.hpp"
 #include "agglo/acoustics/diagnostics.hpp"
 
+namespace agglo::io {
+class CheckpointReader;
+}
+
 namespace agglo::acoustics {
 
 struct EfficiencyRow {
@@ -57,6 +61,13 @@ struct RunHooks {
   std::function<void(double fraction, double sim_time_s)> progress;  // may be empty
   std::function<void(const std::string&)> warning;                   // may be empty
   std::function<bool()> cancelled;                                    // may be empty; true stops the run
+  // Checkpoints (checkpoint.hpp, docs/restart.md): `checkpoint` receives the step, the simulated time [s]
+  // and the payload each time the simulated time crosses a multiple of checkpoint_interval [s], when the
+  // run is cancelled (before it returns) and at its end. None when empty or the interval is 0.
+  double checkpoint_interval = 0.0;
+  std::function<void(std::uint64_t step, double t, const std::string& payload)> checkpoint;
+  // Continue from this payload (io::read_checkpoint) instead of t = 0; null = from the start.
+  io::CheckpointReader* resume = nullptr;
 };
 
 // Runs the case; throws ConfigError for start-up conditions the settings cannot meet (explicit

@@ -76,26 +76,6 @@ void sync_dir(const std::filesystem::path& dir) {
 
 }  // namespace
 
-std::string CheckpointReader::str() {
-  const auto n = u64();
-  need(n, n);
-  std::string s = bytes_.substr(at_, n);
-  at_ += n;
-  return s;
-}
-
-void CheckpointReader::need(std::size_t n, std::uint64_t count) const {
-  if (count > bytes_.size() || n > bytes_.size() - at_)
-    throw ConfigError(fmt::format("checkpoint {}: truncated payload (needs {} more bytes at offset {} of {})", file_,
-                                  n, at_, bytes_.size()));
-}
-
-void CheckpointReader::expect_end() const {
-  if (!at_end())
-    throw ConfigError(fmt::format("checkpoint {}: {} unread bytes at the end of its payload (written by another "
-                                  "layout)", file_, bytes_.size() - at_));
-}
-
 std::string config_hash(const std::string& resolved_toml) {
   return fmt::format("{:016x}", fnv1a(resolved_toml.data(), resolved_toml.size()));
 }

@@ -18,6 +18,9 @@
 #include <type_traits>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "agglo/core/error.hpp"
 #include "agglo/io/output_dir.hpp"
 
 namespace agglo::io {
@@ -56,6 +59,7 @@ class CheckpointWriter {
 };
 
 // Reads values back in the order they were written; ConfigError naming the file on running past the end.
+// Writer and reader are header-only, so that engines below io (acoustics, dem) can serialise their state.
 class CheckpointReader {
  public:
   CheckpointReader(std::string bytes, std::string file) : bytes_(std::move(bytes)), file_(std::move(file)) {}
@@ -63,7 +67,13 @@ class CheckpointReader {
   std::int64_t i64() { return get<std::int64_t>(); }
   double f64() { return get<double>(); }
   bool boolean() { return u64() != 0; }
-  std::string str();
+  std::string str() {
+    const auto n = u64();
+    need(n, n);
+    std::string s = bytes_.substr(at_, n);
+    at_ += n;
+    return s;
+  }
   template <class T>
   std::vector<T> pod_vector() {
     static_assert(std::is_trivially_copyable_v<T>);
@@ -80,7 +90,11 @@ class CheckpointReader {
   }
   bool at_end() const { return at_ == bytes_.size(); }
   // ConfigError unless every byte was read (a payload the reader does not fully understand).
-  void expect_end() const;
+  void expect_end() const {
+    if (!at_end())
+      throw ConfigError(fmt::format("checkpoint {}: {} unread bytes at the end of its payload (written by another "
+                                    "layout)", file_, bytes_.size() - at_));
+  }
   const std::string& file() const { return file_; }
 
  private:
@@ -93,7 +107,11 @@ class CheckpointReader {
     at_ += sizeof(T);
     return v;
   }
-  void need(std::size_t n, std::uint64_t count) const;
+  void need(std::size_t n, std::uint64_t count) const {
+    if (count > bytes_.size() || n > bytes_.size() - at_)
+      throw ConfigError(fmt::format("checkpoint {}: truncated payload (needs {} more bytes at offset {} of {})", file_,
+                                    n, at_, bytes_.size()));
+  }
   std::string bytes_;
   std::string file_;
   std::size_t at_ = 0;
