@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# agglo collide --checkpoint / --resume (docs/restart.md): a run killed by the fault hook in the middle
+# agglo collide --checkpoint / --resume (docs/restart_collide.md): a run killed by the fault hook in the middle
 # of its N-th checkpoint write (several N), interrupted by SIGINT, or stopped after it finished, and
 # then resumed, leaves every output byte-identical to the uninterrupted run (run.json aside; result.json
 # without its wall-time field), including the final checkpoint.bin; neutral and charged (kappa_p = 15,
@@ -52,7 +52,8 @@ check_case() {  # check_case TAG CASE INTERVAL KILLS [settings...]
     [ $rc -eq 137 ] || fail "$tag: the fault hook must kill checkpoint write $n (exit $rc)"
     ls "$d"/checkpoint.bin.tmp-* > /dev/null 2>&1 || fail "$tag: no half-written checkpoint after kill $n"
     if [ "$n" -gt 1 ]; then [ -f "$d/checkpoint.bin" ] || fail "$tag: kill $n lost the previous checkpoint"; fi
-    collide "$case" --out "$d" --threads 2 --checkpoint "$iv" --resume "$@" || fail "$tag: resume after kill $n: $(cat "$T/stderr")"
+    collide "$case" --out "$d" --threads 2 --checkpoint "$iv" --resume "$@" ||
+      fail "$tag: resume after kill $n: $(cat "$T/stderr")"
     same "$ref" "$d"
   done
   # resuming a finished run changes nothing
@@ -68,17 +69,26 @@ check_case() {  # check_case TAG CASE INTERVAL KILLS [settings...]
 check_case neutral "$NT" 5e-5 "1 2 4" "${NS[@]}"
 check_case charged "$CH" 2e-5 "2 3" "${CS[@]}"
 
-# SIGINT at an arbitrary step: exit 130, a checkpoint of that step, resumed identical
-LONG=(--set time.after_contact=0.1 --set time.early_stop=false --set output.snapshot_interval=1e-2
-      --set output.timeseries_interval=2e-5)
+# SIGINT at an arbitrary step (soon after the first checkpoint of a run of a few seconds): exit 130, a
+# checkpoint of that step, resumed identical
+LONG=(--set time.after_contact=0.5 --set time.early_stop=false --set output.snapshot_interval=5e-2
+      --set output.timeseries_interval=1e-4)
 collide "$NT" --out "$T/long-ref" --threads 2 --checkpoint 1e-2 "${LONG[@]}" || fail "long run"
 $A -q --no-plots collide "$NT" --out "$T/long" --threads 1 --checkpoint 1e-2 "${LONG[@]}" > /dev/null 2>&1 &
 pid=$!
-for _ in $(seq 1 200); do [ -f "$T/long/run.json" ] && break; sleep 0.05; done
-sleep 1
+for _ in $(seq 1 400); do [ -f "$T/long/checkpoint.bin" ] && break; sleep 0.02; done
 kill -INT $pid; wait $pid; rc=$?
 [ $rc -eq 130 ] || fail "SIGINT must give exit 130, got $rc (the run may have ended first)"
-[ -f "$T/long/checkpoint.bin" ] || fail "no checkpoint written at the interruption"
+# the checkpoint's simulated time (header: magic, format, 4 strings, step, time) is off the interval grid
+/usr/bin/python3 - "$T/long/checkpoint.bin" <<'PY' || fail "no checkpoint written at the interruption"
+import struct, sys
+b = open(sys.argv[1], "rb").read()
+at = 12
+for _ in range(4):
+    at += 8 + struct.unpack_from("<Q", b, at)[0]
+step, t = struct.unpack_from("<Qd", b, at)
+sys.exit(0 if step > 0 and (t / 1e-2) % 1.0 > 1e-4 else 1)
+PY
 collide "$NT" --out "$T/long" --threads 2 --checkpoint 1e-2 --resume "${LONG[@]}" || fail "resume after SIGINT"
 same "$T/long-ref" "$T/long"
 echo "restart_collide: OK"

@@ -2,7 +2,8 @@
 // state loads and saves to the same bytes, and a run stopped after k steps, saved, loaded into a fresh
 // run and continued ends in exactly the state (payload bytes) and records (rows, snapshots) of the
 // uninterrupted run, for k in the approach, just after the first contact forms, just after an
-// electrostatic solve and at the end; neutral and charged (kappa_p = 15, spectral solver).
+// electrostatic solve and at the end; neutral and charged (kappa_p = 15, spectral solver, pair-corrected
+// hold). The solvers' warm starts alone: tests/electrostatics/test_warm_start.cpp.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -162,7 +163,8 @@ TEST(ImpactCheckpoint, NeutralRestartIsExact) {
 TEST(ImpactCheckpoint, ChargedRestartIsExact) {
   check_case(load_case("seed000_charged_tetrahedron_k15", {"time.after_contact=2e-5", "output.snapshot_interval=1e-5",
                                                            "projectile.gap_radii=0.3", "time.relax_time=2e-5",
-                                                           "electrostatics.target_accuracy=1e-2"}),
+                                                           "electrostatics.target_accuracy=1e-2",
+                                                           "electrostatics.hold=pair_corrected"}),
              true);
 }
 
