@@ -8,6 +8,7 @@
 
 #include "agglo/dem/contact_law.hpp"
 #include "agglo/dem/contact_params.hpp"
+#include "agglo/dem/dem_state.hpp"
 #include "agglo/dem/external_force.hpp"
 #include "agglo/dem/neighbor_list.hpp"
 #include "agglo/dem/particles.hpp"
@@ -80,6 +81,11 @@ class DemSystem {
   // Compute forces for the current state without advancing (first call of step() does it).
   void compute_forces();
   JkrPair jkr_for(std::uint32_t i, std::uint32_t j) const;
+
+  // The complete state between two steps (dem_state.hpp) and its restoration into a system built
+  // from the same case (same contact law and external force object); defined in dem_state.cpp.
+  DemState state() const;
+  void restore(const DemState& s);
 
  private:
   Particles p_;

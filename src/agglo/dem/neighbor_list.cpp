@@ -79,8 +79,10 @@ void NeighborList::build(const std::vector<Vec3>& x, const std::vector<double>& 
     }
   }
   pairs_.swap(fresh);
+  index(n);
+}
 
-  // CSR adjacency.
+void NeighborList::index(std::size_t n) {
   offset_.assign(n + 1, 0);
   for (const auto& p : pairs_) {
     ++offset_[p.i + 1];

@@ -12,6 +12,8 @@
 
 namespace agglo::dem {
 
+struct NeighborState;
+
 struct Pair {
   std::uint32_t i = 0, j = 0;
   ContactState state;
@@ -34,7 +36,12 @@ class NeighborList {
   const std::vector<std::int64_t>& entries() const { return index_; }
   long builds() const { return builds_; }
 
+  // Checkpoint state (the adjacency is rebuilt from the pairs); defined in dem_state.cpp.
+  NeighborState state() const;
+  void restore(const NeighborState& s, std::size_t n_particles);
+
  private:
+  void index(std::size_t n);  // CSR adjacency of pairs_ for n particles
   std::vector<Pair> pairs_;
   std::vector<Vec3> x_at_build_;
   std::vector<std::int64_t> offset_, index_;

@@ -55,6 +55,14 @@ struct SurfaceSample {
   int body = 0;
 };
 
+// What a solver keeps from one solve for the next (its warm start), as opaque numbers for
+// checkpoints: restoring it into a solver of the same options makes the next solve bitwise identical
+// to the one of the solver it was taken from.
+struct WarmStart {
+  std::vector<long long> ints;
+  std::vector<double> values;
+};
+
 class Solver {
  public:
   virtual ~Solver() = default;
@@ -66,6 +74,9 @@ class Solver {
   // Optional triangulation of surface(): vertex triples indexing the samples (counter-clockwise
   // seen from outside). Empty when the samples are a point cloud.
   virtual std::vector<std::array<int, 3>> surface_triangles() const { return {}; }
+  // The warm start of the next solve (none by default: a solver without one is stateless).
+  virtual WarmStart warm_start() const { return {}; }
+  virtual void set_warm_start(const WarmStart&) {}
 };
 
 // Every field is a solver setting. The defaulted comparison covers all fields, present and future

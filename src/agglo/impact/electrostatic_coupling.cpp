@@ -13,6 +13,12 @@ namespace agglo::impact {
 
 ElectrostaticForce::ElectrostaticForce(const CouplingSettings& s) : s_(s), solver_(es::make_solver(s.es.options)) {}
 
+void ElectrostaticForce::make_fast_path() {
+  es::SolverOptions o = s_.es.options;
+  o.solver = "coulomb";
+  coulomb_ = es::make_solver(o);
+}
+
 bool ElectrostaticForce::needs_solve(const dem::Particles& p, long step) const {
   if (x_at_solve_.size() != p.size() || step_at_solve_ < 0) return true;
   if (s_.es.update_interval > 0 && step - step_at_solve_ >= s_.es.update_interval) return true;
@@ -52,11 +58,7 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
   auto t0 = std::chrono::steady_clock::now();
   bool uniform = true;
   for (double k : kappa) uniform = uniform && k == s_.es.medium_permittivity;
-  if (uniform && !coulomb_) {
-    es::SolverOptions o = s_.es.options;
-    o.solver = "coulomb";
-    coulomb_ = es::make_solver(o);
-  }
+  if (uniform && !coulomb_) make_fast_path();
   es::Solution sub;
   if (!prob.spheres.empty()) sub = uniform ? coulomb_->solve(prob) : solver_->solve(prob);
   last_ = sub;

@@ -18,6 +18,7 @@
 #include <map>
 #include <memory>
 
+#include "agglo/impact/coupling_state.hpp"
 #include "agglo/impact/pair_table.hpp"
 #include "agglo/dem/external_force.hpp"
 #include "agglo/electrostatics/config.hpp"
@@ -40,12 +41,16 @@ class ElectrostaticForce : public dem::ExternalForce {
   bool used_fast_path() const { return coulomb_ != nullptr; }
   double seconds() const { return seconds_; }
   const es::Solution& last() const { return last_; }
+  // Checkpoint state (coupling_state.hpp); restore() into a coupling of the same settings.
+  CouplingState state() const;
+  void restore(const CouplingState& s);
 
  private:
   bool needs_solve(const dem::Particles& p, long step) const;
   void solve(const dem::Particles& p, long step);
   // Isolated-pair force on j (along i->j, > 0 repulsive) and energy of every pair at the current state.
   void pair_terms(const dem::Particles& p, std::vector<double>& f, std::vector<double>& u, std::vector<Vec3>& n);
+  void make_fast_path();  // the exact point-charge solver (coulomb_)
   const PairTable& table_for(const dem::Particles& p, std::size_t i, std::size_t j);
 
   CouplingSettings s_;

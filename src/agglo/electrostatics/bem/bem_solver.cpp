@@ -41,6 +41,11 @@ class BemSolver final : public Solver {
     }
     return tri;
   }
+  WarmStart warm_start() const override { return {{static_cast<long long>(warm_spheres_)}, warm_}; }
+  void set_warm_start(const WarmStart& w) override {
+    warm_spheres_ = static_cast<std::size_t>(w.ints.at(0));
+    warm_ = w.values;
+  }
 
  private:
   std::vector<double> solve_bound_charge(bem::BemOperator& A, const std::vector<double>& rhs,

@@ -36,6 +36,12 @@ class SpectralSolver final : public Solver {
   Solution solve(const Problem& p) override;
   std::vector<SurfaceSample> surface() const override;
   std::vector<std::array<int, 3>> surface_triangles() const override;
+  WarmStart warm_start() const override { return {{prev_L_, prev_N_}, prev_beta_}; }
+  void set_warm_start(const WarmStart& w) override {
+    prev_L_ = static_cast<int>(w.ints.at(0));
+    prev_N_ = static_cast<int>(w.ints.at(1));
+    prev_beta_ = w.values;
+  }
 
  private:
   struct Pair {

@@ -3,11 +3,14 @@
 
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_impact.hpp"
+#include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/estimate.hpp"
 #include "agglo/impact/experiment.hpp"
+#include "agglo/impact/impact_run.hpp"
 #include "agglo/io/impact_dataset.hpp"
 #include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
+#include "agglo/run/commands/collide_checkpoint.hpp"
 #include "agglo/run/commands/impact_command.hpp"
 
 namespace agglo::run {
@@ -21,6 +24,7 @@ class Collide final : public ImpactCommand {
     return {{"-v,--speed", &settings::impact_settings().projectile.speed}};
   }
   std::string_view help() const override { return "One particle-agglomerate collision (DEM, optional electrostatics)"; }
+  bool restartable() const override { return true; }
 
   Estimate estimate(Config& cfg, const RunContext&) const override {
     return impact::collide_estimate(impact_case(cfg));
@@ -29,13 +33,18 @@ class Collide final : public ImpactCommand {
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const auto c = impact_case(cfg);
     impact::Recorder rec;
-    auto progress = [&](double f, double t) {
-      throw_if_cancelled(ctx.cancel);
-      ctx.report().progress("collide", f, t);
-    };
+    // Cancellation is seen at step boundaries (checkpoints.at_boundary), where the state is complete.
+    auto progress = [&](double f, double t) { ctx.report().progress("collide", f, t); };
+    CollideCheckpoints checkpoints(cfg, out, ctx);
+    const auto resumed = checkpoints.resume_state();
     impact::ImpactOutcome res;
     try {
-      res = impact::run_impact(c, c.projectile.speed, &rec, progress);
+      // A resumed run replaces the launch state, so the (possibly long) relaxation is skipped.
+      impact::ImpactRun run(c, resumed ? impact::build_agglomerate(c) : impact::relaxed_agglomerate(c),
+                            c.projectile.speed, &rec, progress);
+      if (resumed) run.restore(*resumed);
+      res = run.run([&](const impact::ImpactRun& r) { checkpoints.at_boundary(r); });
+      checkpoints.at_end(run);
     } catch (const InterruptedError&) {  // flush the history so far; run.json marks the run incomplete
       if (ctx.formats.csv) io::write_timeseries(out, rec);
       if (ctx.formats.csv) io::write_snapshots(out, rec);

@@ -1,0 +1,230 @@
+// One collision run in phases (impact_run.hpp).
+#include "agglo/impact/impact_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "agglo/core/constants.hpp"
+#include "agglo/impact/agglomerate.hpp"
+#include "agglo/impact/electrostatic_coupling.hpp"
+
+namespace agglo::impact {
+
+namespace {
+
+// Energy watchdog bound (docs/dem.md, "Limits and checks"): kinetic + electrostatic energy may exceed
+// its launch value by at most half the launch energy scale plus kJkrReleasePerParticle F_C delta_C
+// per particle, the most the JKR contacts can release (about 1.5 F_C delta_C per broken contact, at
+// most 6 contacts per particle) with margin. Any larger rise is energy made by the integrator.
+constexpr double kJkrReleasePerParticle = 10.0;
+
+io::ParticleSnapshot snapshot(const dem::DemSystem& sys) {
+  const auto& p = sys.particles();
+  return io::ParticleSnapshot{p.x, p.v, p.w, p.r, p.q, sys.contacts_per_particle()};
+}
+
+// Broken, every fragment escaping, and every fragment's surfaces at least `min_gap` from the rest
+// (beyond adhesive reach; its kinetic energy already exceeds its electrostatic binding).
+bool clearly_broken(const dem::DemSystem& sys, std::size_t n_agg, double kappa0, double min_gap) {
+  auto cl = classify(sys, n_agg, kappa0);
+  if (!cl.broken) return false;
+  const auto& p = sys.particles();
+  for (const auto& f : cl.fragments) {
+    std::vector<char> in(p.size(), 0);
+    for (int k : f.members) in[k] = 1;
+    for (std::size_t a = 0; a < p.size(); ++a)
+      for (std::size_t b = 0; b < p.size(); ++b)
+        if (in[a] && !in[b] && norm(p.x[a] - p.x[b]) - p.r[a] - p.r[b] < min_gap) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double speed, Recorder* rec,
+                     ProgressFn progress)
+    : c_(c), speed_(speed), sys_(std::move(agglomerate), c.dem), n_agg_(sys_.particles().size()), rec_(rec),
+      progress_(std::move(progress)) {
+  if (c.electrostatics) {
+    es_ = make_electrostatic_force(c);
+    sys_.set_external_force(es_.get());
+  }
+  const double rp = c.agglomerate.radius;
+  const double sigma = c.agglomerate.charge_density;
+  u0_ = 2.0 * constants::pi * rp * rp * rp * sigma * sigma / constants::eps0;
+  kappa0_ = es_ ? c.medium_permittivity : 1.0;
+  const double gap = c.projectile.gap_radii * rp;
+  max_approach_ = c.time.max_approach > 0.0 ? c.time.max_approach : 5.0 * (gap + rp) / std::max(speed, 1e-3) + 1e-4;
+  at_.t_launch = sys_.time();
+  dem::Particles tmp = sys_.particles();
+  add_projectile(tmp, c, speed);
+  sys_.add_particle(tmp.x.back(), tmp.r.back(), c.agglomerate.density, tmp.v.back(), tmp.q.back(), tmp.kappa.back());
+}
+
+ImpactRun::~ImpactRun() = default;
+
+ImpactOutcome ImpactRun::run(const BoundaryFn& boundary) {
+  try {
+    if (at_.phase == ImpactPhase::launch) launch();
+    if (boundary) boundary(*this);
+    while (at_.phase != ImpactPhase::done) {
+      advance();
+      if (boundary) boundary(*this);
+    }
+  } catch (const dem::DemInstability& e) {
+    rethrow_with_cause(e);
+  }
+  return outcome();
+}
+
+void ImpactRun::launch() {
+  sys_.compute_forces();  // contacts and electrostatic energy of the launch state
+  arm_watchdog();
+  record();
+  at_.phase = ImpactPhase::approach;
+}
+
+void ImpactRun::advance() {
+  if (at_.phase == ImpactPhase::approach) approach_step();
+  else if (at_.phase == ImpactPhase::contact) contact_step();
+}
+
+// One step of the approach (until the projectile, the last particle, is in contact; no contact if
+// max_approach passes first).
+void ImpactRun::approach_step() {
+  if (!(since_launch() < max_approach_)) return end_approach(false);
+  step();
+  if (progress_ && sys_.steps() % 2000 == 0) progress_(0.0, since_launch());
+  if (projectile_touches()) end_approach(true);
+}
+
+void ImpactRun::end_approach(bool touched) {
+  guard();
+  at_.contact = touched;
+  at_.t_contact = since_launch();
+  if (!touched) {
+    at_.phase = ImpactPhase::done;
+    return;
+  }
+  at_.phase = ImpactPhase::contact;
+  at_.extensions = 0;
+  at_.t_from = sys_.time();
+  at_.t_stop = sys_.time() + c_.time.after_contact;
+}
+
+// One step of a contact segment (after_contact, then each extension); the segment ends at t_stop or
+// early when the agglomerate is clearly broken.
+void ImpactRun::contact_step() {
+  if (!(sys_.time() < at_.t_stop)) return end_segment(false);
+  step();
+  if (progress_ && sys_.steps() % 2000 == 0)
+    progress_((sys_.time() - at_.t_from) / (at_.t_stop - at_.t_from), since_launch());
+  const double min_gap = c_.time.early_stop_gap * c_.agglomerate.radius;
+  if (c_.time.early_stop && sys_.steps() % 500 == 0 && clearly_broken(sys_, n_agg_, kappa0_, min_gap))
+    end_segment(true);
+}
+
+// Classifies the end of a segment: done unless undecided with extensions left.
+void ImpactRun::end_segment(bool early) {
+  at_.early_stop = early;
+  guard();
+  const auto cl = classify(sys_, n_agg_, kappa0_);
+  if (!cl.undecided || at_.extensions >= c_.time.max_extensions) {
+    at_.phase = ImpactPhase::done;
+    guard();
+    return;
+  }
+  ++at_.extensions;
+  at_.t_from = sys_.time();
+  at_.t_stop += c_.time.extension;
+}
+
+ImpactOutcome ImpactRun::outcome() const {
+  ImpactOutcome out;
+  out.speed = speed_;
+  out.dt = sys_.dt();
+  out.contact = at_.contact;
+  out.t_contact = at_.t_contact;
+  if (at_.contact) {
+    const auto cl = classify(sys_, n_agg_, kappa0_);
+    out.broken = cl.broken;
+    out.undecided = cl.undecided;
+    out.components = cl.components;
+    out.fragments = cl.fragments;
+    out.extensions = at_.extensions;
+    out.early_stop = at_.early_stop;
+  }
+  out.t_end = since_launch();
+  if (auto* ef = dynamic_cast<ElectrostaticForce*>(es_.get())) {
+    out.es_solves = ef->solves();
+    out.es_seconds = ef->seconds();
+  }
+  out.steps = sys_.steps();
+  return out;
+}
+
+void ImpactRun::step() {
+  sys_.step();
+  if (sys_.steps() % 256 == 0) check_energy();
+  record();
+}
+
+// The state is finite and sane and the energy has not risen beyond the watchdog bound.
+void ImpactRun::guard() const {
+  sys_.check_state();
+  check_energy();
+}
+
+double ImpactRun::watched_energy() const { return sys_.kinetic_energy() + sys_.external_energy(); }
+
+void ImpactRun::arm_watchdog() {
+  const auto& p = sys_.particles();
+  const std::size_t big = static_cast<std::size_t>(std::max_element(p.r.begin(), p.r.end()) - p.r.begin());
+  const auto jkr = sys_.jkr_for(static_cast<std::uint32_t>(big), static_cast<std::uint32_t>(big));
+  at_.e_launch = watched_energy();
+  at_.e_allowed = 0.5 * (sys_.kinetic_energy() + std::abs(sys_.external_energy())) +
+               kJkrReleasePerParticle * jkr.Fc * jkr.deltaC * static_cast<double>(p.size());
+}
+
+void ImpactRun::check_energy() const {
+  const double e = watched_energy();
+  if (e <= at_.e_launch + at_.e_allowed) return;
+  const auto& p = sys_.particles();
+  std::size_t fast = 0;
+  for (std::size_t q = 1; q < p.size(); ++q)
+    if (!(norm2(p.v[q]) <= norm2(p.v[fast]))) fast = q;
+  throw dem::DemInstability(fmt::format("DEM: energy rise at step {} (t = {:.6g} s): kinetic + electrostatic "
+                                        "energy {:.3g} J exceeds its launch value {:.3g} J by more than {:.3g} J "
+                                        "(fastest particle {}, |v| = {:.3g} m/s)",
+                                        sys_.steps(), sys_.time(), e, at_.e_launch, at_.e_allowed, fast,
+                                        norm(p.v[fast])));
+}
+
+bool ImpactRun::projectile_touches() const {
+  for (const auto& pr : sys_.pairs())
+    if (pr.state.active && (pr.i == n_agg_ || pr.j == n_agg_)) return true;
+  return false;
+}
+
+void ImpactRun::record() {
+  if (!rec_) return;
+  const double t = since_launch();
+  const bool row_due = t + 1e-15 >= at_.next_row;
+  const bool snap_due = c_.output.snapshot_interval > 0.0 && t + 1e-15 >= at_.next_snap;
+  if (row_due || snap_due) guard();
+  if (row_due) {
+    const double ues = sys_.external_energy();
+    rec_->rows.push_back({t, sys_.kinetic_energy(), ues, u0_ > 0 ? ues / u0_ : 0.0,
+                          radius_of_gyration(sys_.particles()), radius_of_gyration(sys_.particles(), n_agg_),
+                          sys_.active_contacts()});
+    at_.next_row += c_.output.timeseries_interval;
+  }
+  if (snap_due) {
+    rec_->snapshots.emplace_back(t, snapshot(sys_));
+    at_.next_snap += c_.output.snapshot_interval;
+  }
+}
+
+}  // namespace agglo::impact

@@ -1,0 +1,68 @@
+#pragma once
+// One collision run as an object (docs/model.md §A.3), in phases: launch (constructor), approach
+// until the projectile first touches, contact phase (after_contact, extended while the outcome is
+// undecided), classification. run_impact() (experiment.hpp) runs one to the end; a restartable
+// caller (agglo collide --checkpoint) asks for state() at step boundaries and restores a saved one
+// into a fresh run of the same case before run(). Every step is recorded on the output clock.
+#include <functional>
+#include <memory>
+
+#include "agglo/impact/impact_state.hpp"
+
+namespace agglo::impact {
+
+class ImpactRun;
+// Called after the launch and after every step, where state() is complete; may throw to stop.
+using BoundaryFn = std::function<void(const ImpactRun&)>;
+
+class ImpactRun {
+ public:
+  // The launch: `agglomerate` (relaxed or as built) plus the projectile at `speed` [m/s].
+  ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double speed, Recorder* rec, ProgressFn progress = {});
+  ~ImpactRun();
+  ImpactRun(const ImpactRun&) = delete;
+  ImpactRun& operator=(const ImpactRun&) = delete;
+
+  // Replaces the launch state by `s`, a state() of a run of the same case.
+  void restore(const ImpactState& s);
+  ImpactState state() const;
+  // Integrates to the classification (continuing a restored state) and returns the outcome.
+  ImpactOutcome run(const BoundaryFn& boundary = {});
+
+  double since_launch() const { return sys_.time() - at_.t_launch; }
+  long steps() const { return sys_.steps(); }
+  bool finished() const { return at_.phase == ImpactPhase::done; }
+
+ private:
+  void launch();
+  void advance();
+  void approach_step();
+  void end_approach(bool touched);
+  void contact_step();
+  void end_segment(bool early);
+  ImpactOutcome outcome() const;
+  void step();
+  void guard() const;
+  double watched_energy() const;
+  void arm_watchdog();
+  void check_energy() const;
+  bool projectile_touches() const;
+  void record();
+
+  const ImpactCase& c_;
+  double speed_;  // launch speed of the projectile [m/s]
+  dem::DemSystem sys_;
+  std::size_t n_agg_;  // the projectile is particle n_agg_
+  Recorder* rec_;
+  ProgressFn progress_;
+  std::unique_ptr<dem::ExternalForce> es_;
+  double u0_ = 0.0;      // U0 = 2 pi r_p^3 sigma_f^2 / eps0 [J]
+  double kappa0_ = 1.0;  // medium permittivity of the point-charge binding
+  double max_approach_ = 0.0;  // longest approach [s]
+  ImpactProgress at_;  // phase, segment, output clocks, watchdog
+};
+
+// Adds the likely input cause to a DEM blow-up message (experiment.cpp).
+[[noreturn]] void rethrow_with_cause(const dem::DemInstability& e);
+
+}  // namespace agglo::impact

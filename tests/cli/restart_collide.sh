@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# agglo collide --checkpoint / --resume (docs/restart_collide.md): a run killed by the fault hook in the middle
+# of its N-th checkpoint write (several N), interrupted by SIGINT, or stopped after it finished, and
+# then resumed, leaves every output byte-identical to the uninterrupted run (run.json aside; result.json
+# without its wall-time field), including the final checkpoint.bin; neutral and charged (kappa_p = 15,
+# spectral), at 1 and 2 threads. A checkpoint of another config is refused with exit 2 and one line.
+set -u
+A=$1; SRC=$2
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+NT=$SRC/cases/seed000_neutral_tetrahedron.toml
+CH=$SRC/cases/seed000_charged_tetrahedron_k15.toml
+NS=(--set time.after_contact=2e-4 --set output.snapshot_interval=5e-5)
+CS=(--set time.after_contact=4e-5 --set output.snapshot_interval=2e-5 --set projectile.gap_radii=0.3)
+
+# same DIR_A DIR_B: the same files with the same bytes (run.json aside; result.json without *seconds*)
+same() {
+  local a=$1 b=$2 f
+  (cd "$a" && find . -type f ! -name run.json | sort) > "$T/list_a"
+  (cd "$b" && find . -type f ! -name run.json | sort) > "$T/list_b"
+  cmp -s "$T/list_a" "$T/list_b" || fail "$a and $b hold different files: $(diff "$T/list_a" "$T/list_b" | tr '\n' ' ')"
+  grep -qx ./checkpoint.bin "$T/list_a" || fail "$a has no final checkpoint.bin"
+  while read -r f; do
+    if [ "$f" = ./result.json ]; then
+      /usr/bin/python3 - "$a/$f" "$b/$f" <<'PY' || fail "result.json differs ($a vs $b)"
+import json, sys
+strip = lambda d: {k: v for k, v in d.items() if "seconds" not in k}
+a, b = (strip(json.load(open(p))) for p in sys.argv[1:3])
+sys.exit(0 if a == b else 1)
+PY
+    else
+      cmp -s "$a/$f" "$b/$f" || fail "$f differs ($a vs $b)"
+    fi
+  done < "$T/list_a"
+}
+
+collide() { $A -q --no-plots collide "$@" > "$T/stdout" 2> "$T/stderr"; }
+# the same without the shell's report of the fault hook's SIGKILL
+collide_quiet() { { collide "$@"; } 2> /dev/null; }
+
+check_case() {  # check_case TAG CASE INTERVAL KILLS [settings...]
+  local tag=$1 case=$2 iv=$3 kills=$4; shift 4
+  local ref=$T/$tag-ref
+  collide "$case" --out "$ref" --threads 2 --checkpoint "$iv" "$@" || fail "$tag: uninterrupted run: $(cat "$T/stderr")"
+  collide "$case" --out "$T/$tag-plain" --threads 2 "$@" || fail "$tag: run without checkpoints"
+  cp "$ref/checkpoint.bin" "$T/$tag-plain/" && same "$ref" "$T/$tag-plain"  # checkpoints change no output
+  local n rc
+  for n in $kills; do
+    local d=$T/$tag-kill$n
+    AGGLO_FAULT_KILL_CHECKPOINT=$n collide_quiet "$case" --out "$d" --threads 1 --checkpoint "$iv" "$@"; rc=$?
+    [ $rc -eq 137 ] || fail "$tag: the fault hook must kill checkpoint write $n (exit $rc)"
+    ls "$d"/checkpoint.bin.tmp-* > /dev/null 2>&1 || fail "$tag: no half-written checkpoint after kill $n"
+    if [ "$n" -gt 1 ]; then [ -f "$d/checkpoint.bin" ] || fail "$tag: kill $n lost the previous checkpoint"; fi
+    collide "$case" --out "$d" --threads 2 --checkpoint "$iv" --resume "$@" ||
+      fail "$tag: resume after kill $n: $(cat "$T/stderr")"
+    same "$ref" "$d"
+  done
+  # resuming a finished run changes nothing
+  collide "$case" --out "$ref" --threads 1 --checkpoint "$iv" --resume "$@" || fail "$tag: resume of a finished run"
+  same "$ref" "$T/$tag-kill${kills##* }"
+  # another config: refused, one line, exit 2
+  collide "$case" --out "$ref" --checkpoint "$iv" --resume "$@" --set material.friction=0.25; rc=$?
+  [ $rc -eq 2 ] || fail "$tag: resume with another config must exit 2, got $rc"
+  [ "$(wc -l < "$T/stderr")" -eq 1 ] || fail "$tag: the refusal must be one line: $(cat "$T/stderr")"
+  grep -q "config hash" "$T/stderr" || fail "$tag: the refusal must name the config hash: $(cat "$T/stderr")"
+}
+
+check_case neutral "$NT" 5e-5 "1 2 4" "${NS[@]}"
+check_case charged "$CH" 2e-5 "2 3" "${CS[@]}"
+
+# SIGINT at an arbitrary step (soon after the first checkpoint of a run of a few seconds): exit 130, a
+# checkpoint of that step, resumed identical
+LONG=(--set time.after_contact=0.5 --set time.early_stop=false --set output.snapshot_interval=5e-2
+      --set output.timeseries_interval=1e-4)
+collide "$NT" --out "$T/long-ref" --threads 2 --checkpoint 1e-2 "${LONG[@]}" || fail "long run"
+$A -q --no-plots collide "$NT" --out "$T/long" --threads 1 --checkpoint 1e-2 "${LONG[@]}" > /dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1 400); do [ -f "$T/long/checkpoint.bin" ] && break; sleep 0.02; done
+kill -INT $pid; wait $pid; rc=$?
+[ $rc -eq 130 ] || fail "SIGINT must give exit 130, got $rc (the run may have ended first)"
+# the checkpoint's simulated time (header: magic, format, 4 strings, step, time) is off the interval grid
+/usr/bin/python3 - "$T/long/checkpoint.bin" <<'PY' || fail "no checkpoint written at the interruption"
+import struct, sys
+b = open(sys.argv[1], "rb").read()
+at = 12
+for _ in range(4):
+    at += 8 + struct.unpack_from("<Q", b, at)[0]
+step, t = struct.unpack_from("<Qd", b, at)
+sys.exit(0 if step > 0 and (t / 1e-2) % 1.0 > 1e-4 else 1)
+PY
+collide "$NT" --out "$T/long" --threads 2 --checkpoint 1e-2 --resume "${LONG[@]}" || fail "resume after SIGINT"
+same "$T/long-ref" "$T/long"
+echo "restart_collide: OK"
