@@ -1,8 +1,14 @@
-// Cases, errors, commands and results (placeholder: filled in by the Python-module work).
+// Cases, errors, commands and results: the parts of the module that drive the run pipeline.
 #include "bindings.hpp"
 
 namespace agglo::python {
 
-void bind_core(pybind11::module_&) {}
+void bind_core(pybind11::module_& m) {
+  bind_errors(m);
+  bind_case(m);
+  bind_results(m);
+  bind_commands(m);
+  bind_sweep(m);
+}
 
 }  // namespace agglo::python

@@ -53,4 +53,12 @@ Estimate sweep_estimate(const Command& cmd, const SweepPlan& plan, const RunCont
 // after every case has run.
 SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out, const RunContext& ctx);
 
+// A whole sweep in the folder `path` (CLI and Python): the plan's cost checked against the budgets, the
+// folder claimed, the cases run (run_sweep), then sweep.csv, config.resolved.toml (the base case with
+// every default filled in, or as written when only the swept values make it valid) and run.json with
+// `details`. After a failure run.json says "incomplete" (interrupted) or "failed" and the error is rethrown.
+SweepResult execute_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes,
+                          SweepPlan& plan, const std::filesystem::path& path, const RunContext& ctx,
+                          const nlohmann::json& details);
+
 }  // namespace agglo::run
