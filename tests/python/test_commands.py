@@ -164,3 +164,19 @@ def test_help_documents_parameters_and_units(agglo_module):
     for cls in (agglo.Case, agglo.Result, agglo.Error, agglo.ConfigError, agglo.LimitError, agglo.NumericalError,
                 agglo.InterruptedError):
         assert cls.__doc__
+
+
+def test_warnings_go_to_python(agglo_module, tmp_path):
+    """A run's warnings become warnings.warn(RuntimeWarning) with the CLI's text, attributed to the caller."""
+    agglo = agglo_module
+    odd = {"time.motion_dt": 1 / 30000, "time.collision_dt": 1 / 30000}  # 15 steps per acoustic period: a warning
+    case = _acoustic(agglo)
+    for key, value in odd.items():
+        case.set(key, value)
+    with pytest.warns(RuntimeWarning) as record:
+        agglo.acoustic(case, threads=1)
+    assert len(record) == 1 and record[0].filename == __file__
+    path = tmp_path / "case.toml"
+    path.write_text(case.to_toml())
+    proc = cli("acoustic", path, "--threads", "1", "--out", tmp_path / "cli")
+    assert proc.returncode == 0 and f"agglo: warning: {record[0].message}" in proc.stderr.splitlines()

@@ -2,6 +2,7 @@
 import _thread
 import json
 import os
+import signal
 import threading
 import time
 
@@ -105,3 +106,4 @@ def test_ctrl_c_interrupts(agglo_module, tmp_path):
     timer.join()
     assert _tasks() == baseline  # the worker thread is gone
     assert json.loads((tmp_path / "run" / "run.json").read_text())["status"] == "incomplete"
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # the module installs no handler
