@@ -14,7 +14,8 @@ LONG = {"time.after_contact": 0.1, "time.early_stop": False}  # about a second o
 
 
 def _tasks():
-    return len(os.listdir("/proc/self/task"))
+    """The ids of the process's threads (a thread left running would be a new one; others may end meanwhile)."""
+    return set(os.listdir("/proc/self/task"))
 
 
 def test_two_threads_overlap(agglo_module):
@@ -85,7 +86,7 @@ def test_callback_exception_cancels(agglo_module):
     with pytest.raises(RuntimeError, match="stop here"):
         agglo.collide(short(agglo, extra={"time.after_contact": 1.0, "time.early_stop": False}), threads=1, progress=fail)
     assert time.monotonic() - start < 5.0
-    assert _tasks() == baseline
+    assert _tasks() <= baseline
 
 
 def test_ctrl_c_interrupts(agglo_module, tmp_path):
@@ -104,6 +105,6 @@ def test_ctrl_c_interrupts(agglo_module, tmp_path):
     assert isinstance(err.value, KeyboardInterrupt) and str(err.value) == "interrupted"
     assert elapsed < 3.0, elapsed
     timer.join()
-    assert _tasks() == baseline  # the worker thread is gone
+    assert _tasks() <= baseline  # the worker thread is gone
     assert json.loads((tmp_path / "run" / "run.json").read_text())["status"] == "incomplete"
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # the module installs no handler
