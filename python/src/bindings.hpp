@@ -1,6 +1,7 @@
 #pragma once
 // The parts of the extension module _agglo, each bound from its own file (python/src/*.cpp).
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>  // in every file: the casters of std types must agree (ODR)
 
 namespace agglo::python {
 

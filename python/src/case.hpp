@@ -4,6 +4,7 @@
 #include <string>
 
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>  // in every file: the casters of std types must agree (ODR)
 
 #include "agglo/core/config.hpp"
 

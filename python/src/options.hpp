@@ -7,6 +7,7 @@
 #include <string>
 
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>  // in every file: the casters of std types must agree (ODR)
 
 #include "agglo/run/command.hpp"
 #include "results.hpp"

@@ -3,6 +3,8 @@
 // dataset lives as long as any array does.
 #include "results.hpp"
 
+#include <cstring>
+
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -76,6 +78,52 @@ Result example_result() {
   return Result{"example", {{"answer", 42}}, 7, std::nullopt, d, {}};
 }
 
+// Pickling (e.g. results returned by Dask tasks): the dataset as plain tuples, values as raw bytes.
+py::tuple dataset_state(const io::Dataset& d) {
+  py::list vars;
+  for (const auto& v : d.variables) {
+    const auto* bytes = v.integer ? reinterpret_cast<const char*>(v.ints.data()) : reinterpret_cast<const char*>(v.reals.data());
+    vars.append(py::make_tuple(v.name, v.dims, v.units, v.long_name, v.integer, py::bytes(bytes, v.size() * 8),
+                               v.attributes.dump()));
+  }
+  return py::make_tuple(d.dims, vars, d.attributes.dump());
+}
+
+io::DatasetPtr dataset_of(const py::tuple& state) {
+  auto d = std::make_shared<io::Dataset>();
+  for (const auto& [name, len] : state[0].cast<std::vector<std::pair<std::string, std::size_t>>>()) d->add_dim(name, len);
+  for (auto item : state[1].cast<py::list>()) {
+    const auto t = item.cast<py::tuple>();
+    const auto raw = t[5].cast<std::string>();
+    io::Variable* v = nullptr;
+    if (t[4].cast<bool>()) {
+      std::vector<std::int64_t> ints(raw.size() / 8);
+      std::memcpy(ints.data(), raw.data(), raw.size());
+      v = &d->add_ints(t[0].cast<std::string>(), t[1].cast<std::vector<std::string>>(), t[2].cast<std::string>(),
+                       t[3].cast<std::string>(), std::move(ints));
+    } else {
+      std::vector<double> reals(raw.size() / 8);
+      std::memcpy(reals.data(), raw.data(), raw.size());
+      v = &d->add(t[0].cast<std::string>(), t[1].cast<std::vector<std::string>>(), t[2].cast<std::string>(),
+                  t[3].cast<std::string>(), std::move(reals));
+    }
+    v->attributes = nlohmann::json::parse(t[6].cast<std::string>());
+  }
+  d->attributes = nlohmann::json::parse(state[2].cast<std::string>());
+  return d;
+}
+
+py::tuple result_state(const Result& r) {
+  return py::make_tuple(r.command, r.summary.dump(), r.seed, r.out, r.messages,
+                        r.data ? py::object(dataset_state(*r.data)) : py::object(py::none()));
+}
+
+Result result_of(const py::tuple& t) {
+  return Result{t[0].cast<std::string>(), nlohmann::json::parse(t[1].cast<std::string>()), t[2].cast<long long>(),
+                t[3].cast<std::optional<std::string>>(), t[5].is_none() ? nullptr : dataset_of(t[5].cast<py::tuple>()),
+                t[4].cast<std::vector<std::string>>()};
+}
+
 }  // namespace
 
 py::object to_python(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
@@ -122,6 +170,7 @@ to_xarray()    an xarray.Dataset with units and long_name attributes)")
       .def("to_xarray", &to_xarray,
            "to_xarray(): the arrays as an xarray.Dataset (variables named after a dimension become its coordinates; "
            "attributes units and long_name; the global attributes plus command and seed). ImportError without xarray.")
+      .def(py::pickle(&result_state, &result_of))
       .def("__repr__", [](const Result& r) {
         return fmt::format("<agglo.Result of {}: {} variables, out={}>", r.command, r.data ? r.data->variables.size() : 0,
                            r.out ? *r.out : std::string("None"));

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>  // in every file: the casters of std types must agree (ODR)
 
 #include "agglo/io/dataset.hpp"
 

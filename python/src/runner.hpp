@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>  // in every file: the casters of std types must agree (ODR)
 
 #include "agglo/run/command.hpp"
 

@@ -28,6 +28,17 @@ def test_numpy_round_trip(agglo_module):
     assert psd.sum() == 21.0  # the array keeps the dataset alive
 
 
+def test_pickle_round_trip(agglo_module):
+    import pickle
+    res = agglo_module._agglo._example_result()
+    back = pickle.loads(pickle.dumps(res))
+    assert back.summary == res.summary and back.seed == 7 and back.command == "example" and back.out is None
+    assert back.variables == res.variables and back.dims == res.dims and back.attrs == res.attrs
+    for name in res.variables:
+        assert back[name].dtype == res[name].dtype and back[name].tolist() == res[name].tolist()
+        assert back.units(name) == res.units(name) and back.long_name(name) == res.long_name(name)
+
+
 def test_to_xarray(agglo_module):
     pytest.importorskip("xarray")
     ds = agglo_module._agglo._example_result().to_xarray()
