@@ -1,6 +1,7 @@
 #pragma once
 // Error types. ConfigError -> exit code 2 (bad input); NumericalError -> exit code 3
 // (blow-up detected during a run: NaN, energy explosion, violated probability bound);
+// LimitError (a ConfigError) -> exit code 2 (a valid case beyond a run budget, run/budget.hpp);
 // InterruptedError -> exit code 130 (the run was cancelled, e.g. by Ctrl-C; finished jobs of an
 // ensemble are kept in its journal and `--resume` continues).
 #include <cstdio>
@@ -12,6 +13,12 @@ namespace agglo {
 
 struct ConfigError : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// A case that follows the rules but exceeds a budget of steps, memory or output (run/budget.hpp): bad
+// input like any ConfigError, told apart by front ends that report limits separately (Python).
+struct LimitError : ConfigError {
+  using ConfigError::ConfigError;
 };
 
 struct NumericalError : std::runtime_error {

@@ -147,7 +147,7 @@ std::string key_list(const EstimateItem& item) {
 void check_one(const EstimateItem& item, double budget, std::string_view what, std::string_view quantity,
                std::string_view option, std::string_view env, const std::string& est, const std::string& bud) {
   if (item.value <= budget) return;
-  throw ConfigError(fmt::format("{}: the estimated {} {} (driven by {}) exceeds the {} budget {}; check those keys, "
+  throw LimitError(fmt::format("{}: the estimated {} {} (driven by {}) exceeds the {} budget {}; check those keys, "
                                 "or raise the budget with {} or {}",
                                 what, quantity, est, key_list(item), quantity == "steps" ? "step" : quantity, bud,
                                 option, env));

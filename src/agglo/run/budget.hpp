@@ -1,7 +1,7 @@
 #pragma once
 // Budgets of a run (docs/limits.md): the most particle-steps, memory and output bytes a command may
 // use. Before the output folder is created, run::execute compares the command's Estimate
-// (core/estimate.hpp) with them and refuses a case that exceeds one (ConfigError, exit 2), so a typo
+// (core/estimate.hpp) with them and refuses a case that exceeds one (LimitError, a ConfigError: exit 2), so a typo
 // (time.end = 1e300, patches_per_sphere = 1e6) cannot run for ever or exhaust the machine.
 // Each budget comes from the command line (--max-steps, --max-memory, --max-output), else the
 // environment (AGGLO_MAX_STEPS, AGGLO_MAX_MEMORY, AGGLO_MAX_OUTPUT), else the defaults below;
@@ -64,7 +64,7 @@ double default_memory_budget();
 // Command line first, then AGGLO_MAX_STEPS / AGGLO_MAX_MEMORY / AGGLO_MAX_OUTPUT, then the defaults.
 Budgets resolve_budgets(const BudgetArgs& cli);
 
-// Throws ConfigError when `e` exceeds a budget: one line naming the keys that drive it, the estimate,
+// Throws LimitError (a ConfigError) when `e` exceeds a budget: one line naming the keys that drive it, the estimate,
 // the budget and how to raise it. `what` names the case (file or command).
 void check_budgets(const Estimate& e, const Budgets& b, std::string_view what);
 

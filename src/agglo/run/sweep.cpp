@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/io/sweep_dataset.hpp"
+#include "agglo/io/sweep_table.hpp"
 #include "agglo/run/ensemble.hpp"
 
 namespace agglo::run {
@@ -122,6 +125,63 @@ SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out,
   const auto outcomes = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), "sweep"});
   rethrow_first_error(outcomes, &jobs);
   for (const auto& o : outcomes) res.summaries.push_back(o.result);
+  return res;
+}
+
+namespace {
+// The base case with every default filled in, for the sweep folder's config.resolved.toml. A base that
+// is valid only with the swept values (e.g. a required key given by --param) is kept as written.
+Config resolved_base(const Command& cmd, const Config& base) {
+  Config r = base.clone();
+  try {
+    cmd.parse(r);
+    return r;
+  } catch (const ConfigError&) {
+    return base.clone();
+  }
+}
+
+// sweep.csv (CSV format) and the table as a dataset (res.data; results.nc in NetCDF format).
+void write_sweep_outputs(const OutputDir& out, const Config& resolved, long long seed,
+                         const std::vector<SweepAxis>& axes, SweepResult& res, const RunContext& ctx) {
+  std::vector<io::SweepRow> rows;
+  for (std::size_t i = 0; i < res.cases.size(); ++i)
+    rows.push_back({res.cases[i].values, res.cases[i].folder, res.summaries[i]});
+  std::vector<std::string> keys;
+  for (const auto& x : axes) keys.push_back(x.key);
+  if (ctx.formats.csv) io::write_sweep_table(out, keys, rows);
+  res.data = std::make_shared<const io::Dataset>(io::sweep_dataset(keys, rows));
+  if (ctx.formats.netcdf) write_results_nc(out, resolved, "sweep", seed, *res.data);
+}
+}  // namespace
+
+SweepResult execute_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes,
+                          SweepPlan& plan, const std::filesystem::path& path, const RunContext& ctx,
+                          const nlohmann::json& details) {
+  const auto start = std::chrono::steady_clock::now();
+  check_budgets(sweep_estimate(cmd, plan, ctx), budgets_of(ctx), base.file());
+  const Config resolved = resolved_base(cmd, base);
+  long long seed = 0;  // of the base case; of the first case when the base alone is not valid
+  try {
+    seed = cmd.seed(base);
+  } catch (const ConfigError&) {
+    seed = cmd.seed(plan.configs.front());
+  }
+  claim_output_folder(path, folder_policy(ctx), "sweep");
+  OutputDir out(path);
+  write_run_started(out, "sweep", base.file());
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  SweepResult res;
+  try {
+    res = run_sweep(cmd, plan, out, ctx);
+  } catch (const std::exception& e) {  // the journal keeps the finished cases; run.json says why it stopped
+    const bool stopped = dynamic_cast<const InterruptedError*>(&e) != nullptr;
+    write_run_files(out, resolved, "sweep", seed, seconds(), {{stopped ? "interrupted" : "error", e.what()}},
+                    stopped ? "incomplete" : "failed");
+    throw;
+  }
+  write_sweep_outputs(out, resolved, seed, axes, res, ctx);
+  write_run_files(out, resolved, "sweep", seed, seconds(), details);
   return res;
 }
 

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "agglo/io/dataset.hpp"
 #include "agglo/run/command.hpp"
 
 namespace agglo::run {
@@ -34,6 +35,7 @@ std::vector<SweepCase> sweep_grid(const std::vector<SweepAxis>& axes);
 struct SweepResult {
   std::vector<SweepCase> cases;
   std::vector<nlohmann::json> summaries;  // by case index
+  io::DatasetPtr data;                    // the sweep table as labelled arrays (results.nc, Python)
 };
 
 // The validated cases of a sweep: every case is the base case with its assignments applied and
@@ -52,5 +54,13 @@ Estimate sweep_estimate(const Command& cmd, const SweepPlan& plan, const RunCont
 // Runs `cmd` for every case of the plan under `out`. Throws the first failure (in case order)
 // after every case has run.
 SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out, const RunContext& ctx);
+
+// A whole sweep in the folder `path` (CLI and Python): the plan's cost checked against the budgets, the
+// folder claimed, the cases run (run_sweep), then sweep.csv, config.resolved.toml (the base case with
+// every default filled in, or as written when only the swept values make it valid) and run.json with
+// `details`. After a failure run.json says "incomplete" (interrupted) or "failed" and the error is rethrown.
+SweepResult execute_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes,
+                          SweepPlan& plan, const std::filesystem::path& path, const RunContext& ctx,
+                          const nlohmann::json& details);
 
 }  // namespace agglo::run

@@ -1,0 +1,110 @@
+"""Runs release the GIL, report progress on the calling thread, and stop cleanly on Ctrl-C."""
+import _thread
+import json
+import os
+import signal
+import threading
+import time
+
+import pytest
+
+from agglo_cases import short
+
+LONG = {"time.after_contact": 0.1, "time.early_stop": False}  # about a second on one thread
+
+
+def _tasks():
+    """The ids of the process's threads (a thread left running would be a new one; others may end meanwhile)."""
+    return set(os.listdir("/proc/self/task"))
+
+
+def test_two_threads_overlap(agglo_module):
+    """Each thread's progress callbacks span an interval; with the GIL held during a run they could not overlap."""
+    agglo = agglo_module
+    spans = {}
+    barrier = threading.Barrier(2)
+
+    def work(tag):
+        calls = []
+        barrier.wait()
+        agglo.collide(short(agglo, extra=LONG), threads=1, progress=lambda f, t: calls.append(time.monotonic()))
+        spans[tag] = (calls[0], calls[-1])
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(2)]
+    start = time.monotonic()
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    (a0, a1), (b0, b1) = spans[0], spans[1]
+    print(f"spans {a0 - start:.3f}-{a1 - start:.3f} s and {b0 - start:.3f}-{b1 - start:.3f} s")
+    assert max(a0, b0) < min(a1, b1)
+
+
+def test_gil_released_while_running(agglo_module):
+    """A Python thread keeps running while a collide goes on in the main thread."""
+    agglo = agglo_module
+    ticks, stop = [], threading.Event()
+
+    def ticker():
+        while not stop.is_set():
+            ticks.append(time.monotonic())
+            time.sleep(0.005)
+
+    t = threading.Thread(target=ticker)
+    t.start()
+    try:
+        start = time.monotonic()
+        agglo.collide(short(agglo, extra=LONG), threads=1)
+        end = time.monotonic()
+    finally:
+        stop.set()
+        t.join()
+    inside = [x for x in ticks if start < x < end]
+    assert len(inside) >= 10, (len(inside), end - start)
+
+
+def test_progress_on_calling_thread(agglo_module):
+    agglo = agglo_module
+    calls = []
+    agglo.collide(short(agglo, extra=LONG), threads=2,
+                  progress=lambda f, t: calls.append((threading.get_ident(), f, t)))
+    assert calls and {c[0] for c in calls} == {threading.get_ident()}
+    fractions = [c[1] for c in calls]
+    assert all(0.0 <= f <= 1.0 for f in fractions) and fractions == sorted(fractions)
+    assert all(t >= 0.0 for _, _, t in calls)
+
+
+def test_callback_exception_cancels(agglo_module):
+    agglo = agglo_module
+    baseline = _tasks()
+
+    def fail(fraction, sim_time):
+        raise RuntimeError("stop here")
+
+    start = time.monotonic()
+    with pytest.raises(RuntimeError, match="stop here"):
+        agglo.collide(short(agglo, extra={"time.after_contact": 1.0, "time.early_stop": False}), threads=1, progress=fail)
+    assert time.monotonic() - start < 5.0
+    assert _tasks() <= baseline
+
+
+def test_ctrl_c_interrupts(agglo_module, tmp_path):
+    agglo = agglo_module
+    agglo.collide(short(agglo), threads=1)  # warm-up: thread pools that persist exist before the baseline
+    baseline = _tasks()
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    start = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(agglo.InterruptedError) as err:
+            agglo.collide(short(agglo, extra={"time.after_contact": 1.0, "time.early_stop": False}), threads=1, out=tmp_path / "run")
+    finally:
+        timer.cancel()
+    elapsed = time.monotonic() - start
+    assert isinstance(err.value, KeyboardInterrupt) and str(err.value) == "interrupted"
+    assert elapsed < 3.0, elapsed
+    timer.join()
+    assert _tasks() <= baseline  # the worker thread is gone
+    assert json.loads((tmp_path / "run" / "run.json").read_text())["status"] == "incomplete"
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # the module installs no handler
