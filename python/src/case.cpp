@@ -87,6 +87,14 @@ py::object lookup(py::object node, const std::string& key) {
   return node;
 }
 
+// The case as TOML; resolved by `command` (validated, every default filled in) when given.
+std::string toml_of(const Case& c, const std::optional<std::string>& command) {
+  if (!command) return c.cfg.resolved_toml();
+  Config cfg = c.cfg.clone();
+  run::find_command(*command).parse(cfg);
+  return cfg.resolved_toml();
+}
+
 Config from_dict(const py::dict& d) {
   std::string text;
   emit_table(text, "", d);
@@ -142,15 +150,12 @@ to_toml(command)), with the CLI's one-line message.)")
           R"(set(key, value): sets the dotted key (e.g. "material.restitution", "particles.0.radius") to value
 (bool, int, float, str, list or dict; SI units as in docs/config.md), like the CLI's --set key=value.
 Returns the case, so calls can be chained.)")
-      .def("get", [](const Case& c, const std::string& key) {
-            return lookup(py::module_::import("tomllib").attr("loads")(c.cfg.resolved_toml()), key);
-          }, py::arg("key"), "get(key): the value of a dotted key as given in the case (KeyError if absent).")
-      .def("to_toml", [](const Case& c, const std::optional<std::string>& command) {
-            if (!command) return c.cfg.resolved_toml();
-            Config cfg = c.cfg.clone();
-            run::find_command(*command).parse(cfg);
-            return cfg.resolved_toml();
-          }, py::arg("command") = py::none(),
+      .def("get", [](const Case& c, const std::string& key, const std::optional<std::string>& command) {
+            return lookup(py::module_::import("tomllib").attr("loads")(toml_of(c, command)), key);
+          }, py::arg("key"), py::arg("command") = py::none(),
+          R"(get(key, command=None): the value of a dotted key as given in the case (KeyError if absent); with a
+command name, the value the command runs with (its default when the case does not give it).)")
+      .def("to_toml", &toml_of, py::arg("command") = py::none(),
           R"(to_toml(command=None): the case as TOML text. With a command name ("collide", ...) the case is
 validated by that command (ConfigError as the CLI would raise) and every default is filled in: the
 config.resolved.toml a run writes.)")

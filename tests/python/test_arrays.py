@@ -71,3 +71,30 @@ def test_xarray_reads_results_nc(agglo_module, tmp_path):
         for name in res.variables:
             assert ds[name].attrs["units"] == res.units(name)
             np.testing.assert_array_equal(ds[name].values, res[name])
+
+
+def test_netcdf_reads_after_a_run_print_nothing(agglo_module, tmp_path):
+    """After a run wrote results.nc (on its worker thread), reading NetCDF on the calling thread prints no
+    HDF5 diagnostics (NetCDF-C silences HDF5 only on the thread that initialised it: the module must do it)."""
+    pytest.importorskip("xarray")
+    import subprocess
+    import sys
+    from agglo_cases import CASES
+    code = f"""
+import agglo, xarray
+case = (agglo.Case.load({str(CASES / 'seed002_integrator_check.toml')!r}).set("time.end", 0.005)
+        .set("output.psd_times", [0.0]).set("population.0.samples", 200).set("population.1.samples", 50))
+agglo.acoustic(case, threads=1, out={str(tmp_path / 'run')!r})
+import os
+if os.path.exists({str(tmp_path / 'run' / 'results.nc')!r}):
+    xarray.open_dataset({str(tmp_path / 'run' / 'results.nc')!r}).load()
+    print("read")
+"""
+    import os
+    package = os.path.dirname(os.path.dirname(agglo_module.__file__))  # the build under test
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300,
+                          env={**os.environ, "PYTHONPATH": package})
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    if "read" not in proc.stdout:
+        pytest.skip("this build writes no results.nc yet")
+    assert "HDF5-DIAG" not in proc.stderr, proc.stderr[:500]

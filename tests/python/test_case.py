@@ -40,6 +40,9 @@ def test_to_toml_resolves_and_copy_is_independent(agglo_module):
     assert "steps_per_period" not in case.to_toml()
     assert "steps_per_period" in case.to_toml("collide")  # every default filled in
     assert "steps_per_period" not in case.to_toml()       # the case itself is unchanged
+    assert case.get("time.steps_per_period", "collide") == 50.0
+    with pytest.raises(KeyError):
+        case.get("time.steps_per_period")
     other = case.copy().set("material.restitution", 0.5)
     assert other.get("material.restitution") == 0.5 and case.get("material.restitution") == 0.98
     assert agglo.Case.from_toml("[material]\nrestitution = 0.7\n").get("material.restitution") == 0.7
