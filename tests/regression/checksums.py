@@ -10,7 +10,7 @@ Stripped before hashing (they change from run to run or machine to machine, neve
   run.log    'wall_time=<x> s';
   CSV        columns whose header is one of those keys or contains 'seconds' (sweep.csv);
   results.nc compared by content, not bytes (HDF5 files are not byte-stable): dimensions, variables (name,
-             dimensions, type, attributes, values), global attributes; the variables named like the
+             dimensions, type, attributes, values), global attributes (attributes in name order); the variables named like the
              stripped JSON keys and the provenance attributes agglo_version and git_hash are left out.
 PNG files are skipped (matplotlib versions differ), and so are the ensemble journals journal.jsonl (a
 work log: its lines are in the order the jobs finished, which depends on scheduling; the results it
@@ -50,13 +50,13 @@ def normalised_netcdf(path: Path) -> bytes:
         ds.set_auto_mask(False)
         for name, dim in ds.dimensions.items():
             lines.append(f"dim {name} {len(dim)}")
-        for key in ds.ncattrs():
+        for key in sorted(ds.ncattrs()):
             if key not in NC_PROVENANCE:
                 lines.append(f"attr {key} {ds.getncattr(key)!r}")
         for name, var in ds.variables.items():
             if dropped(name):
                 continue
-            attrs = {k: repr(var.getncattr(k)) for k in var.ncattrs()}
+            attrs = {k: repr(var.getncattr(k)) for k in sorted(var.ncattrs())}
             values = numpy.ascontiguousarray(var[...]).tobytes()
             lines.append(f"var {name} {var.dimensions} {var.dtype} {attrs} {hashlib.sha256(values).hexdigest()}")
     return "\n".join(lines).encode()

@@ -104,7 +104,8 @@ void write_values(const Check& ok, int nc, const Dataset& d, const std::vector<i
 
 }  // namespace
 
-void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& name) {
+void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& name,
+                  const nlohmann::json& extra_attributes) {
   const auto path = out.file(name);
   auto tmp = path;
   tmp += fmt::format(".tmp-{}", static_cast<long>(::getpid()));
@@ -113,6 +114,7 @@ void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& nam
   try {
     ok(nc_create(tmp.c_str(), NC_NETCDF4 | NC_CLOBBER, &nc), "create");
     const auto ids = define(ok, nc, d);
+    put_attributes(ok, nc, NC_GLOBAL, extra_attributes);
     ok(nc_enddef(nc), "end of definitions");
     write_values(ok, nc, d, ids);
     const int status = nc_close(nc);

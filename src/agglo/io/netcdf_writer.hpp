@@ -15,8 +15,10 @@ namespace agglo::io {
 
 inline constexpr const char* kResultsFile = "results.nc";
 
-// Writes `d` to out/name; std::runtime_error naming the file and netCDF's message on any failure (the
-// temporary file is removed and an earlier file of that name is left as it was).
-void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& name = kResultsFile);
+// Writes `d` to out/name, with `extra_attributes` (an object) as further global attributes that replace
+// the dataset's own of the same name; std::runtime_error naming the file and netCDF's message on any
+// failure (the temporary file is removed and an earlier file of that name is left as it was).
+void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& name = kResultsFile,
+                  const nlohmann::json& extra_attributes = nlohmann::json::object());
 
 }  // namespace agglo::io

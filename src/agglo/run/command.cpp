@@ -28,11 +28,17 @@ Estimate Command::estimate(Config&, const RunContext&) const { return {}; }
 
 Estimate Command::lower_bound(Config&) const { return {}; }
 
+double output_bytes(double csv_estimate, const OutputFormats& f) {
+  return (f.csv ? csv_estimate : 0.0) + (f.netcdf ? csv_estimate + kNetcdfOverhead : 0.0);
+}
+
 Estimate plan(const Command& cmd, Config& cfg, const RunContext& ctx) {
   check_budgets(cmd.lower_bound(cfg), budgets_of(ctx), cfg.file());
   cmd.parse(cfg);
   Estimate e = cmd.estimate(cfg, ctx);
   e.memory.value += kProcessBaseBytes;
+  if (ctx.formats.netcdf) e.memory.value += e.output.value;  // the results.nc arrays, at most as large
+  e.output.value = output_bytes(e.output.value, ctx.formats);
   return e;
 }
 
@@ -76,15 +82,15 @@ void write_run_files(const OutputDir& out, const Config& cfg, std::string_view c
 
 void write_results_nc(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
                       const io::Dataset& data) {
-  io::Dataset d = data;
-  d.attributes["Conventions"] = "CF-1.8";
-  d.attributes["title"] = fmt::format("agglo {} of {}", command, std::filesystem::path(cfg.file()).filename().string());
-  d.attributes["agglo_version"] = kVersion;
-  d.attributes["git_hash"] = kGitHash;
-  d.attributes["command"] = std::string(command);
-  d.attributes["seed"] = seed;
-  d.attributes["config"] = cfg.resolved_toml();
-  io::write_netcdf(out, d);
+  const nlohmann::json provenance{
+      {"Conventions", "CF-1.8"},
+      {"title", fmt::format("agglo {} of {}", command, std::filesystem::path(cfg.file()).filename().string())},
+      {"agglo_version", kVersion},
+      {"git_hash", kGitHash},
+      {"command", std::string(command)},
+      {"seed", seed},
+      {"config", cfg.resolved_toml()}};
+  io::write_netcdf(out, data, io::kResultsFile, provenance);
 }
 
 CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,

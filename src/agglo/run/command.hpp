@@ -30,6 +30,14 @@ struct OutputFormats {
   bool netcdf = true;   // results.nc (io/netcdf_writer.hpp)
 };
 
+// The bytes a run writes in the formats `f`, from a command's output estimate (its CSV/JSON/VTK files):
+// results.nc holds the same numbers in at most as many bytes (8 per value against 10-17 characters) plus
+// kNetcdfOverhead for its metadata (HDF5 headers and attributes, about 1 KiB per variable; measured
+// 30 KiB for the 60 variables of an acoustic run). With NetCDF the memory estimate grows by the CSV
+// estimate too (the dataset's arrays, held until results.nc is written).
+inline constexpr double kNetcdfOverhead = 64.0 * 1024.0;
+double output_bytes(double csv_estimate, const OutputFormats& f);
+
 struct RunContext {
   Reporter* reporter = nullptr;          // null = silent
   const CancelToken* cancel = nullptr;   // null = not cancellable

@@ -96,9 +96,9 @@ Estimate sweep_estimate(const Command& cmd, const SweepPlan& plan, const RunCont
     cmd.parse(cfg);
     const Estimate e = cmd.estimate(cfg, one);
     add_to(total.steps, e.steps.value, e.steps.keys);
-    add_to(total.output, e.output.value, e.output.keys);
+    add_to(total.output, output_bytes(e.output.value, ctx.formats), e.output.keys);
     add_to(total.memory, 0.0, e.memory.keys);
-    memory.push_back(e.memory.value);
+    memory.push_back(e.memory.value + (ctx.formats.netcdf ? e.output.value : 0.0));  // + the results.nc arrays
   }
   std::sort(memory.rbegin(), memory.rend());
   memory.resize(std::min(memory.size(), static_cast<std::size_t>(std::max(1, ctx.thread_count()))));
