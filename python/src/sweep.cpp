@@ -65,10 +65,12 @@ Result sweep(const Case& c, const py::dict& params, const std::string& command, 
         const auto res = run::execute_sweep(cmd, base, axes, plan, folder.path(), x, details_of(axes, command));
         run::CommandResult out;
         out.summary = {{"command", command}, {"cases", cases_json(axes, res)}};
+        out.data = res.data;
         return out;
       },
       ctx, o.progress);
-  return Result{"sweep", std::move(r.result.summary), 0, folder.user_path(), nullptr, std::move(r.messages)};
+  return Result{"sweep", std::move(r.result.summary), 0, folder.user_path(), std::move(r.result.data),
+                std::move(r.messages)};
 }
 
 }  // namespace

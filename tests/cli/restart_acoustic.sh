@@ -34,15 +34,7 @@ for d in (x, y):
     d.pop("wall_time_s", None)
 sys.exit(0 if x == y else 1)
 EOF
-      results.nc) /usr/bin/python3 - "$a/$n" "$b/$n" <<'EOF' || { echo "$n differs"; return 1; } ;;
-import sys
-try:
-    import xarray
-except ImportError:
-    sys.exit(0)
-x, y = (xarray.open_dataset(p) for p in sys.argv[1:])
-sys.exit(0 if x.equals(y) else 1)
-EOF
+      results.nc) /usr/bin/python3 "$SRC/tests/cli/same_results_nc.py" "$a/$n" "$b/$n" || return 1 ;;
       *) cmp -s "$a/$n" "$b/$n" || { echo "$n differs"; return 1; } ;;
     esac
   done

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
@@ -102,6 +103,12 @@ void write_values(const Check& ok, int nc, const Dataset& d, const std::vector<i
   }
 }
 
+// The NetCDF-C library is not thread-safe (sweep cases and Python threads write concurrently).
+std::mutex& library_mutex() {
+  static std::mutex m;
+  return m;
+}
+
 }  // namespace
 
 void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& name,
@@ -111,6 +118,7 @@ void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& nam
   tmp += fmt::format(".tmp-{}", static_cast<long>(::getpid()));
   const Check ok{path};
   int nc = -1;
+  const std::lock_guard lock(library_mutex());
   try {
     ok(nc_create(tmp.c_str(), NC_NETCDF4 | NC_CLOBBER, &nc), "create");
     const auto ids = define(ok, nc, d);
