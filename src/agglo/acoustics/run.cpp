@@ -264,39 +264,26 @@ void check_startup(const AcousticCase& c, const Engine& e) {
 }
 
 namespace {
-// Writes the checkpoints of a run (RunHooks::checkpoint): when the simulated time crosses a multiple of
-// the interval, and on request (cancel, end) unless the state of that step was already written.
+// Writes the checkpoints of a run (RunHooks::checkpoint) when its CheckpointSchedule says so.
 class Checkpointer {
  public:
   Checkpointer(const RunHooks& h, const Engine& e, const AcousticObservations& o)
-      : h_(h), e_(e), o_(o), on_(h.checkpoint && h.checkpoint_interval > 0.0), period_(period(e.time())) {
-    if (h.resume) last_ = e.step_index();  // the file in place holds this step
-  }
-  void after_step() {
-    if (!on_ || period(e_.time()) <= period_) return;
-    period_ = period(e_.time());
-    write();
-  }
-  void now() {
-    if (on_ && last_ != e_.step_index()) write();
-  }
-
- private:
-  // Index of the interval holding t (a relative 1e-9 absorbs the rounding of step * dt).
-  double period(double t) const { return on_ ? std::floor(t / h_.checkpoint_interval * (1.0 + 1e-9)) : 0.0; }
-  void write() {
+      : h_(h), e_(e), o_(o), when_(h.checkpoint ? h.checkpoint_interval : 0.0, e.time(), h.resume != nullptr) {}
+  // After a step; force: the run stops here (interruption or end).
+  void at_step(bool force) {
+    if (!when_.due(e_.time(), force)) return;
     io::CheckpointWriter w;
     save_engine(e_, w);
     save_observations(o_, w);
     h_.checkpoint(e_.step_index(), e_.time(), w.bytes());
-    last_ = e_.step_index();
+    when_.written(e_.time());
   }
+
+ private:
   const RunHooks& h_;
   const Engine& e_;
   const AcousticObservations& o_;
-  bool on_;
-  double period_;
-  std::uint64_t last_ = std::numeric_limits<std::uint64_t>::max();
+  CheckpointSchedule when_;
 };
 }  // namespace
 
@@ -319,7 +306,7 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
   for (std::uint64_t s = eng.step_index() + 1; s <= nsteps; ++s) {
     eng.step();
     observer.observe(s);
-    checkpoints.after_step();
+    checkpoints.at_step(false);
     if ((s & 63) != 0) continue;
     if (hooks.progress) hooks.progress(static_cast<double>(s) / static_cast<double>(nsteps), eng.time());
     if (hooks.cancelled && hooks.cancelled()) {
@@ -328,7 +315,7 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
       break;
     }
   }
-  checkpoints.now();  // the state at the interruption or at the end
+  checkpoints.at_step(true);  // the state at the interruption or at the end
   obs.final = count(eng.particles(), eng.settings().motion.domain.volume());
   obs.samples = eng.particles().size();
   if (obs.interrupted.empty()) obs.steps = nsteps;

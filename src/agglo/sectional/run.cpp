@@ -6,7 +6,9 @@
 
 #include <fmt/format.h>
 
+#include "agglo/acoustics/checkpoint.hpp"
 #include "agglo/core/error.hpp"
+#include "agglo/sectional/checkpoint.hpp"
 
 namespace agglo::sectional {
 
@@ -99,24 +101,55 @@ std::array<std::vector<double>, 4> psd(const SectionalSolver& s, const acoustics
   return out;
 }
 
+namespace {
+// The start: the initial state, or the state and observations of the checkpoint being resumed.
+void start(const SectionalCase& c, SectionalSolver& s, AcousticObservations& obs, const acoustics::RunHooks& hooks) {
+  if (hooks.resume) {
+    load_solver(s, *hooks.resume);
+    acoustics::load_observations(obs, *hooks.resume);
+    hooks.resume->expect_end();
+    return;
+  }
+  const auto& out = c.base.output;
+  obs.log = parameters_log(c, s);
+  obs.bins = acoustics::PsdBins::log_spaced(out.psd_d_min, out.psd_d_max, out.psd_bins);
+  obs.initial = counts(s);
+}
+
+// Writes a checkpoint of the state at an output time when the schedule says so (force: interruption, end).
+void checkpoint(const acoustics::RunHooks& hooks, acoustics::CheckpointSchedule& when, const SectionalSolver& s,
+                const AcousticObservations& obs, bool force) {
+  if (!when.due(s.time(), force)) return;
+  io::CheckpointWriter w;
+  save_solver(s, w);
+  acoustics::save_observations(obs, w);
+  hooks.checkpoint(s.stats().accepted, s.time(), w.bytes());
+  when.written(s.time());
+}
+}  // namespace
+
 AcousticObservations run_sectional(const SectionalCase& c, const acoustics::RunHooks& hooks) {
   const auto wall0 = std::chrono::steady_clock::now();
   const auto& base = c.base;
   SectionalSolver s(c);
   AcousticObservations obs;
-  obs.log = parameters_log(c, s);
-  obs.bins = acoustics::PsdBins::log_spaced(base.output.psd_d_min, base.output.psd_d_max, base.output.psd_bins);
-  obs.initial = counts(s);
-  const double te = base.engine.t_end;
+  start(c, s, obs, hooks);
+  const double te = base.engine.t_end, resumed_at = hooks.resume ? s.time() : -1.0;
+  acoustics::CheckpointSchedule when(hooks.checkpoint ? hooks.checkpoint_interval : 0.0, s.time(), hooks.resume);
   for (double t : output_times(base)) {
+    if (t <= resumed_at) continue;  // observed before the checkpoint
     s.advance_to(t);
     const acoustics::Counts now = counts(s);
     if (efficiency_due(t, base)) obs.efficiency.push_back(efficiency_row(t, now, obs.initial));
     if (listed(base.output.psd_times, t, te)) obs.psd.push_back({t, psd(s, obs.bins)});
+    checkpoint(hooks, when, s, obs, false);
     if (hooks.progress) hooks.progress(t / te, t);
-    if (hooks.cancelled && hooks.cancelled())
+    if (hooks.cancelled && hooks.cancelled()) {
+      checkpoint(hooks, when, s, obs, true);
       throw InterruptedError(fmt::format("interrupted at t = {:.6g} s", t));
+    }
   }
+  checkpoint(hooks, when, s, obs, true);
   obs.final = counts(s);
   obs.last_time_with_pure_droplets = obs.initial.n_phase[1] > 0 ? (obs.final.n_phase[1] > 0 ? te : 0.0) : -1.0;
   obs.samples = s.grid().size();

@@ -30,6 +30,7 @@ class SectionalSolver {
   double volume() const;                       // sum N_i x_i [m^3/m^3]
 
  private:
+  friend class SolverCheckpoint;  // saves and restores n_, t_ and the stepper's state (checkpoint.hpp)
   Grid grid_;
   acoustics::Phase phase_;
   double density_;

@@ -34,6 +34,7 @@ class Etd2Stepper {
   const StepStats& stats() const { return stats_; }
 
  private:
+  friend class SolverCheckpoint;  // saves and restores h_ and stats_ (checkpoint.hpp)
   // One ETD2RK step of size h from n into out.
   void step(const std::vector<double>& n, double h, std::vector<double>& out);
   // h, then two h/2, from n; the Richardson value into out; returns err.

@@ -1,12 +1,10 @@
 // agglo acoustic: DSMC acoustic agglomeration of fine particles with droplets (docs/model.md Part C).
-#include <optional>
-
 #include "agglo/acoustics/estimate.hpp"
 #include "agglo/acoustics/run.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/io/acoustic_dataset.hpp"
 #include "agglo/io/acoustic_writers.hpp"
-#include "agglo/io/checkpoint.hpp"
+#include "agglo/run/checkpoint_io.hpp"
 #include "agglo/run/commands.hpp"
 
 namespace agglo::run {
@@ -41,16 +39,10 @@ class Acoustic final : public Command {
     hooks.progress = [&](double f, double t) { ctx.report().progress("acoustic", f, t); };
     hooks.warning = [&](const std::string& w) { ctx.report().warning(w); };
     hooks.cancelled = [&] { return ctx.cancel && ctx.cancel->cancelled(); };
-    // Checkpoints (--checkpoint) and the exact restart from the folder's last one (--resume).
-    const io::CheckpointHeader header{std::string(name()), io::config_hash(cfg.resolved_toml())};
-    hooks.checkpoint_interval = ctx.checkpoint_interval;
-    hooks.checkpoint = [&](std::uint64_t step, double t, const std::string& payload) {
-      io::write_checkpoint(out, {header.command, header.config_hash, step, t}, payload);
-    };
-    std::optional<io::CheckpointReader> resume;
-    io::CheckpointHeader found;
-    if (ctx.resume && io::has_checkpoint(out)) resume.emplace(io::read_checkpoint(out, header, found));
-    hooks.resume = resume ? &*resume : nullptr;
+    auto ck = checkpoint_io(*this, cfg, out, ctx);  // --checkpoint, --resume (docs/restart.md)
+    hooks.checkpoint_interval = ck.interval;
+    hooks.checkpoint = ck.write;
+    hooks.resume = ck.resume ? &*ck.resume : nullptr;
     const auto obs = acoustics::run_acoustic(c, hooks);
     io::write_acoustic(out, obs, ctx.formats.csv);
     if (!obs.interrupted.empty()) throw InterruptedError(obs.interrupted);  // partial results flushed

@@ -2,6 +2,7 @@
 // kernel of the sizes only; the same efficiency.csv and psd.csv as agglo acoustic (docs/sectional.md).
 #include "agglo/io/acoustic_dataset.hpp"
 #include "agglo/io/acoustic_writers.hpp"
+#include "agglo/run/checkpoint_io.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/sectional/run.hpp"
 
@@ -12,6 +13,7 @@ namespace {
 class Sectional final : public Command {
  public:
   std::string_view name() const override { return "sectional"; }
+  bool restartable() const override { return true; }
   std::string_view help() const override {
     return "deterministic sectional coagulation (fixed pivot) of an acoustic case with a size-only kernel";
   }
@@ -26,6 +28,10 @@ class Sectional final : public Command {
     acoustics::RunHooks hooks;
     hooks.progress = [&](double f, double t) { ctx.report().progress("sectional", f, t); };
     hooks.cancelled = [&] { return ctx.cancel && ctx.cancel->cancelled(); };
+    auto ck = checkpoint_io(*this, cfg, out, ctx);  // --checkpoint, --resume (docs/restart.md)
+    hooks.checkpoint_interval = ck.interval;
+    hooks.checkpoint = ck.write;
+    hooks.resume = ck.resume ? &*ck.resume : nullptr;
     const auto obs = sectional::run_sectional(c, hooks);
     io::write_acoustic(out, obs, ctx.formats.csv);
     CommandResult r;

@@ -1,0 +1,26 @@
+#pragma once
+// Checkpoints of a restartable command in its output folder (docs/restart.md): a writer of
+// out/checkpoint.bin under the command's name and the hash of its resolved config (--checkpoint), and
+// under --resume the reader of the folder's checkpoint when it has one (ConfigError when it belongs to
+// another command, config, build or format).
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "agglo/core/config.hpp"
+#include "agglo/io/checkpoint.hpp"
+#include "agglo/run/command.hpp"
+
+namespace agglo::run {
+
+struct CheckpointIO {
+  // Writes the payload of the state at (step, simulated time [s]); empty without --checkpoint.
+  std::function<void(std::uint64_t step, double t, const std::string& payload)> write;
+  double interval = 0.0;                        // [s] (--checkpoint)
+  std::optional<io::CheckpointReader> resume;   // the payload to continue from; empty: from the start
+};
+
+CheckpointIO checkpoint_io(const Command& cmd, const Config& cfg, const OutputDir& out, const RunContext& ctx);
+
+}  // namespace agglo::run
