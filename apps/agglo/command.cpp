@@ -79,7 +79,8 @@ void add_common_options(CLI::App& sub, CommonArgs& args) {
   sub.add_option("-j,--threads", args.threads, "OpenMP threads (default: all cores)")->check(thread_count());
   auto* resume = sub.add_flag("--resume", args.resume,
                               "Continue the run in the output folder: ensembles (vcrit, breakup, sweep) reuse the "
-                              "finished jobs of its journal.jsonl; single runs start again");
+                              "finished jobs of its journal.jsonl; collide, acoustic and sectional continue from the "
+                              "folder's checkpoint.bin (--checkpoint); electrostatics starts again");
   sub.add_flag("--overwrite", args.overwrite, "Replace the earlier agglo run in the output folder (clears it)")
       ->excludes(resume);
   sub.add_option("--max-steps", args.budget.max_steps, "Step budget in particle-steps (default: AGGLO_MAX_STEPS or 1e12)");

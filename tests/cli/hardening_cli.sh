@@ -32,6 +32,7 @@ done
 err "--set" acoustic "$AC" --out "$T/out" --set ' =5'
 err "--set" electrostatics "$SRC/cases/electrostatics_two_spheres.toml" --out "$T/out" --set $' \t =5'
 err "--param" sweep "$DEM" --command collide --out "$T/out" --param ' ' --values 1
+err "given more than once" sweep "$DEM" --command collide --out "$T/out" --param projectile.speed --values 0.1 --param projectile.speed --values 0.2
 
 # Item 11: trailing dot, two assignments in one --set, trailing comma in --values.
 err "empty key segment" collide "$DEM" --out "$T/out" --set material.density.=2500

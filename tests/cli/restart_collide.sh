@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# agglo collide --checkpoint / --resume (docs/restart_collide.md): a run killed by the fault hook in the middle
+# agglo collide --checkpoint / --resume (docs/restart.md, "Collide"): a run killed by the fault hook in the middle
 # of its N-th checkpoint write (several N), interrupted by SIGINT, or stopped after it finished, and
 # then resumed, leaves every output byte-identical to the uninterrupted run (run.json aside; result.json
 # without its wall-time field), including the final checkpoint.bin; neutral and charged (kappa_p = 15,

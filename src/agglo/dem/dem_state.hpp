@@ -1,5 +1,5 @@
 #pragma once
-// The complete state of a DemSystem between two steps, as plain data (checkpoints, docs/restart_collide.md):
+// The complete state of a DemSystem between two steps, as plain data (checkpoints, docs/restart.md, "Collide"):
 // everything the next step reads. Restoring it into a system built from the same case continues the
 // run bitwise identically: the particles with the forces of the current positions (the next step
 // starts with the second half-kick of velocity Verlet, so the forces are not recomputed), the contact

@@ -1,5 +1,5 @@
 #pragma once
-// Checkpoint payload of a collision run (agglo collide --checkpoint; docs/restart_collide.md): the complete
+// Checkpoint payload of a collision run (agglo collide --checkpoint; docs/restart.md, "Collide"): the complete
 // impact::ImpactState written field by field (no struct padding, so equal states give equal bytes).
 #include "agglo/impact/impact_state.hpp"
 #include "agglo/io/checkpoint.hpp"

@@ -44,6 +44,8 @@ std::vector<SweepCase> sweep_grid(const std::vector<SweepAxis>& axes) {
     if (std::all_of(a.key.begin(), a.key.end(), [](unsigned char c) { return std::isspace(c) != 0; }))
       throw ConfigError("--param: a config key is required (e.g. population.1.diameter)");
     if (a.values.empty()) throw ConfigError(fmt::format("--values for '{}': at least one value is required", a.key));
+    if (std::count_if(axes.begin(), axes.end(), [&](const SweepAxis& b) { return b.key == a.key; }) > 1)
+      throw ConfigError(fmt::format("--param '{}' is given more than once (each key is one axis of the grid)", a.key));
     n *= a.values.size();
   }
   std::vector<SweepCase> cases(n);

@@ -1,5 +1,7 @@
 #include "agglo/electrostatics/bem/bem_solver.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -148,10 +150,9 @@ std::vector<double> BemSolver::solve_bound_charge(bem::BemOperator& A, const std
   const GmresOptions go{opt_.tolerance, opt_.max_iterations, restart, true};
   gr = gmres(op, rhs, u, ps.area, go);
   if (!gr.converged)
-    throw NumericalError("bem: GMRES did not converge within " + std::to_string(opt_.max_iterations) +
-                         " iterations (relative residual " + std::to_string(gr.residual) + " > tolerance " +
-                         std::to_string(opt_.tolerance) + "; " + std::to_string(ps.nb) + " spheres, " +
-                         std::to_string(N) + " patches, matvec " + opt_.matvec + ")");
+    throw NumericalError(fmt::format("bem: GMRES did not converge within {} iterations (relative residual {:.3g} > "
+                                     "tolerance {:.3g}; {} spheres, {} patches, matvec {})",
+                                     opt_.max_iterations, gr.residual, opt_.tolerance, ps.nb, N, opt_.matvec));
   A.project(u);
   std::vector<double> sigma_b(N);
   for (std::size_t i = 0; i < N; ++i) sigma_b[i] = sigma0[i] + u[i];

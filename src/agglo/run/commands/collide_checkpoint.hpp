@@ -1,5 +1,5 @@
 #pragma once
-// Checkpoints of `agglo collide` (docs/restart_collide.md): with --checkpoint INTERVAL a checkpoint of the
+// Checkpoints of `agglo collide` (docs/restart.md, "Collide"): with --checkpoint INTERVAL a checkpoint of the
 // whole collision state (io/impact_checkpoint.hpp) is written each time the simulated time since
 // launch crosses a multiple of INTERVAL, when the run is interrupted (at the step boundary where the
 // cancellation is seen) and at the end. Under --resume the run continues from the folder's checkpoint
