@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace agglo::es::fmm {
 
@@ -41,39 +42,23 @@ void direct_normal_field(const Points& pts, const Points& normals, std::span<con
   const double *X = pts.x.data(), *Y = pts.y.data(), *Z = pts.z.data();
   const double *NX = normals.x.data(), *NY = normals.y.data(), *NZ = normals.z.data();
   const double* Q = q.data();
-  const int nthreads = omp_get_max_threads();
-  std::vector<std::vector<double>> acc(nthreads);
-  // Rows are paired (i, n-1-i) so that every work item has the same triangular cost.
-  const std::size_t half = (n + 1) / 2;
-#pragma omp parallel
-  {
-    std::vector<double>& a = acc[omp_get_thread_num()];
-    a.assign(n, 0.0);
-    double* A = a.data();
-#pragma omp for schedule(dynamic, 8)
-    for (std::size_t k = 0; k < half; ++k) {
-      for (int pass = 0; pass < 2; ++pass) {
-        const std::size_t i = pass == 0 ? k : n - 1 - k;
-        if (pass == 1 && i == k) break;
-        const double xi = X[i], yi = Y[i], zi = Z[i], nxi = NX[i], nyi = NY[i], nzi = NZ[i];
-        const double qi = Q[i];
-        double yi_acc = 0.0;
-#pragma omp simd reduction(+ : yi_acc)
-        for (std::size_t j = i + 1; j < n; ++j) {
-          const double dx = xi - X[j], dy = yi - Y[j], dz = zi - Z[j];
-          const double r2 = dx * dx + dy * dy + dz * dz;
-          const double inv = r2 > 0.0 ? 1.0 / std::sqrt(r2) : 0.0;
-          const double inv3 = inv * inv * inv;
-          yi_acc += Q[j] * (dx * nxi + dy * nyi + dz * nzi) * inv3;
-          A[j] -= qi * (dx * NX[j] + dy * NY[j] + dz * NZ[j]) * inv3;
-        }
-        A[i] += yi_acc;
-      }
+  // Every row is summed whole, over j in a fixed order, by one thread: the result does not depend on the
+  // thread count or the schedule (a symmetric evaluation with per-thread accumulators, half the
+  // arithmetic, gave last-bit differences between runs on more than one thread). j = i gives r = 0: skipped.
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double xi = X[i], yi = Y[i], zi = Z[i], nxi = NX[i], nyi = NY[i], nzi = NZ[i];
+    double acc = 0.0;
+#pragma omp simd reduction(+ : acc)
+    for (std::size_t j = 0; j < n; ++j) {
+      const double dx = xi - X[j], dy = yi - Y[j], dz = zi - Z[j];
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      const double inv = r2 > 0.0 ? 1.0 / std::sqrt(r2) : 0.0;
+      const double inv3 = inv * inv * inv;
+      acc += Q[j] * (dx * nxi + dy * nyi + dz * nzi) * inv3;
     }
+    y[i] = acc;
   }
-  std::fill(y.begin(), y.end(), 0.0);
-  for (const auto& a : acc)
-    for (std::size_t i = 0; i < n; ++i) y[i] += a[i];
 }
 
 }  // namespace agglo::es::fmm

@@ -53,9 +53,9 @@ void direct_sum(std::span<const Vec3> targets, std::span<const Vec3> sources,
                 std::span<const double> charges, std::vector<double>* potential,
                 std::vector<Vec3>* field);
 
-// Normal field at the source points themselves, symmetric pair loop (each pair's distance is
-// computed once):  y_i = sum_{j != i} q_j (x_i - x_j) . n_i / |x_i - x_j|^3.
-// The BEM matrix-vector product (direct mode). OpenMP with per-thread accumulators.
+// Normal field at the source points themselves:  y_i = sum_{j != i} q_j (x_i - x_j) . n_i / |x_i - x_j|^3.
+// The BEM matrix-vector product (direct mode). OpenMP over rows, each row summed in a fixed order: the
+// result is bitwise the same at any thread count.
 void direct_normal_field(const Points& pts, const Points& normals, std::span<const double> q,
                          std::span<double> y);
 
