@@ -83,6 +83,8 @@ status=$(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1])
 if [ $rc -eq 130 ]; then
   [ "$status" = incomplete ] || fail "SIGINT: status $status"
   grep -q "^incomplete: interrupted" "$T/int/run.log" || fail "SIGINT: run.log not marked incomplete"
+  /usr/bin/python3 -c 'import netCDF4, sys; d = netCDF4.Dataset(sys.argv[1]); sys.exit(d.getncattr("status") != "incomplete" or len(d.dimensions["time"]) < 1)' \
+    "$T/int/results.nc" || fail "SIGINT: results.nc missing, not marked incomplete or empty"
   echo "ok   SIGINT at $(grep -o 'interrupted at t = [^)]*)' "$T/int/run.log")"
 else
   [ $rc -eq 0 ] || fail "SIGINT'd run: exit $rc"

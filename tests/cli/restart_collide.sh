@@ -61,11 +61,13 @@ check_case() {  # check_case TAG CASE INTERVAL KILLS [settings...]
   # resuming a finished run changes nothing
   collide "$case" --out "$ref" --threads 1 --checkpoint "$iv" --resume "$@" || fail "$tag: resume of a finished run"
   same "$ref" "$T/$tag-kill${kills##* }"
-  # another config: refused, one line, exit 2
+  # another config: refused, one line, exit 2, the folder left as it was (run.json included)
+  cp -r "$ref" "$T/$tag-before-refusal"
   collide "$case" --out "$ref" --checkpoint "$iv" --resume "$@" --set material.friction=0.25; rc=$?
   [ $rc -eq 2 ] || fail "$tag: resume with another config must exit 2, got $rc"
   [ "$(wc -l < "$T/stderr")" -eq 1 ] || fail "$tag: the refusal must be one line: $(cat "$T/stderr")"
   grep -q "config hash" "$T/stderr" || fail "$tag: the refusal must name the config hash: $(cat "$T/stderr")"
+  diff -r "$T/$tag-before-refusal" "$ref" > /dev/null || fail "$tag: the refused resume changed the folder"
 }
 
 check_case neutral "$NT" 5e-5 "1 2 4" "${NS[@]}"
@@ -81,6 +83,8 @@ pid=$!
 for _ in $(seq 1 400); do [ -f "$T/long/checkpoint.bin" ] && break; sleep 0.02; done
 kill -INT $pid; wait $pid; rc=$?
 [ $rc -eq 130 ] || fail "SIGINT must give exit 130, got $rc (the run may have ended first)"
+/usr/bin/python3 -c 'import netCDF4, sys; d = netCDF4.Dataset(sys.argv[1]); sys.exit(d.getncattr("status") != "incomplete" or len(d.dimensions["time"]) < 1)' \
+  "$T/long/results.nc" || fail "SIGINT: results.nc missing, not marked incomplete or empty"
 # the checkpoint's simulated time (header: magic, format, 4 strings, step, time) is off the interval grid
 /usr/bin/python3 - "$T/long/checkpoint.bin" <<'PY' || fail "no checkpoint written at the interruption"
 import struct, sys

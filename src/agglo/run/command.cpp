@@ -1,6 +1,8 @@
 #include "agglo/run/command.hpp"
 
 #include <chrono>
+#include <fstream>
+#include <sstream>
 
 #include <omp.h>
 
@@ -81,8 +83,8 @@ void write_run_files(const OutputDir& out, const Config& cfg, std::string_view c
 }
 
 void write_results_nc(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
-                      const io::Dataset& data) {
-  const nlohmann::json provenance{
+                      const io::Dataset& data, std::string_view status) {
+  nlohmann::json provenance{
       {"Conventions", "CF-1.8"},
       {"title", fmt::format("agglo {} of {}", command, std::filesystem::path(cfg.file()).filename().string())},
       {"agglo_version", kVersion},
@@ -90,8 +92,20 @@ void write_results_nc(const OutputDir& out, const Config& cfg, std::string_view 
       {"command", std::string(command)},
       {"seed", seed},
       {"config", cfg.resolved_toml()}};
+  if (status != "complete") provenance["status"] = std::string(status);
   io::write_netcdf(out, data, io::kResultsFile, provenance);
 }
+
+namespace {
+// The whole text of a file; "" when it is missing or unreadable.
+std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+}  // namespace
 
 CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
                       const nlohmann::json& extra) {
@@ -104,6 +118,9 @@ CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::pa
   claim_output_folder(out_dir, folder_policy(ctx), cmd.name());
   if (restart) claim_output_folder(out_dir, FolderPolicy::overwrite, cmd.name());
   const OutputDir out(out_dir);
+  // A restartable run continued in place whose input is refused (e.g. a checkpoint of another config)
+  // leaves the folder as it was: its run.json is put back and config.resolved.toml is not touched.
+  const std::string previous_run = ctx.resume && cmd.restartable() ? read_text_file(out.file("run.json")) : "";
   write_run_started(out, cmd.name(), cfg.file());
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   auto merged = [&](nlohmann::json details) {
@@ -116,6 +133,7 @@ CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::pa
     res = cmd.run(cfg, out, ctx);
   } catch (const ConfigError& e) {  // input found invalid only by the engine: leave no new folder behind
     if (!existed) std::filesystem::remove_all(out_dir, ec);
+    else if (!previous_run.empty()) out.write_text("run.json", previous_run);
     else write_run_files(out, cfg, cmd.name(), cmd.seed(cfg), seconds(), merged({{"error", e.what()}}), "failed");
     throw;
   } catch (const InterruptedError& e) {

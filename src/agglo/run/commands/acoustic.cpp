@@ -45,7 +45,12 @@ class Acoustic final : public Command {
     hooks.resume = ck.resume ? &*ck.resume : nullptr;
     const auto obs = acoustics::run_acoustic(c, hooks);
     io::write_acoustic(out, obs, ctx.formats.csv);
-    if (!obs.interrupted.empty()) throw InterruptedError(obs.interrupted);  // partial results flushed
+    if (!obs.interrupted.empty()) {  // partial results flushed (results.nc with status "incomplete")
+      if (ctx.formats.netcdf)
+        write_results_nc(out, cfg, name(), static_cast<long long>(c.engine.seed), io::acoustic_dataset(obs),
+                         "incomplete");
+      throw InterruptedError(obs.interrupted);
+    }
     CommandResult r;
     r.summary = io::acoustic_summary(obs);
     r.details = r.summary;

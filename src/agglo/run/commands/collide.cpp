@@ -48,6 +48,7 @@ class Collide final : public ImpactCommand {
     } catch (const InterruptedError&) {  // flush the history so far; run.json marks the run incomplete
       if (ctx.formats.csv) io::write_timeseries(out, rec);
       if (ctx.formats.csv) io::write_snapshots(out, rec);
+      if (ctx.formats.netcdf) write_results_nc(out, cfg, name(), 0, io::collide_dataset(rec, nullptr), "incomplete");
       throw;
     }
     CommandResult r;
