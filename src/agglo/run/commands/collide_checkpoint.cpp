@@ -2,22 +2,10 @@
 #include "agglo/run/commands/collide_checkpoint.hpp"
 
 #include <cmath>
-#include <filesystem>
 
 #include "agglo/io/impact_checkpoint.hpp"
 
 namespace agglo::run {
-
-namespace {
-
-// Half-written checkpoints of a killed process (the last complete one, if any, is checkpoint.bin).
-void remove_partial_checkpoints(const OutputDir& out) {
-  const std::string prefix = std::string(io::kCheckpointFile) + ".tmp-";
-  for (const auto& e : std::filesystem::directory_iterator(out.path()))
-    if (e.path().filename().string().rfind(prefix, 0) == 0) std::filesystem::remove(e.path());
-}
-
-}  // namespace
 
 CollideCheckpoints::CollideCheckpoints(const Config& cfg, const OutputDir& out, const RunContext& ctx)
     : out_(out), ctx_(ctx) {
@@ -26,8 +14,7 @@ CollideCheckpoints::CollideCheckpoints(const Config& cfg, const OutputDir& out, 
 }
 
 std::optional<impact::ImpactState> CollideCheckpoints::resume_state() const {
-  if (!ctx_.resume) return std::nullopt;
-  remove_partial_checkpoints(out_);
+  if (!ctx_.resume) return std::nullopt;  // a killed writer's checkpoint.bin.tmp-<pid>: removed by OutputDir
   if (!io::has_checkpoint(out_)) return std::nullopt;
   io::CheckpointHeader found;
   auto reader = io::read_checkpoint(out_, header_, found);
