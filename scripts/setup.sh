@@ -5,7 +5,7 @@ cd "$(dirname "$0")/.."
 PKGS="build-essential cmake pkg-config libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
       nlohmann-json3-dev librandom123-dev libgtest-dev libbenchmark-dev python3-matplotlib python3-numpy
       clang-tidy libnetcdf-dev pybind11-dev python3-dev python3-pytest python3-xarray python3-netcdf4
-      python3-distributed"
+      python3-distributed libopenmpi-dev openmpi-bin"
 missing=""
 for p in $PKGS; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
 if [ -n "$missing" ]; then

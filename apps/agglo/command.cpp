@@ -9,6 +9,7 @@
 
 #include "agglo/core/error.hpp"
 #include "agglo/io/output_dir.hpp"
+#include "agglo/run/ranks.hpp"
 
 namespace agglo::cli {
 
@@ -130,8 +131,9 @@ run::RunContext context(const CommonArgs& args) {
   std::signal(SIGTERM, on_interrupt);
   static run::Budgets budgets;
   budgets = run::resolve_budgets(args.budget);
+  static run::SilentReporter silent;  // MPI ranks other than 0 print nothing (rank 0 reports for the run)
   run::RunContext ctx;
-  ctx.reporter = &reporter;
+  ctx.reporter = run::is_output_rank() ? static_cast<run::Reporter*>(&reporter) : &silent;
   ctx.cancel = &interrupt_token();
   ctx.threads = args.threads;
   ctx.resume = args.resume;
@@ -144,14 +146,15 @@ run::RunContext context(const CommonArgs& args) {
 
 void dry_run(const std::string& what, const Estimate& e, const run::RunContext& ctx) {
   const auto b = run::budgets_of(ctx);
-  std::printf("%s: valid; estimated cost (dry run: nothing run or written)\n%s", one_line(what).c_str(),
-              run::describe(e, b).c_str());
+  if (run::is_output_rank())
+    std::printf("%s: valid; estimated cost (dry run: nothing run or written)\n%s", one_line(what).c_str(),
+                run::describe(e, b).c_str());
   std::fflush(stdout);
   run::check_budgets(e, b, what);
 }
 
 void run_plot_script(const std::string& script, const std::filesystem::path& out, const std::vector<std::string>& args) {
-  if (!plots_enabled() || script.empty()) return;
+  if (!plots_enabled() || script.empty() || !run::is_output_rank()) return;
   namespace fs = std::filesystem;
   fs::path path = fs::path(AGGLO_SOURCE_DIR) / "scripts" / script;
   if (!fs::exists(path)) {

@@ -2,15 +2,34 @@
 // 130 interrupted by SIGINT (Ctrl-C), 143 by SIGTERM.
 #include <cstdio>
 #include <exception>
+#include <memory>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
 #include "agglo/core/version.hpp"
+#include "agglo/mpi/comm.hpp"
+#include "agglo/run/ranks.hpp"
 #include "command.hpp"
 
+namespace {
+// Only rank 0 of an MPI run prints errors (every rank meets the same error: the pipeline runs on each
+// and ensemble outcomes are shared), so a refused case reads as one line as without MPI.
+template <class... Args>
+void report(const char* format, Args... args) {
+  if (agglo::run::is_output_rank()) std::fprintf(stderr, format, args...);
+}
+}  // namespace
+
 int main(int argc, char** argv) {
+  std::unique_ptr<agglo::mpi::Session> mpi;  // MPI only when started by mpirun (docs/scaling.md)
+  try {
+    mpi = std::make_unique<agglo::mpi::Session>(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "agglo: error: %s\n", agglo::one_line(e.what()).c_str());
+    return 2;
+  }
   CLI::App app{
       "agglo - adhesive DEM with surface-resolved electrostatics, and DSMC acoustic agglomeration.\n"
       "Run `agglo <command> --help` for the options of a command."};
@@ -24,21 +43,21 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::fprintf(stderr, "agglo: error: %s (see --help)\n", agglo::one_line(e.what()).c_str());
+    report("agglo: error: %s (see --help)\n", agglo::one_line(e.what()).c_str());
     return 2;
   } catch (const agglo::ConfigError& e) {
-    std::fprintf(stderr, "agglo: error: %s\n", agglo::one_line(e.what()).c_str());
+    report("agglo: error: %s\n", agglo::one_line(e.what()).c_str());
     return 2;
   } catch (const agglo::NumericalError& e) {
-    std::fprintf(stderr, "agglo: numerical failure: %s\n", agglo::one_line(e.what()).c_str());
+    report("agglo: numerical failure: %s\n", agglo::one_line(e.what()).c_str());
     return 3;
   } catch (const agglo::InterruptedError& e) {
-    std::fprintf(stderr, "agglo: %s; the results so far are in the output folder, marked incomplete in run.json "
+    report("agglo: %s; the results so far are in the output folder, marked incomplete in run.json "
                  "(ensembles keep their finished jobs in journal.jsonl); rerun with --resume to continue\n",
                  agglo::one_line(e.what()).c_str());
     return agglo::cli::interrupt_exit_code();
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "agglo: internal error: %s\n", agglo::one_line(e.what()).c_str());
+    report("agglo: internal error: %s\n", agglo::one_line(e.what()).c_str());
     return 1;
   }
   return 0;

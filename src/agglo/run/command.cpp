@@ -14,6 +14,8 @@
 #include "agglo/core/version.hpp"
 #include "agglo/io/netcdf_writer.hpp"
 #include "agglo/run/commands.hpp"
+#include "agglo/run/ensemble.hpp"
+#include "agglo/run/ranks.hpp"
 
 namespace agglo::run {
 
@@ -78,6 +80,7 @@ void write_run_files(const OutputDir& out, const Config& cfg, std::string_view c
   out.write_text("config.resolved.toml", cfg.resolved_toml());
   auto meta = run_metadata(std::string(command), cfg.file(), seed, wall_time_s);
   meta["status"] = status;
+  meta["ranks"] = rank_count();  // MPI processes of the run (1 without mpirun)
   if (!details.is_null() && !details.empty()) meta["details"] = details;
   out.write_json("run.json", meta);
 }
@@ -110,14 +113,19 @@ std::string read_text_file(const std::filesystem::path& path) {
 CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
                       const nlohmann::json& extra) {
   const auto start = std::chrono::steady_clock::now();
+  if (rank_count() > 1 && !in_job() && !cmd.resumable())
+    throw ConfigError(fmt::format("{} is a single run; under mpirun ({} ranks) run an ensemble of it (sweep, or "
+                                  "acoustic --seeds) or one of vcrit, breakup, calibrate",
+                                  cmd.name(), rank_count()));
   check_budgets(plan(cmd, cfg, ctx), budgets_of(ctx), cfg.file());
   std::error_code ec;
   const bool existed = std::filesystem::exists(out_dir, ec);
   // A single run without checkpoints starts again under --resume; a restartable one continues in place.
   const bool restart = ctx.resume && !cmd.resumable() && !cmd.restartable();
-  claim_output_folder(out_dir, folder_policy(ctx), cmd.name());
-  if (restart) claim_output_folder(out_dir, FolderPolicy::overwrite, cmd.name());
-  const OutputDir out(out_dir);
+  const auto folder = claim_run_folder(out_dir, folder_policy(ctx), cmd.name());  // rank 0's, or a scratch
+  const ScratchFolder scratch(folder, out_dir);
+  if (restart) claim_output_folder(folder, FolderPolicy::overwrite, cmd.name());
+  const OutputDir out(folder);
   // A restartable run continued in place whose input is refused (e.g. a checkpoint of another config)
   // leaves the folder as it was: its run.json is put back and config.resolved.toml is not touched.
   const std::string previous_run = ctx.resume && cmd.restartable() ? read_text_file(out.file("run.json")) : "";
@@ -132,7 +140,7 @@ CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::pa
   try {
     res = cmd.run(cfg, out, ctx);
   } catch (const ConfigError& e) {  // input found invalid only by the engine: leave no new folder behind
-    if (!existed) std::filesystem::remove_all(out_dir, ec);
+    if (!existed) std::filesystem::remove_all(folder, ec);
     else if (!previous_run.empty()) out.write_text("run.json", previous_run);
     else write_run_files(out, cfg, cmd.name(), cmd.seed(cfg), seconds(), merged({{"error", e.what()}}), "failed");
     throw;

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <thread>
 
 #include <fmt/format.h>
 #include <omp.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/mpi/comm.hpp"
+#include "agglo/run/ensemble_farm.hpp"
 
 namespace agglo::run {
 
@@ -17,8 +20,14 @@ int resolve_threads(int requested) {
 }
 
 namespace {
+thread_local bool t_in_job = false;
+}  // namespace
 
-// Indices of the jobs to run; the others are filled from the journal.
+bool in_job() { return t_in_job; }
+
+JobScope::JobScope() : saved_(t_in_job) { t_in_job = true; }
+JobScope::~JobScope() { t_in_job = saved_; }
+
 std::vector<std::size_t> pending_jobs(const std::vector<Job>& jobs, const Journal* journal,
                                       std::vector<JobOutcome>& out) {
   std::vector<std::size_t> todo;
@@ -36,18 +45,19 @@ std::vector<std::size_t> pending_jobs(const std::vector<Job>& jobs, const Journa
 }
 
 void run_one(const Job& job, std::size_t index, int threads, const EnsembleOptions& opt, JobOutcome& out) {
+  const auto start = std::chrono::steady_clock::now();
   try {
     throw_if_cancelled(opt.cancel);
     out.result = job.run(JobContext{index, threads, opt.cancel});
-    if (opt.journal) opt.journal->record(job.key, index, out.result);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (opt.journal) opt.journal->record(job.key, index, out.result, {{"rank", mpi::rank()}, {"seconds", out.seconds}});
   } catch (...) {
     out.error = std::current_exception();
   }
 }
 
-}  // namespace
-
 std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOptions& opt) {
+  if (mpi::size() > 1 && !in_job()) return run_jobs_on_ranks(jobs, opt);
   std::vector<JobOutcome> out(jobs.size());
   const std::vector<std::size_t> todo = pending_jobs(jobs, opt.journal, out);
   if (todo.empty()) return out;
@@ -56,6 +66,7 @@ std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOpt
   const int per_job = std::max(1, total / workers);
   std::atomic<std::size_t> next{0}, done{jobs.size() - todo.size()};
   auto worker = [&] {
+    const JobScope scope;  // a run_jobs inside these jobs stays in this process
     omp_set_num_threads(per_job);
     for (std::size_t k; (k = next++) < todo.size();) {
       run_one(jobs[todo[k]], todo[k], per_job, opt, out[todo[k]]);
@@ -117,9 +128,9 @@ void rethrow_first_error(const std::vector<JobOutcome>& outcomes, const std::vec
   if (failed == 0) return;
   const auto& error = outcomes[first].error;
   if (!jobs || is_interruption(error) || (*jobs)[first].key.empty()) std::rethrow_exception(error);
-  const std::string more = failed > 1 ? fmt::format(" ({} of {} jobs failed; the others completed)", failed,
-                                                    outcomes.size())
-                                      : std::string();
+  const std::string more = outcomes.size() > 1 ? fmt::format(" ({} of {} jobs failed; the others completed)",
+                                                             failed, outcomes.size())
+                                               : std::string();
   rethrow_prefixed(error, fmt::format("job '{}'{}: ", (*jobs)[first].key, more));
 }
 

@@ -4,7 +4,9 @@
 // threads. Results are keyed by job index, so they do not depend on scheduling; every job runs even
 // when another fails, and each failure is kept with its job; finished jobs go to the journal as they
 // finish, and jobs the journal already holds are not run again (--resume). A cancel token stops the
-// pool from starting new jobs.
+// pool from starting new jobs. Under `mpirun -n K` (K > 1) the outermost run_jobs spreads its jobs over
+// the ranks (run/ensemble_farm.hpp); every rank must then call it with the same jobs, and every rank
+// gets the same outcomes back.
 #include <exception>
 #include <functional>
 #include <string>
@@ -32,6 +34,7 @@ struct JobOutcome {
   nlohmann::json result;
   std::exception_ptr error;  // null when the job succeeded
   bool reused = false;       // taken from the journal
+  double seconds = 0.0;      // wall time of the job (0 when reused or failed)
 };
 
 struct EnsembleOptions {
@@ -49,6 +52,9 @@ std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOpt
 // the failed job's key ("job 'v=0.18 offset=0.05': ...") and says how many jobs failed; the error
 // type (ConfigError, NumericalError, InterruptedError) is kept.
 void rethrow_first_error(const std::vector<JobOutcome>& outcomes, const std::vector<Job>* jobs = nullptr);
+
+// True on a thread that is running a job of an ensemble (a run_jobs inside a job runs in its process).
+bool in_job();
 
 // Total threads to use: `requested` if > 0, else all cores.
 int resolve_threads(int requested);

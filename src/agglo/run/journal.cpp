@@ -37,14 +37,18 @@ Journal::Journal(std::filesystem::path file, std::string context, bool resume)
     std::filesystem::remove(file_);
     return;
   }
-  std::ifstream in(file_);
+  std::ifstream in(file_, std::ios::binary);
   std::string line;
+  bool ends_with_newline = true;
   while (std::getline(in, line)) {
+    ends_with_newline = !in.eof();
     const auto j = nlohmann::json::parse(line, nullptr, /*allow_exceptions=*/false);
     if (j.is_discarded() || !j.is_object() || !j.contains("result")) continue;  // torn line
     if (j.value("context", std::string()) != context_) continue;
     entries_[j.value("job", std::string())] = j["result"];
   }
+  // A line torn by a killed run is ended, so that the next entry starts on a line of its own.
+  if (!ends_with_newline) std::ofstream(file_, std::ios::app) << '\n';
 }
 
 std::optional<nlohmann::json> Journal::find(const std::string& key) const {
@@ -54,9 +58,10 @@ std::optional<nlohmann::json> Journal::find(const std::string& key) const {
   return it->second;
 }
 
-void Journal::record(const std::string& key, std::size_t index, const nlohmann::json& result) {
-  const nlohmann::json j = {{"context", context_}, {"job", hash_hex(key)}, {"key", key}, {"index", index},
-                            {"result", result}};
+void Journal::record(const std::string& key, std::size_t index, const nlohmann::json& result,
+                     const nlohmann::json& about) {
+  nlohmann::json j = {{"context", context_}, {"job", hash_hex(key)}, {"key", key}, {"index", index}, {"result", result}};
+  for (auto it = about.begin(); it != about.end(); ++it) j[it.key()] = it.value();
   std::lock_guard<std::mutex> lk(mutex_);
   entries_[hash_hex(key)] = result;
   std::ofstream out(file_, std::ios::app);

@@ -2,7 +2,7 @@
 // Journal of the finished jobs of an ensemble (vcrit, breakup, sweep): one JSON line per job,
 // appended and flushed as each job finishes, in <output folder>/journal.jsonl:
 //   {"context": <hash of the command and the case>, "job": <hash of the job key>, "key": "...",
-//    "index": i, "result": {...}}
+//    "index": i, "result": {...}, "rank": r, "seconds": s}   (the rank that ran it and its wall time)
 // `--resume` into the same folder reuses every entry whose context matches and repeats only the
 // jobs that are missing. The context hash covers the command and the resolved case except the
 // sections that only choose which jobs run (e.g. [vcrit], [breakup]), so a break-up curve extended by
@@ -33,8 +33,9 @@ class Journal {
 
   // The stored result of job `key`, if this context has one.
   std::optional<nlohmann::json> find(const std::string& key) const;
-  // Appends a finished job (thread-safe).
-  void record(const std::string& key, std::size_t index, const nlohmann::json& result);
+  // Appends a finished job (thread-safe); the members of `about` (e.g. rank and seconds) are added to its line.
+  void record(const std::string& key, std::size_t index, const nlohmann::json& result,
+              const nlohmann::json& about = nlohmann::json::object());
   std::size_t loaded() const { return entries_.size(); }
   const std::filesystem::path& file() const { return file_; }
 

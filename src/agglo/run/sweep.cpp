@@ -10,6 +10,7 @@
 #include "agglo/io/sweep_dataset.hpp"
 #include "agglo/io/sweep_table.hpp"
 #include "agglo/run/ensemble.hpp"
+#include "agglo/run/ranks.hpp"
 
 namespace agglo::run {
 
@@ -112,6 +113,7 @@ Estimate sweep_estimate(const Command& cmd, const SweepPlan& plan, const RunCont
 SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out, const RunContext& ctx) {
   SweepResult res;
   res.cases = plan.cases;
+  const auto root = plan.cases_root.empty() ? out.path() : plan.cases_root;  // where the case folders go
   std::vector<Job> jobs;
   for (std::size_t i = 0; i < res.cases.size(); ++i)
     jobs.push_back({joined(res.cases[i].assignments), [&, i](const JobContext& jc) {
@@ -121,7 +123,7 @@ SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out,
                       sub.threads = jc.threads;
                       sub.overwrite = true;
                       nlohmann::json extra = {{"sweep_assignment", joined(res.cases[i].assignments)}};
-                      return execute(cmd, plan.configs[i], out.path() / res.cases[i].folder, sub, extra).summary;
+                      return execute(cmd, plan.configs[i], root / res.cases[i].folder, sub, extra).summary;
                     }});
   Journal journal(out.file("journal.jsonl"), plan.journal_key, ctx.resume);
   const auto outcomes = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), "sweep"});
@@ -169,11 +171,13 @@ SweepResult execute_sweep(const Command& cmd, const Config& base, const std::vec
   } catch (const ConfigError&) {
     seed = cmd.seed(plan.configs.front());
   }
-  claim_output_folder(path, folder_policy(ctx), "sweep");
-  OutputDir out(path);
+  const auto folder = claim_run_folder(path, folder_policy(ctx), "sweep");  // rank 0's, or a scratch folder
+  const ScratchFolder scratch(folder, path);
+  OutputDir out(folder);
   write_run_started(out, "sweep", base.file());
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   SweepResult res;
+  plan.cases_root = path;  // under MPI every rank writes the cases it runs there (not into its scratch folder)
   try {
     res = run_sweep(cmd, plan, out, ctx);
   } catch (const std::exception& e) {  // the journal keeps the finished cases; run.json says why it stopped

@@ -44,6 +44,7 @@ struct SweepPlan {
   std::vector<SweepCase> cases;
   std::vector<Config> configs;  // by case index, not yet parsed (execute parses them)
   std::string journal_key;      // identifies the base case and command in journal.jsonl
+  std::filesystem::path cases_root;  // folder of the case folders (empty: run_sweep's `out`)
 };
 SweepPlan plan_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes);
 

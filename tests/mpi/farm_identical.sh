@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The MPI task farm (docs/scaling.md): `mpirun -n 2` and `-n 3 --oversubscribe` give the same outputs as
+# one process for vcrit, breakup, calibrate and sweep (every file; results.nc by content with timing
+# aside; journal.jsonl as a set of results; run.json records the rank count). A single-run command under
+# mpirun is refused with one line. $1 = agglo, $2 = source dir, $3 = mpirun.
+. "$(dirname "$0")/lib.sh"
+NT=cases/seed000_neutral_tetrahedron.toml
+SHORT=(-q --no-plots --set time.after_contact=2e-4 --set output.snapshot_interval=0)
+
+check() {  # name, args...: one process on 2 threads vs 2 and 3 ranks of 1 thread
+  local name=$1; shift
+  "$AGGLO" "$@" --threads 2 --out "$TMP/$name.1" > /dev/null 2>&1 || fail "$name: one process"
+  for k in 2 3; do
+    run_mpi $k "$@" --threads 1 --out "$TMP/$name.$k" > "$TMP/$name.$k.log" 2>&1 ||
+      fail "$name: $k ranks: $(tail -3 "$TMP/$name.$k.log")"
+    same_outputs "$TMP/$name.1" "$TMP/$name.$k" || fail "$name: $k ranks differ from one process"
+    [ "$(ranks_of "$TMP/$name.$k")" = "$k" ] || fail "$name: run.json ranks"
+  done
+  [ "$(ranks_of "$TMP/$name.1")" = 1 ] || fail "$name: run.json ranks of one process"
+  echo "ok $name"
+}
+
+check vcrit vcrit $NT "${SHORT[@]}" --set vcrit.scan_points=5 --set vcrit.v_min=0.05 --set vcrit.v_max=0.8 \
+  --set vcrit.tolerance=0.01
+check breakup breakup $NT "${SHORT[@]}" --set 'breakup.speeds=[0.1,0.15,0.2,0.3,0.4]' --set breakup.samples=3
+check sweep sweep $NT --command collide --param projectile.speed --values 0.1,0.2,0.3,0.4 \
+  --param material.restitution --values 0.8,0.9 "${SHORT[@]}"
+cat > "$TMP/cal.toml" << CAL
+[calibrate]
+grid_points = 5
+refine_rounds = 1
+[[parameter]]
+key = "material.restitution"
+lower = 0.6
+upper = 0.98
+[[target]]
+case = "$SRC/$NT"
+value = 0.2
+tolerance = 0.01
+CAL
+check calibrate calibrate "$TMP/cal.toml" -q --no-plots
+
+# A single run is not an ensemble: refused on every rank, reported once, nothing written.
+run_mpi 2 collide $NT "${SHORT[@]}" --out "$TMP/single" > "$TMP/single.out" 2> "$TMP/single.err"
+rc=$?
+[ $rc -eq 2 ] || fail "collide under mpirun: exit $rc, expected 2"
+[ "$(grep -c "agglo: error: collide is a single run" "$TMP/single.err")" = 1 ] ||
+  fail "collide under mpirun: message: $(cat "$TMP/single.err")"
+[ -e "$TMP/single" ] && fail "collide under mpirun left a folder"
+echo "ok single run refused"

@@ -1,0 +1,38 @@
+# Shared by tests/mpi/*.sh: $1 = agglo executable, $2 = source dir, $3 = mpirun.
+# run_mpi K ARGS... runs `mpirun -n K agglo ARGS` (as root and beyond the core count where needed);
+# same_outputs A B compares two output folders: every file bit for bit, results.nc by content with the
+# timing variables aside, run.json only by status; journal.jsonl by its set of (key, result).
+set -u
+AGGLO=$1; SRC=$(cd "$2" && pwd); MPIRUN=$3
+TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+fail() { echo "FAIL: $*"; exit 1; }
+cd "$SRC" || exit 1
+
+run_mpi() {
+  local k=$1; shift
+  "$MPIRUN" -n "$k" --bind-to none "$AGGLO" "$@"
+}
+
+journal_set() {  # journal.jsonl -> sorted "key result" lines
+  /usr/bin/python3 -c '
+import json, sys
+rows = sorted(json.dumps([j["key"], j["result"]], sort_keys=True) for j in map(json.loads, open(sys.argv[1])))
+print("\n".join(rows))' "$1"
+}
+
+same_outputs() {
+  local a=$1 b=$2 f rel
+  [ "$(cd "$a" && find . -type f | sort)" = "$(cd "$b" && find . -type f | sort)" ] || { echo "file lists differ: $a $b"; return 1; }
+  while IFS= read -r rel; do
+    f=$(basename "$rel")
+    case "$f" in
+      run.json) /usr/bin/python3 -c 'import json,sys; a,b=(json.load(open(p)) for p in sys.argv[1:]); sys.exit(a["status"]!=b["status"])' "$a/$rel" "$b/$rel" || { echo "status differs: $rel"; return 1; } ;;
+      journal.jsonl) [ "$(journal_set "$a/$rel")" = "$(journal_set "$b/$rel")" ] || { echo "journal differs: $rel"; return 1; } ;;
+      results.nc) /usr/bin/python3 "$SRC/tests/cli/same_results_nc.py" "$a/$rel" "$b/$rel" || { echo "differs: $rel"; return 1; } ;;
+      *) cmp -s "$a/$rel" "$b/$rel" || { echo "differs: $rel"; return 1; } ;;
+    esac
+  done < <(cd "$a" && find . -type f | sort)
+}
+
+ranks_of() { /usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["ranks"])' "$1/run.json"; }
