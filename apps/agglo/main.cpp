@@ -5,11 +5,13 @@
 #include <memory>
 
 #include <CLI/CLI.hpp>
+#include <omp.h>
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
 #include "agglo/core/version.hpp"
 #include "agglo/mpi/comm.hpp"
+#include "agglo/run/ensemble.hpp"
 #include "agglo/run/ranks.hpp"
 #include "command.hpp"
 
@@ -30,6 +32,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "agglo: error: %s\n", agglo::one_line(e.what()).c_str());
     return 2;
   }
+  // Under mpirun the default thread count (no --threads) shares this machine's cores among its ranks.
+  if (agglo::mpi::local_size() > 1) omp_set_num_threads(agglo::run::resolve_threads(0));
   CLI::App app{
       "agglo - adhesive DEM with surface-resolved electrostatics, and DSMC acoustic agglomeration.\n"
       "Run `agglo <command> --help` for the options of a command."};

@@ -23,6 +23,7 @@ bool available() { return true; }
 
 namespace {
 bool g_active = false;
+int g_local_size = 1;
 
 // Sleeps between tests of a pending request: short at first (messages of the farm answer in
 // microseconds), then 1 ms (a rank waiting for a long job costs nothing).
@@ -41,6 +42,10 @@ Session::Session(int& argc, char**& argv) {
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_MULTIPLE, &provided);
   g_active = active_ = true;
+  MPI_Comm local;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &local);
+  MPI_Comm_size(local, &g_local_size);
+  MPI_Comm_free(&local);
   if (provided < MPI_THREAD_MULTIPLE)
     throw std::runtime_error("the MPI library does not support MPI_THREAD_MULTIPLE, which agglo's task farm needs");
 }
@@ -61,6 +66,8 @@ int size() {
   if (g_active) MPI_Comm_size(MPI_COMM_WORLD, &s);
   return s;
 }
+
+int local_size() { return g_active ? g_local_size : 1; }
 
 void send(int dest, int tag, const std::string& bytes) {
   MPI_Request request;
@@ -123,6 +130,7 @@ Session::Session(int&, char**&) {}
 Session::~Session() = default;
 int rank() { return 0; }
 int size() { return 1; }
+int local_size() { return 1; }
 void send(int, int, const std::string&) { throw std::logic_error("agglo was built without MPI"); }
 bool try_receive(int, int&, std::string&) { return false; }
 std::string receive(int, int) { throw std::logic_error("agglo was built without MPI"); }

@@ -30,6 +30,7 @@ class Session {
 
 int rank();  // 0 without an active Session
 int size();  // 1 without an active Session
+int local_size();  // ranks of this run on this machine (MPI_COMM_TYPE_SHARED); 1 without an active Session
 
 // Point-to-point messages of bytes in MPI_COMM_WORLD (thread-safe; only with size() > 1).
 void send(int dest, int tag, const std::string& bytes);

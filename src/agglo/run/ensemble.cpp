@@ -16,7 +16,7 @@ namespace agglo::run {
 
 int resolve_threads(int requested) {
   if (requested > 0) return requested;
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / mpi::local_size());
 }
 
 namespace {

@@ -56,7 +56,8 @@ void rethrow_first_error(const std::vector<JobOutcome>& outcomes, const std::vec
 // True on a thread that is running a job of an ensemble (a run_jobs inside a job runs in its process).
 bool in_job();
 
-// Total threads to use: `requested` if > 0, else all cores.
+// Total threads to use: `requested` if > 0, else all cores (under mpirun: the cores of this machine
+// divided by the ranks on it, at least 1).
 int resolve_threads(int requested);
 
 }  // namespace agglo::run

@@ -5,12 +5,25 @@
 #include "agglo/io/impact_dataset.hpp"
 #include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
+#include "agglo/run/ranks.hpp"
 #include "agglo/run/commands/impact_command.hpp"
 #include "agglo/run/impact_ensemble.hpp"
 
 namespace agglo::run {
 
 namespace {
+
+// Under mpirun: the bisection rounds after the scan have points_per_round jobs, so job slots beyond that
+// wait (docs/scaling.md, "Cost model").
+void warn_idle_slots(int points_per_round, const RunContext& ctx) {
+  const int slots = rank_count() * resolve_threads(ctx.threads);
+  if (rank_count() > 1 && slots > points_per_round)
+    ctx.report().warning(fmt::format("vcrit: each bisection round runs vcrit.points_per_round = {} speeds, so {} of "
+                                     "the {} job slots ({} ranks x {} threads) wait during the bisection; raise "
+                                     "vcrit.points_per_round (up to 64) to use them",
+                                     points_per_round, slots - points_per_round, slots, rank_count(),
+                                     resolve_threads(ctx.threads)));
+}
 
 class Vcrit final : public ImpactCommand {
  public:
@@ -25,6 +38,7 @@ class Vcrit final : public ImpactCommand {
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const auto c = impact_case(cfg);
+    warn_idle_slots(c.vcrit.points_per_round, ctx);
     const auto relaxed = impact::relaxed_agglomerate(c);  // one relaxation for every speed
     Journal journal(out.file("journal.jsonl"), impact_context(name(), cfg), ctx.resume);
     const EnsembleOptions opt{ctx.threads, &journal, ctx.cancel, nullptr, "vcrit"};
