@@ -3,7 +3,7 @@
 # reported once with its parameters while the other jobs complete, on 2 and 3 ranks; (2) `kill -9` of a
 # rank ends the job (Debian's Open MPI has no fault-tolerant MPI), the journal keeps what arrived, and
 # `--resume` on 2 ranks repeats only what is missing and gives the outputs of an uninterrupted single
-# process. $1 = agglo, $2 = source dir, $3 = mpirun.
+# process, and no rank's scratch folder is left behind. $1 = agglo, $2 = source dir, $3 = mpirun.
 . "$(dirname "$0")/lib.sh"
 
 # (1) one failing case of three
@@ -58,4 +58,5 @@ assert len(set(keys)) == 24, f"{len(set(keys))} distinct jobs, expected 24"
 assert len(keys) == 24, f"{len(keys)} journal lines for 24 jobs: some ran twice"
 PY
 same_outputs "$TMP/whole" "$TMP/killed" || fail "outputs after kill -9 and --resume differ from one process"
+no_scratch_left  # the killed rank's scratch folder is removed by the next run on this machine
 echo "ok kill -9 and --resume ($kept of 24 jobs kept)"

@@ -17,6 +17,7 @@ check() {  # name, args...: one process on 2 threads vs 2 and 3 ranks of 1 threa
     [ "$(ranks_of "$TMP/$name.$k")" = "$k" ] || fail "$name: run.json ranks"
   done
   [ "$(ranks_of "$TMP/$name.1")" = 1 ] || fail "$name: run.json ranks of one process"
+  no_scratch_left
   echo "ok $name"
 }
 

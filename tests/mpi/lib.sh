@@ -5,6 +5,8 @@
 set -u
 AGGLO=$1; SRC=$(cd "$2" && pwd); MPIRUN=$3
 TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
+export TMPDIR="$TMP/tmpdir"  # where ranks other than 0 keep their scratch folders (checked by no_scratch_left)
+mkdir -p "$TMPDIR"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 fail() { echo "FAIL: $*"; exit 1; }
 cd "$SRC" || exit 1
@@ -36,3 +38,5 @@ same_outputs() {
 }
 
 ranks_of() { /usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["ranks"])' "$1/run.json"; }
+
+no_scratch_left() { [ -z "$(find "$TMPDIR" -maxdepth 1 -name 'agglo-rank*')" ] || fail "scratch folders left: $(ls "$TMPDIR")"; }

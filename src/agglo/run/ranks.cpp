@@ -1,5 +1,10 @@
 #include "agglo/run/ranks.hpp"
 
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <string>
+
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -17,8 +22,24 @@ int rank_count() { return mpi::size(); }
 namespace {
 bool distributed() { return mpi::size() > 1 && !in_job(); }
 
+constexpr std::string_view kScratchPrefix = "agglo-rank";
+
+// Scratch folders of ranks killed on this machine (their process is gone) are removed.
+void remove_dead_scratch_folders(const std::filesystem::path& tmp) {
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(tmp, ec)) {
+    const std::string name = e.path().filename().string();
+    const auto dash = name.rfind('-');
+    if (name.rfind(kScratchPrefix, 0) != 0 || dash == std::string::npos) continue;
+    const long pid = std::strtol(name.c_str() + dash + 1, nullptr, 10);
+    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) std::filesystem::remove_all(e.path(), ec);
+  }
+}
+
 std::filesystem::path scratch_folder() {
-  return std::filesystem::temp_directory_path() / fmt::format("agglo-rank{}-{}", mpi::rank(), ::getpid());
+  const auto tmp = std::filesystem::temp_directory_path();
+  remove_dead_scratch_folders(tmp);
+  return tmp / fmt::format("{}{}-{}", kScratchPrefix, mpi::rank(), ::getpid());
 }
 }  // namespace
 
