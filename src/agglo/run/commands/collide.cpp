@@ -35,7 +35,7 @@ class Collide final : public ImpactCommand {
     impact::Recorder rec;
     // Cancellation is seen at step boundaries (checkpoints.at_boundary), where the state is complete.
     auto progress = [&](double f, double t) { ctx.report().progress("collide", f, t); };
-    CollideCheckpoints checkpoints(cfg, out, ctx);
+    CollideCheckpoints checkpoints(*this, cfg, out, ctx);
     const auto resumed = checkpoints.resume_state();
     impact::ImpactOutcome res;
     try {

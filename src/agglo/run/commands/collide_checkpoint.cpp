@@ -7,18 +7,13 @@
 
 namespace agglo::run {
 
-CollideCheckpoints::CollideCheckpoints(const Config& cfg, const OutputDir& out, const RunContext& ctx)
-    : out_(out), ctx_(ctx) {
-  header_.command = "collide";
-  header_.config_hash = io::config_hash(cfg.resolved_toml());
-}
+CollideCheckpoints::CollideCheckpoints(const Command& collide, const Config& cfg, const OutputDir& out,
+                                       const RunContext& ctx)
+    : ctx_(ctx), io_(checkpoint_io(collide, cfg, out, ctx)) {}
 
-std::optional<impact::ImpactState> CollideCheckpoints::resume_state() const {
-  if (!ctx_.resume) return std::nullopt;  // a killed writer's checkpoint.bin.tmp-<pid>: removed by OutputDir
-  if (!io::has_checkpoint(out_)) return std::nullopt;
-  io::CheckpointHeader found;
-  auto reader = io::read_checkpoint(out_, header_, found);
-  return io::read_impact_state(reader);
+std::optional<impact::ImpactState> CollideCheckpoints::resume_state() {
+  if (!io_.resume) return std::nullopt;  // a killed writer's checkpoint.bin.tmp-<pid>: removed by OutputDir
+  return io::read_impact_state(*io_.resume);
 }
 
 void CollideCheckpoints::at_boundary(const impact::ImpactRun& run) {
@@ -43,9 +38,7 @@ void CollideCheckpoints::at_end(const impact::ImpactRun& run) {
 void CollideCheckpoints::save(const impact::ImpactRun& run) {
   io::CheckpointWriter w;
   io::write_impact_state(w, run.state());
-  header_.step = static_cast<std::uint64_t>(run.steps());
-  header_.time = run.since_launch();
-  io::write_checkpoint(out_, header_, w.bytes());
+  io_.write(static_cast<std::uint64_t>(run.steps()), run.since_launch(), w.bytes());
 }
 
 }  // namespace agglo::run

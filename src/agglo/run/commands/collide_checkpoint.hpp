@@ -8,16 +8,18 @@
 
 #include "agglo/core/config.hpp"
 #include "agglo/impact/impact_run.hpp"
-#include "agglo/io/checkpoint.hpp"
+#include "agglo/run/checkpoint_io.hpp"
 #include "agglo/run/command.hpp"
 
 namespace agglo::run {
 
 class CollideCheckpoints {
  public:
-  CollideCheckpoints(const Config& cfg, const OutputDir& out, const RunContext& ctx);
+  // The folder's checkpoint is read here under --resume (run/checkpoint_io.hpp, shared with acoustic and
+  // sectional); ConfigError when it belongs to another command, config, build or format.
+  CollideCheckpoints(const Command& collide, const Config& cfg, const OutputDir& out, const RunContext& ctx);
   // The state to continue from under --resume when the folder has a checkpoint.
-  std::optional<impact::ImpactState> resume_state() const;
+  std::optional<impact::ImpactState> resume_state();
   // Called at every step boundary: checkpoint when due; on cancellation checkpoint (with an interval)
   // and throw InterruptedError.
   void at_boundary(const impact::ImpactRun& run);
@@ -26,9 +28,8 @@ class CollideCheckpoints {
 
  private:
   void save(const impact::ImpactRun& run);
-  const OutputDir& out_;
   const RunContext& ctx_;
-  io::CheckpointHeader header_;
+  CheckpointIO io_;
   long long last_multiple_ = -1;  // of the interval, reached at the last boundary
 };
 
