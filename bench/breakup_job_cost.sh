@@ -4,14 +4,14 @@
 # Prints per speed: broken or not, DEM steps, simulated time, wall and user CPU seconds; then the
 # ratio slowest/fastest (user CPU and steps). Steps are machine independent; seconds are not.
 #   bench/breakup_job_cost.sh [AGGLO] [OUT_DIR] [CASE]
-#   SPEEDS="0.02 0.125 ..." (default: 6 of the 12 speeds of the vcrit scan grid 0.02..0.6 m/s)
+#   SPEEDS="0.02 0.125 ..." (default: the 12 speeds of the vcrit scan grid 0.02..0.6 m/s, 3-4 digits)
 #   OFFSET=0.05 (projectile.offset_radii of every run)
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 AGGLO=${1:-$SRC/build/agglo}
 OUT=${2:-$SRC/results/bench_breakup_job_cost}
 CASE=${3:-$SRC/cases/seed000_charged_square_k2p5.toml}
-SPEEDS=${SPEEDS:-"0.02 0.125 0.178 0.231 0.336 0.6"}
+SPEEDS=${SPEEDS:-"0.02 0.0727 0.125 0.178 0.231 0.2836 0.336 0.3891 0.4418 0.4945 0.5473 0.6"}
 OFFSET=${OFFSET:-0.05}
 mkdir -p "$OUT"
 table="$OUT/job_cost.tsv"
