@@ -1,0 +1,131 @@
+#!/usr/bin/env bash
+# Cost per sample of the acoustic DSMC (docs/scaling.md, "A DSMC run too large for one machine"):
+#  1. user CPU per sample per collision step: cases/seed002_baseline.toml grown by a factor S in the
+#     cross-section (length_y = length_z = 0.01 m x sqrt(S), cells_y = cells_z = sqrt(S), samples x S:
+#     same weights, same samples per cell), one thread, run to T1 and to T2; the difference of the two
+#     runs removes start-up and output: (U(T2) - U(T1)) / (samples x steps between T1 and T2);
+#  2. peak resident memory of the same runs (bytes per sample from the slope between two sizes);
+#  3. checkpoint.bin bytes per sample (--checkpoint);
+#  4. callgrind instructions per sample per step, split into the engine's phases (motion, binning,
+#     collisions, diagnostics), S = 1, from the difference of a T1 and a T2 run (machine independent).
+#   bench/dsmc_sample_cost.sh [AGGLO] [OUT_DIR]
+#   SCALES="1 9 100" (square numbers), T1=0.005, T2=0.025 (shipped step 5e-5 s: 100 and 500 steps),
+#   CALLGRIND=0 skips part 4 (needs valgrind), CG_T1=0.0025, CG_T2=0.005.
+set -euo pipefail
+SRC=$(cd "$(dirname "$0")/.." && pwd)
+AGGLO=${1:-$SRC/build/agglo}
+OUT=${2:-$SRC/results/bench_dsmc_sample_cost}
+SCALES=${SCALES:-"1 9 100"}
+T1=${T1:-0.005}
+T2=${T2:-0.025}
+CALLGRIND=${CALLGRIND:-1}
+CG_T1=${CG_T1:-0.0025}
+CG_T2=${CG_T2:-0.005}
+CASE="$SRC/cases/seed002_baseline.toml"
+DT=5e-5  # the case's collision_dt = motion_dt
+mkdir -p "$OUT"
+export OMP_NUM_THREADS=1
+
+# Options of a run at scale S to end time T (extra arguments appended).
+opts() {
+  local s=$1 t=$2
+  local k
+  k=$(/usr/bin/python3 -c "import math; print(math.isqrt($s))")
+  echo "--threads 1 --no-plots --format csv --quiet --overwrite --set time.end=$t \
+ --set output.psd_times=[0.0] --set output.snapshot_times=[] --set output.efficiency_interval=$T1 \
+ --set domain.length_y=$(/usr/bin/python3 -c "print(0.01 * $k)") --set domain.length_z=$(/usr/bin/python3 -c "print(0.01 * $k)") \
+ --set domain.cells_y=$k --set domain.cells_z=$k \
+ --set population.0.samples=$((8243 * s)) --set population.1.samples=$((160 * s))"
+}
+
+table="$OUT/sample_cost.tsv"
+printf 'scale\tsamples\tcells\tT_s\twall_s\tuser_s\tpeak_rss_kB\n' > "$table"
+for s in $SCALES; do
+  for t in "$T1" "$T2"; do
+    dir="$OUT/s${s}_t${t}"
+    # shellcheck disable=SC2046
+    /usr/bin/time -f "%e %U %M" -o "$dir.time" "$AGGLO" acoustic "$CASE" --out "$dir" $(opts "$s" "$t") > /dev/null
+    read -r wall user rss < "$dir.time"
+    n=$(/usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d['samples'])" "$dir/summary.json")
+    k=$(/usr/bin/python3 -c "import math; print(math.isqrt($s))")
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$s" "$n" "$((100 * k * k))" "$t" "$wall" "$user" "$rss" >> "$table"
+  done
+done
+column -t "$table"
+/usr/bin/python3 - "$table" "$T1" "$T2" "$DT" <<'EOF'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1]), delimiter="\t"))
+t1, t2, dt = (float(x) for x in sys.argv[2:5])
+steps = round((t2 - t1) / dt)
+by = {}
+for r in rows:
+    by.setdefault(r["scale"], {})[float(r["T_s"])] = r
+prev = None
+for s, d in by.items():
+    a, b = d[t1], d[t2]
+    n = int(b["samples"])
+    ns = (float(b["user_s"]) - float(a["user_s"])) / (n * steps) * 1e9
+    nw = (float(b["wall_s"]) - float(a["wall_s"])) / (n * steps) * 1e9
+    print(f"scale {s}: {n} samples in {b['cells']} cells: {ns:.0f} ns user CPU ({nw:.0f} ns wall) per sample per step "
+          f"over {steps} steps; peak RSS {int(b['peak_rss_kB']) / 1024:.1f} MiB")
+    if prev:
+        dn = n - prev[0]
+        db = (int(b["peak_rss_kB"]) - prev[1]) * 1024
+        print(f"  resident bytes per sample (slope from the previous size): {db / dn:.0f}")
+    prev = (n, int(b["peak_rss_kB"]))
+EOF
+
+# 3. Checkpoint bytes per sample (scale 1 and the second scale).
+for s in $(echo "$SCALES" | cut -d' ' -f1-2); do
+  dir="$OUT/ckpt_s$s"
+  # shellcheck disable=SC2046
+  "$AGGLO" acoustic "$CASE" --out "$dir" $(opts "$s" "$T1") --checkpoint "$T1" > /dev/null
+  n=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['samples'])" "$dir/summary.json")
+  bytes=$(stat -c %s "$dir/checkpoint.bin")
+  echo "checkpoint scale $s: $bytes bytes for $n samples = $(/usr/bin/python3 -c "print(f'{$bytes / $n:.1f}')") bytes per sample"
+done
+
+# 4. Instructions per sample per step by phase (callgrind, scale 1, one thread).
+[ "$CALLGRIND" = 1 ] || exit 0
+for t in "$CG_T1" "$CG_T2"; do
+  # shellcheck disable=SC2046
+  valgrind --tool=callgrind --callgrind-out-file="$OUT/callgrind_$t.out" "$AGGLO" acoustic "$CASE" \
+    --out "$OUT/cg_$t" $(opts 1 "$t") > /dev/null 2> "$OUT/callgrind_$t.log"
+  callgrind_annotate --inclusive=yes --threshold=100 "$OUT/callgrind_$t.out" > "$OUT/callgrind_$t.txt" 2> /dev/null
+done
+/usr/bin/python3 - "$OUT" "$CG_T1" "$CG_T2" "$DT" <<'EOF'
+import json, re, sys
+out, a1, a2, dt = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
+phases = [  # (label, function name prefix in callgrind_annotate's inclusive listing)
+    ("motion (Motion::advance)", "agglo::acoustics::Motion::advance("),
+    ("state check (Engine::state_ok)", "agglo::acoustics::Engine::state_ok("),
+    ("cell index (Engine::compute_cells)", "agglo::acoustics::Engine::compute_cells("),
+    ("counting sort by cell (Engine::sort_cells)", "agglo::acoustics::Engine::sort_cells("),
+    ("collisions (Engine::collide_cells)", "agglo::acoustics::Engine::collide_cells("),
+    ("output rows (Observer::observe)", "agglo::acoustics::(anonymous namespace)::Observer::observe("),
+]
+def load(t):
+    tot, inc = 0, {}
+    for line in open(f"{out}/callgrind_{t}.txt"):
+        m = re.match(r"\s*([\d,]+) \(\s*[\d.]+%\)\s+(.*)$", line)
+        if not m:
+            continue
+        n, rest = int(m.group(1).replace(",", "")), m.group(2)
+        if rest.startswith("PROGRAM TOTALS"):
+            tot = n
+        elif ":" in rest:
+            name = rest.split(":", 1)[1]
+            inc[name] = max(inc.get(name, 0), n)
+    return tot, inc
+def get(inc, key):  # largest inclusive count of the function (its OpenMP clone is inside it)
+    return max([v for k, v in inc.items() if k.startswith(key)] or [0])
+(ta, ia), (tb, ib) = load(a1), load(a2)
+n = json.load(open(f"{out}/cg_{a2}/summary.json"))["samples"]
+steps = round((float(a2) - float(a1)) / dt)
+per = lambda a, b: (b - a) / (n * steps)
+print(f"callgrind, {n} samples, steps {round(float(a1) / dt)} -> {round(float(a2) / dt)}: "
+      "instructions per sample per step (inclusive)")
+print(f"  whole program: {per(ta, tb):.0f}")
+for label, key in phases:
+    print(f"  {label}: {per(get(ia, key), get(ib, key)):.0f}")
+EOF
