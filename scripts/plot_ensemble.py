@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Plot of a seed ensemble (`agglo acoustic CASE --seeds N`): ensemble.png, the ensemble mean with a
 band of +-1 standard error of the mean (ensemble_timeseries.csv) for the fine agglomeration efficiency
-and the fraction of pure droplets, the number concentrations, and the solid and liquid volume
-fractions relative to their initial values (mass conservation).
+and the fraction of pure droplets, and for the number concentrations; a third panel shows the
+standard errors themselves (often too narrow to see as bands): of the efficiency in percentage points,
+of the solid number concentration and of the solid and liquid volume fractions (mass) in percent of
+the mean.
 Usage: plot_ensemble.py OUTDIR"""
 import csv
 import math
@@ -51,9 +53,13 @@ def main(out):
         band(axs[1], t, rows, name, 1.0, label)
     axs[1].set_yscale("log")
     axs[1].set_ylabel("N / cm^-3")
-    band(axs[2], t, rows, "solid_volume_fraction", label="solid", color="0.4", rel=True)
-    band(axs[2], t, rows, "liquid_volume_fraction", label="liquid", color="tab:blue", rel=True)
-    axs[2].set_ylabel("volume fraction / initial")
+    def relative(name):
+        return [100 * e / m if m else math.nan for m, e in zip(column(rows, name + "_mean"), column(rows, name + "_stderr"))]
+    axs[2].plot(t, [100 * x for x in column(rows, "fine_efficiency_stderr")], "k-", label="efficiency / points")
+    axs[2].plot(t, relative("n_solid_cm3"), "-", color="tab:blue", label="solid N / %")
+    axs[2].plot(t, relative("solid_volume_fraction"), ":", color="0.4", label="solid volume / %")
+    axs[2].plot(t, relative("liquid_volume_fraction"), "--", color="tab:cyan", label="liquid volume / %")
+    axs[2].set_ylabel("standard error")
     for a in axs:
         a.set_xlabel("t / s")
         a.legend(frameon=False, fontsize=8)

@@ -51,7 +51,8 @@ void add_subcommand(CLI::App& app, const agglo::run::Command& cmd) {
     sub->add_option("--seeds", *seeds,
                     fmt::format("Seed ensemble of N members (seeds derived from {} and the member index): member "
                                 "folders, mean and standard error of every result (default 1: the single run)",
-                                cmd.seed_key()->dotted()));
+                                cmd.seed_key()->dotted()))
+        ->type_name("N");
   for (std::size_t k = 0; k < shortcuts.size(); ++k) {
     const auto* key = shortcuts[k].key;
     sub->add_option(shortcuts[k].flags, (*values)[k],
