@@ -89,6 +89,14 @@ run --seeds 3 --out "$T/r" -j 2 --resume > /dev/null 2> "$T/err" || fail "--resu
 same_ensemble "$T/e" "$T/r" || fail "resumed ensemble differs"
 echo "ok   --resume after a lost member: identical"
 
+# A larger ensemble extends a smaller one: --seeds 4 --resume runs member 3 only.
+cp -a "$T/e" "$T/x"
+run --seeds 4 --out "$T/x" -j 2 --resume > /dev/null 2> "$T/err" || fail "--seeds 4 --resume: $(cat "$T/err")"
+[ "$(stat -c %y "$T"/x/case_01_*/run.json)" = "$(stat -c %y "$T"/e/case_01_*/run.json)" ] || fail "extension reran member 1"
+[ "$(ls -d "$T"/x/case_* | wc -l)" -eq 4 ] && grep -q '^fine_efficiency,1,[0-9.e-]*,[0-9.e-]*,4$' "$T/x/ensemble_summary.csv" ||
+  fail "extended ensemble does not have 4 members"
+echo "ok   --seeds 4 --resume extends a 3-member ensemble"
+
 # Interrupted by SIGINT after the first member is in the journal (longer members, one at a time); --resume
 # completes it.
 LONG=(--set time.end=0.06 --set "output.psd_times=[0.0,0.06]")
