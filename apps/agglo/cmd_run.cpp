@@ -1,32 +1,70 @@
 // One CLI subcommand per command of the run pipeline (collide, vcrit, breakup, electrostatics,
 // acoustic): parse, run, summarise, write, plot. A command's shortcuts (e.g. `collide --speed V`)
-// become options that override their config key.
+// become options that override their config key. A command with a random seed (Command::seed_key)
+// takes `--seeds N`: N >= 2 runs a seed ensemble (run/seed_ensemble.hpp), N = 1 the single run.
+#include <charconv>
 #include <memory>
 
 #include <fmt/format.h>
 
+#include "agglo/core/error.hpp"
 #include "agglo/run/commands.hpp"
+#include "agglo/run/ranks.hpp"
+#include "agglo/run/seed_ensemble.hpp"
 #include "command.hpp"
 
 namespace {
 
+// --seeds: a whole number (>= 1 is checked by plan_seed_ensemble).
+long long seed_count(const std::string& text) {
+  long long n = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (ec != std::errc() || end != text.data() + text.size())
+    throw agglo::ConfigError(
+        fmt::format("--seeds '{}': the number of ensemble members must be a whole number >= 1", text));
+  return n;
+}
+
+void run_seed_ensemble(const agglo::run::Command& cmd, const agglo::Config& cfg, const agglo::cli::CommonArgs& args,
+                       long long n) {
+  auto plan = agglo::run::plan_seed_ensemble(cmd, cfg, n);  // ConfigError for n < 1
+  if (args.checkpoint > 0)
+    throw agglo::ConfigError(fmt::format("--checkpoint {} with --seeds {}: checkpoints are for single runs; an "
+                                         "ensemble resumes from its journal (--resume repeats the missing members)",
+                                         args.checkpoint, n));
+  const auto out = agglo::cli::output_path(args, std::string(cmd.name()));
+  const auto ctx = agglo::cli::context(args);
+  if (args.dry_run) return agglo::cli::dry_run(cfg.file(), agglo::run::seed_ensemble_estimate(cmd, plan, ctx), ctx);
+  agglo::run::execute_seed_ensemble(cmd, cfg, plan, out, ctx);
+  if (ctx.formats.csv && agglo::run::is_output_rank()) agglo::cli::run_plot_script("plot_ensemble.py", out);
+}
+
 void add_subcommand(CLI::App& app, const agglo::run::Command& cmd) {
   auto args = std::make_shared<agglo::cli::CommonArgs>();
+  auto seeds = std::make_shared<std::string>("1");
   const auto shortcuts = cmd.shortcuts();
   auto values = std::make_shared<std::vector<std::string>>(shortcuts.size());
   auto* sub = app.add_subcommand(std::string(cmd.name()), std::string(cmd.help()));
   agglo::cli::add_common_options(*sub, *args);
   if (cmd.restartable()) agglo::cli::add_checkpoint_option(*sub, *args);
+  if (cmd.seed_key())
+    sub->add_option("--seeds", *seeds,
+                    fmt::format("Seed ensemble of N members (seeds derived from {} and the member index): member "
+                                "folders, mean and standard error of every result (default 1: the single run)",
+                                cmd.seed_key()->dotted()))
+        ->type_name("N");
   for (std::size_t k = 0; k < shortcuts.size(); ++k) {
     const auto* key = shortcuts[k].key;
     sub->add_option(shortcuts[k].flags, (*values)[k],
                     fmt::format("{} [{}] (sets {}; default: the case's value)", key->info().meaning, key->info().unit,
                                 key->dotted()));
   }
-  sub->callback([args, values, shortcuts, &cmd] {
+  sub->callback([args, values, seeds, shortcuts, &cmd] {
+    const long long n = seed_count(*seeds);
     agglo::Config cfg = agglo::cli::load_case(*args);
     for (std::size_t k = 0; k < shortcuts.size(); ++k)
       if (!(*values)[k].empty()) cfg.apply_override(fmt::format("{}={}", shortcuts[k].key->dotted(), (*values)[k]));
+    if (n != 1) return run_seed_ensemble(cmd, cfg, *args, n);
     const auto out = agglo::cli::output_path(*args, std::string(cmd.name()));
     const auto ctx = agglo::cli::context(*args);
     if (args->dry_run) return agglo::cli::dry_run(cfg.file(), agglo::run::plan(cmd, cfg, ctx), ctx);

@@ -6,8 +6,10 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include "agglo/core/error.hpp"
 #include "agglo/core/settings.hpp"
 #include "agglo/run/commands.hpp"
+#include "agglo/run/seed_ensemble.hpp"
 #include "bindings.hpp"
 #include "case.hpp"
 #include "options.hpp"
@@ -26,6 +28,33 @@ Result run_command(const run::Command& cmd, const Case& c, const RunOptions& o,
   RunFolder folder(o.out);
   auto r = run_released([&](const run::RunContext& x) { return run::execute(cmd, cfg, folder.path(), x); }, ctx,
                         o.progress);
+  return Result{std::string(cmd.name()), std::move(r.result.summary), r.result.seed, folder.user_path(),
+                std::move(r.result.data), std::move(r.messages)};
+}
+
+// seeds = N >= 2: a seed ensemble (run/seed_ensemble.hpp, as `agglo acoustic --seeds N`); the result's
+// summary holds the members' seeds and folders and every summary scalar's mean, stderr and n; its arrays
+// are the ensemble's results.nc.
+Result run_seed_ensemble(const run::Command& cmd, const Case& c, const RunOptions& o, long long n) {
+  Config base = copy_of(c);
+  auto plan = run::plan_seed_ensemble(cmd, base, n);  // ConfigError for n < 1
+  if (o.checkpoint) throw ConfigError(fmt::format("checkpoint with seeds={}: checkpoints are for single runs", n));
+  const auto ctx = context_of(cmd, o);
+  RunFolder folder(o.out);
+  auto r = run_released(
+      [&](const run::RunContext& x) {
+        const auto ens = run::execute_seed_ensemble(cmd, base, plan, folder.path(), x);
+        nlohmann::json stats = nlohmann::json::object(), folders = nlohmann::json::array();
+        for (const auto& s : ens.summary) stats[s.quantity] = {{"mean", s.value.mean}, {"stderr", s.value.standard_error},
+                                                               {"n", s.value.n}};
+        for (const auto& m : ens.members.cases) folders.push_back(m.folder);
+        run::CommandResult out;
+        out.summary = {{"members", ens.seeds.size()}, {"seeds", ens.seeds}, {"folders", folders}, {"ensemble", stats}};
+        out.seed = cmd.seed(base);
+        out.data = ens.data;
+        return out;
+      },
+      ctx, o.progress);
   return Result{std::string(cmd.name()), std::move(r.result.summary), r.result.seed, folder.user_path(),
                 std::move(r.result.data), std::move(r.messages)};
 }
@@ -76,6 +105,23 @@ void bind_commands(py::module_& m) {
           py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("format") = "csv,netcdf",
           py::arg("checkpoint") = py::none(), py::arg("resume") = false, py::arg("overwrite") = false,
           doc_of(*cmd, doc));
+      continue;
+    }
+    if (cmd->seed_key()) {  // acoustic: seeds=N
+      const auto doc = fmt::format("  seeds      N >= 2: a seed ensemble of N members (seeds from {} and the member "
+                                   "index; docs/acoustics.md): the summary gives every scalar's mean, stderr and n, "
+                                   "the arrays the mean and stderr of every result; 1: the single run\n",
+                                   cmd->seed_key()->dotted());
+      m.def(
+          name.c_str(),
+          [cmd](const Case& c, long long seeds, py::object out, int threads, py::object progress, py::object format,
+                std::optional<double> checkpoint, bool resume, bool overwrite) {
+            const auto o = options_of(out, threads, progress, format, checkpoint, resume, overwrite);
+            return seeds == 1 ? run_command(*cmd, c, o, {}) : run_seed_ensemble(*cmd, c, o, seeds);
+          },
+          py::arg("case"), py::kw_only(), py::arg("seeds") = 1, py::arg("out") = py::none(), py::arg("threads") = 0,
+          py::arg("progress") = py::none(), py::arg("format") = "csv,netcdf", py::arg("checkpoint") = py::none(),
+          py::arg("resume") = false, py::arg("overwrite") = false, doc_of(*cmd, doc));
       continue;
     }
     m.def(

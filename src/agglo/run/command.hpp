@@ -83,6 +83,9 @@ class Command {
   virtual Estimate lower_bound(Config& cfg) const;
   // The random seed a case runs with (recorded in run.json); 0 for deterministic commands.
   virtual long long seed(const Config& cfg) const;
+  // The config key of the random seed, for seed ensembles (run/seed_ensemble.hpp, `--seeds N`); null for
+  // deterministic commands.
+  virtual const settings::Setting* seed_key() const { return nullptr; }
   // True for ensembles that continue from their journal under --resume; a single run restarts instead.
   virtual bool resumable() const { return false; }
   // True for single runs that write checkpoints (--checkpoint) and continue from the last one under

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/io/dataset_json.hpp"
+#include "agglo/io/ensemble_stats.hpp"
 #include "agglo/io/sweep_dataset.hpp"
 #include "agglo/io/sweep_table.hpp"
 #include "agglo/run/ensemble.hpp"
@@ -123,12 +125,30 @@ SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out,
                       sub.threads = jc.threads;
                       sub.overwrite = true;
                       nlohmann::json extra = {{"sweep_assignment", joined(res.cases[i].assignments)}};
+<<<<<<< HEAD
                       return execute(cmd, plan.configs[i], root / res.cases[i].folder, sub, extra).summary;
+=======
+                      auto r = execute(cmd, plan.configs[i], out.path() / res.cases[i].folder, sub, extra);
+                      if (!plan.keep_data) return r.summary;
+                      return nlohmann::json{{"summary", std::move(r.summary)},
+                                            {"data", r.data ? io::dataset_to_json(io::labelled_part(*r.data))
+                                                            : nlohmann::json()}};
+>>>>>>> h1
                     }});
   Journal journal(out.file("journal.jsonl"), plan.journal_key, ctx.resume);
   const auto outcomes = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), "sweep"});
   rethrow_first_error(outcomes, &jobs);
-  for (const auto& o : outcomes) res.summaries.push_back(o.result);
+  for (const auto& o : outcomes) {
+    if (!plan.keep_data) {
+      res.summaries.push_back(o.result);
+      continue;
+    }
+    if (!o.result.is_object() || !o.result.contains("summary") || !o.result.contains("data"))
+      throw ConfigError(fmt::format("{}: a journal entry is not a seed-ensemble result; run again without --resume",
+                                    out.file("journal.jsonl").string()));
+    res.summaries.push_back(o.result["summary"]);
+    res.case_data.push_back(o.result["data"]);
+  }
   return res;
 }
 

@@ -35,6 +35,8 @@ std::vector<SweepCase> sweep_grid(const std::vector<SweepAxis>& axes);
 struct SweepResult {
   std::vector<SweepCase> cases;
   std::vector<nlohmann::json> summaries;  // by case index
+  std::vector<nlohmann::json> case_data;  // by case index, with SweepPlan::keep_data only: each case's data
+                                          // (io::labelled_part as io/dataset_json.hpp; null if none)
   io::DatasetPtr data;                    // the sweep table as labelled arrays (results.nc, Python)
 };
 
@@ -45,6 +47,10 @@ struct SweepPlan {
   std::vector<Config> configs;  // by case index, not yet parsed (execute parses them)
   std::string journal_key;      // identifies the base case and command in journal.jsonl
   std::filesystem::path cases_root;  // folder of the case folders (empty: run_sweep's `out`)
+  // Seed ensembles (run/seed_ensemble.hpp): each case's job returns {"summary": ..., "data": ...} (its
+  // dataset's io::labelled_part as JSON) instead of the summary alone, so the ensemble statistics come
+  // from the job results (journal, MPI messages) and never from the case folders.
+  bool keep_data = false;
 };
 SweepPlan plan_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes);
 

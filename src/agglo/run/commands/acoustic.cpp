@@ -2,6 +2,7 @@
 #include "agglo/acoustics/estimate.hpp"
 #include "agglo/acoustics/run.hpp"
 #include "agglo/core/error.hpp"
+#include "agglo/core/settings_acoustic.hpp"
 #include "agglo/io/acoustic_dataset.hpp"
 #include "agglo/io/acoustic_writers.hpp"
 #include "agglo/run/checkpoint_io.hpp"
@@ -27,6 +28,8 @@ class Acoustic final : public Command {
   Estimate estimate(Config& cfg, const RunContext&) const override {
     return acoustics::acoustic_estimate(acoustics::parse_acoustic_case(cfg));
   }
+
+  const settings::Setting* seed_key() const override { return &settings::acoustic_settings().top.seed; }
 
   long long seed(const Config& cfg) const override {
     Config probe = cfg.clone();

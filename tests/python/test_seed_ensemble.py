@@ -1,0 +1,50 @@
+"""agglo.acoustic(case, seeds=N): the seed ensemble of `agglo acoustic --seeds N` from Python: same
+files and numbers as the CLI, the summary's mean/stderr/n of every scalar, arrays of the mean and
+stderr; seeds=1 is the single run; bad seeds raise ConfigError."""
+import json
+
+import numpy as np
+import pytest
+
+from agglo_cases import CASES, cli
+
+
+def _case(agglo):
+    return (agglo.Case.load(CASES / "seed002_integrator_check.toml").set("time.end", 0.005)
+            .set("output.psd_times", [0.0, 0.005]).set("population.0.samples", 200).set("population.1.samples", 50))
+
+
+def test_seed_ensemble_equals_cli(agglo_module, tmp_path):
+    agglo = agglo_module
+    path = tmp_path / "case.toml"
+    path.write_text(_case(agglo).to_toml())
+    res = agglo.acoustic(agglo.Case.load(path), seeds=3, out=tmp_path / "py", threads=2)
+    proc = cli("acoustic", path, "--seeds", "3", "--threads", "2", "--out", tmp_path / "cli")
+    assert proc.returncode == 0, proc.stderr
+    assert res.summary["members"] == 3 and res.summary["seeds"][0] == res.seed == 1
+    assert len(set(res.summary["seeds"])) == 3
+    eff = res.summary["ensemble"]["fine_efficiency"]
+    assert eff["n"] == 3
+    rows = {line.split(",")[0]: line.split(",") for line in (tmp_path / "cli" / "ensemble_summary.csv").read_text()
+            .splitlines()[1:]}
+    assert float(rows["fine_efficiency"][2]) == pytest.approx(eff["mean"], rel=1e-9)
+    assert float(rows["fine_efficiency"][3]) == pytest.approx(eff["stderr"], rel=1e-9)
+    # the members' own final efficiencies give the mean and stderr
+    own = [json.loads(next((tmp_path / "py").glob(f"case_*_{s}")).joinpath("summary.json").read_text())
+           ["fine_efficiency"] for s in res.summary["seeds"]]
+    assert eff["mean"] == pytest.approx(np.mean(own), rel=1e-12)
+    assert eff["stderr"] == pytest.approx(np.std(own, ddof=1) / np.sqrt(3), rel=1e-9)
+    assert res["fine_efficiency_mean"][-1] == pytest.approx(eff["mean"], rel=1e-12)
+    assert (tmp_path / "py" / "ensemble_timeseries.csv").read_text() == \
+        (tmp_path / "cli" / "ensemble_timeseries.csv").read_text()
+
+
+def test_seeds_one_is_the_single_run_and_bad_seeds_raise(agglo_module):
+    agglo = agglo_module
+    one = agglo.acoustic(_case(agglo), seeds=1, threads=1)
+    plain = agglo.acoustic(_case(agglo), threads=1)
+    assert {k: v for k, v in one.summary.items() if k != "wall_time_s"} == \
+        {k: v for k, v in plain.summary.items() if k != "wall_time_s"}
+    for bad in (0, -2):
+        with pytest.raises(agglo.ConfigError, match="--seeds"):
+            agglo.acoustic(_case(agglo), seeds=bad)
