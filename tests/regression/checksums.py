@@ -8,7 +8,8 @@ Stripped before hashing (they change from run to run or machine to machine, neve
   JSON keys  wall_time_s, time_s, finished_utc, git_hash, version, threads, and any key containing 'seconds'
              (run.json, summary.json, result.json, stats.json, vcrit.json, breakup.json);
   run.log    'wall_time=<x> s';
-  CSV        columns whose header is one of those keys or contains 'seconds' (sweep.csv);
+  CSV        columns whose header is one of those keys or contains 'seconds' (sweep.csv), and rows naming one
+             in a table of one row per quantity (ensemble_summary.csv; also wall_time_s_mean/_stderr);
   results.nc compared by content, not bytes (HDF5 files are not byte-stable): dimensions, variables (name,
              dimensions, type, attributes, values), global attributes (attributes in name order); the variables named like the
              stripped JSON keys and the provenance attributes agglo_version and git_hash are left out.
@@ -28,7 +29,8 @@ DROP = {"wall_time_s", "time_s", "finished_utc", "git_hash", "version", "threads
 
 
 def dropped(key: str) -> bool:
-    return key in DROP or "seconds" in key or key.endswith(".wall_time_s")
+    return (key in DROP or "seconds" in key or key.endswith(".wall_time_s")
+            or key.startswith(("wall_time_s_", "time_s_")))  # an ensemble's wall_time_s_mean, _stderr
 
 
 def strip_json(x):
@@ -72,6 +74,11 @@ def normalised(path: Path) -> bytes:
         return re.sub(rb"wall_time=[0-9.eE+-]+ s", b"wall_time=<stripped>", data)
     if path.suffix == ".csv":
         rows = list(csv.reader(io.StringIO(data.decode())))
+        if rows and rows[0] and rows[0][0] == "quantity":  # one row per quantity (ensemble_summary.csv)
+            rows = [r for r in rows if not (r and dropped(r[0].strip()))]
+            out = io.StringIO()
+            csv.writer(out, lineterminator="\n").writerows(rows)
+            return out.getvalue().encode()
         if rows:
             keep = [i for i, h in enumerate(rows[0]) if not dropped(h.strip())]
             if len(keep) != len(rows[0]):

@@ -125,15 +125,11 @@ SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out,
                       sub.threads = jc.threads;
                       sub.overwrite = true;
                       nlohmann::json extra = {{"sweep_assignment", joined(res.cases[i].assignments)}};
-<<<<<<< HEAD
-                      return execute(cmd, plan.configs[i], root / res.cases[i].folder, sub, extra).summary;
-=======
-                      auto r = execute(cmd, plan.configs[i], out.path() / res.cases[i].folder, sub, extra);
+                      auto r = execute(cmd, plan.configs[i], root / res.cases[i].folder, sub, extra);
                       if (!plan.keep_data) return r.summary;
                       return nlohmann::json{{"summary", std::move(r.summary)},
                                             {"data", r.data ? io::dataset_to_json(io::labelled_part(*r.data))
                                                             : nlohmann::json()}};
->>>>>>> h1
                     }});
   Journal journal(out.file("journal.jsonl"), plan.journal_key, ctx.resume);
   const auto outcomes = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), "sweep"});
