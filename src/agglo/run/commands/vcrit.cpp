@@ -1,6 +1,7 @@
 // agglo vcrit: critical break-up velocity by a scan and bisection rounds of impacts.
 #include <fmt/format.h>
 
+#include "agglo/core/settings_impact.hpp"
 #include "agglo/impact/estimate.hpp"
 #include "agglo/io/impact_dataset.hpp"
 #include "agglo/io/impact_writers.hpp"
@@ -17,12 +18,12 @@ namespace {
 // wait (docs/scaling.md, "Cost model").
 void warn_idle_slots(int points_per_round, const RunContext& ctx) {
   const int slots = rank_count() * resolve_threads(ctx.threads);
+  const std::string key(settings::impact_settings().vcrit.points_per_round.dotted());
   if (rank_count() > 1 && slots > points_per_round)
-    ctx.report().warning(fmt::format("vcrit: each bisection round runs vcrit.points_per_round = {} speeds, so {} of "
-                                     "the {} job slots ({} ranks x {} threads) wait during the bisection; raise "
-                                     "vcrit.points_per_round (up to 64) to use them",
-                                     points_per_round, slots - points_per_round, slots, rank_count(),
-                                     resolve_threads(ctx.threads)));
+    ctx.report().warning(fmt::format("vcrit: each bisection round runs {} = {} speeds, so {} of the {} job slots "
+                                     "({} ranks x {} threads) wait during the bisection; raise {} to use them",
+                                     key, points_per_round, slots - points_per_round, slots, rank_count(),
+                                     resolve_threads(ctx.threads), key));
 }
 
 class Vcrit final : public ImpactCommand {
