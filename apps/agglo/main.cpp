@@ -1,6 +1,9 @@
 // agglo command-line front end. Exit codes: 0 ok, 1 internal error, 2 bad input, 3 numerical failure,
 // 130 interrupted by SIGINT (Ctrl-C), 143 by SIGTERM.
 #include <cstdio>
+#include <algorithm>
+#include <cstdlib>
+#include <string>
 #include <exception>
 #include <memory>
 
@@ -16,24 +19,29 @@
 #include "command.hpp"
 
 namespace {
-// Only rank 0 of an MPI run prints errors (every rank meets the same error: the pipeline runs on each
-// and ensemble outcomes are shared), so a refused case reads as one line as without MPI.
+// The line a rank other than 0 did not print (see report()).
+std::string& unprinted() {
+  static std::string line;
+  return line;
+}
+
+// Only rank 0 of an MPI run prints errors: every rank meets the same error in the normal course (each
+// runs the pipeline, and ensemble outcomes are shared), so a refused case reads as one line as without
+// MPI. Another rank keeps its line and prints it only if it failed alone (see main).
 template <class... Args>
 void report(const char* format, Args... args) {
-  if (agglo::run::is_output_rank()) std::fprintf(stderr, format, args...);
-}
-}  // namespace
-
-int main(int argc, char** argv) {
-  std::unique_ptr<agglo::mpi::Session> mpi;  // MPI only when started by mpirun (docs/scaling.md)
-  try {
-    mpi = std::make_unique<agglo::mpi::Session>(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "agglo: error: %s\n", agglo::one_line(e.what()).c_str());
-    return 2;
+  if (agglo::run::is_output_rank()) {
+    std::fprintf(stderr, format, args...);
+    return;
   }
-  // Under mpirun the default thread count (no --threads) shares this machine's cores among its ranks.
-  if (agglo::mpi::local_size() > 1) omp_set_num_threads(agglo::run::resolve_threads(0));
+  const int n = std::snprintf(nullptr, 0, format, args...);
+  std::string line(static_cast<std::size_t>(std::max(n, 0)), '\0');
+  std::snprintf(line.data(), line.size() + 1, format, args...);
+  unprinted() = line;
+}
+
+// Parses the command line and runs the command; the exit code.
+int run_cli(int argc, char** argv) {
   CLI::App app{
       "agglo - adhesive DEM with surface-resolved electrostatics, and DSMC acoustic agglomeration.\n"
       "Run `agglo <command> --help` for the options of a command."};
@@ -57,12 +65,41 @@ int main(int argc, char** argv) {
     return 3;
   } catch (const agglo::InterruptedError& e) {
     report("agglo: %s; the results so far are in the output folder, marked incomplete in run.json "
-                 "(ensembles keep their finished jobs in journal.jsonl); rerun with --resume to continue\n",
-                 agglo::one_line(e.what()).c_str());
+           "(ensembles keep their finished jobs in journal.jsonl); rerun with --resume to continue\n",
+           agglo::one_line(e.what()).c_str());
     return agglo::cli::interrupt_exit_code();
   } catch (const std::exception& e) {
     report("agglo: internal error: %s\n", agglo::one_line(e.what()).c_str());
     return 1;
   }
   return 0;
+}
+
+// Seconds a failed rank waits for the others at the end before it ends them all (AGGLO_MPI_EXIT_TIMEOUT).
+double exit_timeout() {
+  const char* v = std::getenv("AGGLO_MPI_EXIT_TIMEOUT");
+  const double t = v ? std::atof(v) : 0.0;
+  return t > 0.0 ? t : 60.0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::unique_ptr<agglo::mpi::Session> mpi;  // MPI only when started by mpirun (docs/scaling.md)
+  try {
+    mpi = std::make_unique<agglo::mpi::Session>(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "agglo: error: %s\n", agglo::one_line(e.what()).c_str());
+    return 2;
+  }
+  // Under mpirun the default thread count (no --threads) shares this machine's cores among its ranks.
+  if (agglo::mpi::local_size() > 1) omp_set_num_threads(agglo::run::resolve_threads(0));
+  const int code = run_cli(argc, argv);
+  // Every rank meets the same outcome in the normal course; a failure met by one rank alone must not
+  // leave the others waiting for it forever (docs/scaling.md, "Failures").
+  if (agglo::mpi::size() > 1)
+    agglo::mpi::finish(code, exit_timeout(), [] {  // this rank failed alone: say why before all end
+      std::fprintf(stderr, "[rank %d of %d] %s", agglo::mpi::rank(), agglo::mpi::size(), unprinted().c_str());
+    });
+  return code;
 }

@@ -3,7 +3,8 @@
 # reported once with its parameters while the other jobs complete, on 2 and 3 ranks; (2) `kill -9` of a
 # rank ends the job (Debian's Open MPI has no fault-tolerant MPI), the journal keeps what arrived, and
 # `--resume` on 2 ranks repeats only what is missing and gives the outputs of an uninterrupted single
-# process, and no rank's scratch folder is left behind. $1 = agglo, $2 = source dir, $3 = mpirun.
+# process, and no rank's scratch folder is left behind; (3) a failure met by one rank alone ends the job
+# instead of leaving the others waiting. $1 = agglo, $2 = source dir, $3 = mpirun.
 . "$(dirname "$0")/lib.sh"
 
 # (1) one failing case of three
@@ -60,3 +61,17 @@ PY
 same_outputs "$TMP/whole" "$TMP/killed" || fail "outputs after kill -9 and --resume differ from one process"
 no_scratch_left  # the killed rank's scratch folder is removed by the next run on this machine
 echo "ok kill -9 and --resume ($kept of 24 jobs kept)"
+
+# (3) a failure met by one rank alone (rank 1 cannot make its scratch folder: its TMPDIR is missing) must
+# not leave rank 0 waiting for it: that rank prints why and, AGGLO_MPI_EXIT_TIMEOUT seconds later, ends
+# the job (MPI_Abort) with its exit code.
+start=$(date +%s)
+AGGLO_MPI_EXIT_TIMEOUT=2 timeout 300 "$MPIRUN" -q -n 1 --bind-to none "$AGGLO" breakup $NT "${BU[@]}" --threads 1 \
+  --out "$TMP/alone" : -n 1 --bind-to none env TMPDIR="$TMP/missing" "$AGGLO" breakup $NT "${BU[@]}" --threads 1 \
+  --out "$TMP/alone" > /dev/null 2> "$TMP/alone.err"
+rc=$?
+[ $rc -ne 124 ] || fail "a rank that failed alone left the job waiting (killed by timeout after 300 s)"
+[ $rc -eq 2 ] || fail "a rank that failed alone: mpirun exit $rc, expected 2; $(head -3 "$TMP/alone.err")"
+grep -q "^\[rank 1 of 2\] agglo: error: no folder for temporary files (TMPDIR=$TMP/missing" "$TMP/alone.err" ||
+  fail "the failing rank did not say why: $(head -3 "$TMP/alone.err")"
+echo "ok a rank failing alone ends the job ($(( $(date +%s) - start )) s)"

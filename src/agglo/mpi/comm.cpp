@@ -123,6 +123,23 @@ void abort_all(int exit_code) {
   std::_Exit(exit_code);
 }
 
+void finish(int exit_code, double timeout_s, const std::function<void()>& before_abort) {
+  if (!g_active) return;
+  MPI_Request request;
+  MPI_Ibarrier(MPI_COMM_WORLD, &request);
+  const auto start = std::chrono::steady_clock::now();
+  int done = 0;
+  for (int k = 0;; ++k) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    if (exit_code != 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout_s) {
+      if (before_abort) before_abort();
+      abort_all(exit_code);
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(k < 100 ? 20 : 1000));
+  }
+}
+
 #else  // one process
 
 bool available() { return false; }
@@ -136,6 +153,7 @@ bool try_receive(int, int&, std::string&) { return false; }
 std::string receive(int, int) { throw std::logic_error("agglo was built without MPI"); }
 std::string broadcast(const std::string& bytes) { return bytes; }
 void abort_all(int exit_code) { std::_Exit(exit_code); }
+void finish(int, double, const std::function<void()>&) {}
 
 #endif
 

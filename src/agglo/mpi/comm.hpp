@@ -5,6 +5,7 @@
 // environment variables checked by launched()); a plain `agglo` never touches MPI. Waits never spin a
 // core: they test the request and sleep briefly (ranks of an oversubscribed run share cores, and an
 // idle rank must not slow the others).
+#include <functional>
 #include <string>
 
 namespace agglo::mpi {
@@ -43,5 +44,12 @@ std::string broadcast(const std::string& bytes);
 
 // Ends every rank of the run at once (after a failure that the other ranks cannot know of).
 [[noreturn]] void abort_all(int exit_code);
+
+// The last call of every rank before it exits with `exit_code`: waits (without spinning) until every
+// rank has arrived. A rank that failed (exit_code != 0) waits at most `timeout_s` seconds and then ends
+// every rank (abort_all), so that a failure met by one rank alone (a full disk on rank 0, a scratch
+// folder another rank cannot create) cannot leave the others waiting for it forever.
+// `before_abort` runs just before (e.g. to print this rank's error).
+void finish(int exit_code, double timeout_s, const std::function<void()>& before_abort);
 
 }  // namespace agglo::mpi

@@ -37,7 +37,11 @@ void remove_dead_scratch_folders(const std::filesystem::path& tmp) {
 }
 
 std::filesystem::path scratch_folder() {
-  const auto tmp = std::filesystem::temp_directory_path();
+  std::error_code ec;
+  const auto tmp = std::filesystem::temp_directory_path(ec);
+  if (ec)
+    throw ConfigError(fmt::format("no folder for temporary files (TMPDIR={}: {})",
+                                  std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "", ec.message()));
   remove_dead_scratch_folders(tmp);
   return tmp / fmt::format("{}{}-{}", kScratchPrefix, mpi::rank(), ::getpid());
 }
