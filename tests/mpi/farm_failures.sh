@@ -37,7 +37,7 @@ for _ in $(seq 1 600); do
   [ "$(cat "$TMP/killed/journal.jsonl" 2>/dev/null | wc -l)" -ge 4 ] && break
   sleep 0.05
 done
-victim=$(pgrep -n -f "$AGGLO breakup $NT")
+victim=$(own_rank $launcher "$AGGLO")  # a rank of this mpirun, not of a test running beside it
 [ -n "$victim" ] || fail "no rank to kill"
 kill -9 "$victim"
 wait $launcher

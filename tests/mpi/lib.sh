@@ -17,6 +17,20 @@ run_mpi() {
   "$MPIRUN" -n "$k" --bind-to none "$AGGLO" "$@"
 }
 
+descendants() {  # every process below $1 (its children, theirs, ...), one pid per line
+  local kids k
+  kids=$(pgrep -P "$1") || return 0
+  for k in $kids; do echo "$k"; descendants "$k"; done
+}
+
+own_rank() {  # the newest (highest pid) process below launcher $1 running program $2: never a process of another
+  local p best=""  # test beside this one, never mpirun itself (whose arguments name the program too)
+  for p in $(descendants "$1"); do
+    [ "$(head -z -n 1 "/proc/$p/cmdline" 2>/dev/null | tr -d '\0')" = "$2" ] && [ "$p" -gt "${best:-0}" ] && best=$p
+  done
+  echo "$best"
+}
+
 journal_set() {  # journal.jsonl -> sorted "key result" lines, timing fields of the results stripped
   /usr/bin/python3 -c '
 import json, sys
