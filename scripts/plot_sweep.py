@@ -5,7 +5,10 @@ distribution of the solid fines of every case and (b) the final fine efficiency 
 and sweep_time.png with the efficiency vs time of every case.
 Any other sweep: sweep.png with the headline result of the command (v_crit, v50, broken, energy,
 fine efficiency) vs the first key, one line per value of the second key when there is one.
-Usage: plot_sweep.py OUTDIR KEY [KEY2 ...]"""
+With --seeds (agglo sweep --seeds N; the last key is the seed): the points' means with error bars of one
+standard error (sweep_ensemble.csv), the size distributions of member 0 (the case's own seed) and the
+efficiency vs time averaged over the members of each point.
+Usage: plot_sweep.py OUTDIR [--seeds] KEY [KEY2 ...]"""
 import csv
 import os
 import sys
@@ -31,8 +34,20 @@ def number(x):
         return None
 
 
+def mean_of(rows, col):
+    """sweep_ensemble.csv rows: col -> col_mean (the plain column when there is no ensemble)."""
+    return col + "_mean" if col + "_mean" in rows[0] else col
+
+
+def error_bars(rows, col, scale=1.0):
+    name = col + "_stderr"
+    if name not in rows[0]:
+        return None
+    return [scale * (number(r[name]) or 0.0) if r[name] not in ("", "nan") else 0.0 for r in rows]
+
+
 def generic(out, keys, rows):
-    col = next((c for c in HEADLINE if c in rows[0]), None)
+    col = next((c for c in HEADLINE if mean_of(rows, c) in rows[0]), None)
     if col is None:
         return
     groups = {}
@@ -41,11 +56,13 @@ def generic(out, keys, rows):
     fig, ax = plt.subplots(figsize=(5, 3.6))
     for label, rs in groups.items():
         xs = [number(r[keys[0]]) for r in rs]
-        ys = [number(r[col]) if r[col] != "" else None for r in rs]
-        pts = [(x, y) for x, y in zip(xs, ys) if x is not None and y is not None]
+        ys = [number(r[mean_of(rows, col)]) if r[mean_of(rows, col)] != "" else None for r in rs]
+        es = error_bars(rs, col) or [0.0] * len(rs)
+        pts = [(x, y, e) for x, y, e in zip(xs, ys, es) if x is not None and y is not None]
         if not pts:
             continue
-        ax.plot(*zip(*pts), "o-", label=f"{keys[1]} = {label}" if label else None)
+        x, y, e = zip(*pts)
+        ax.errorbar(x, y, yerr=e, fmt="o-", capsize=3, label=f"{keys[1]} = {label}" if label else None)
     ax.set_xlabel(keys[0])
     ax.set_ylabel(col)
     if len(groups) > 1:
@@ -55,16 +72,33 @@ def generic(out, keys, rows):
     plt.close(fig)
 
 
-def main(out, keys):
-    rows = read(os.path.join(out, "sweep.csv"))
+def mean_efficiency(out, folders):
+    """The efficiency vs time averaged over member folders (the members share their output times)."""
+    curves = []
+    for f in folders:
+        p = os.path.join(out, f, "efficiency.csv")
+        if os.path.exists(p):
+            curves.append(read(p))
+    if not curves:
+        return None, None
+    n = min(len(c) for c in curves)
+    t = [float(q["t_s"]) for q in curves[0][:n]]
+    return t, [100 * sum(float(c[i]["fine_efficiency"]) for c in curves) / len(curves) for i in range(n)]
+
+
+def main(out, keys, seeds=False):
+    runs = read(os.path.join(out, "sweep.csv"))
+    rows = read(os.path.join(out, "sweep_ensemble.csv")) if seeds else runs
+    if seeds:
+        keys = keys[:-1]  # the last key is the seed
     if not rows:
         return
-    if len(keys) > 1 or "fine_efficiency" not in rows[0] or number(rows[0][keys[0]]) is None:
+    if len(keys) > 1 or mean_of(rows, "fine_efficiency") not in rows[0] or number(rows[0][keys[0]]) is None:
         generic(out, keys, rows)
         return
     key = keys[0]
     vals = [float(r[key]) for r in rows]
-    eff = [100 * float(r["fine_efficiency"]) for r in rows]
+    eff = [100 * float(r[mean_of(rows, "fine_efficiency")]) for r in rows]
     fig, axs = plt.subplots(1, 2, figsize=(10, 3.8))
     for r in rows:
         p = os.path.join(out, r["case"], "psd.csv")
@@ -80,22 +114,21 @@ def main(out, keys):
     axs[0].set_xlabel("d / um")
     axs[0].set_ylabel("solid dN/dlog d / cm^-3 (final)")
     axs[0].legend(frameon=False, fontsize=7)
-    axs[1].plot(vals, eff, "ko-")
+    axs[1].errorbar(vals, eff, yerr=error_bars(rows, "fine_efficiency", 100.0), fmt="ko-", capsize=3)
     axs[1].set_xlabel(key)
-    axs[1].set_ylabel("fine efficiency / %")
+    axs[1].set_ylabel(f"fine efficiency / % (mean ± s.e., {rows[0]['members']} seeds)" if seeds
+                      else "fine efficiency / %")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "sweep.png"), dpi=120)
     plt.close(fig)
 
     fig, ax = plt.subplots(figsize=(5, 3.6))
     for r in rows:
-        p = os.path.join(out, r["case"], "efficiency.csv")
-        if not os.path.exists(p):
-            continue
-        e = read(p)
-        ax.plot([float(q["t_s"]) for q in e], [100 * float(q["fine_efficiency"]) for q in e], label=r[key])
+        t, e = mean_efficiency(out, [q["case"] for q in runs if q[key] == r[key]] if seeds else [r["case"]])
+        if t is not None:
+            ax.plot(t, e, label=r[key])
     ax.set_xlabel("t / s")
-    ax.set_ylabel("fine efficiency / %")
+    ax.set_ylabel(f"fine efficiency / % (mean of {rows[0]['members']} seeds)" if seeds else "fine efficiency / %")
     ax.legend(frameon=False, fontsize=7, title=key.split(".")[-1])
     fig.tight_layout()
     fig.savefig(os.path.join(out, "sweep_time.png"), dpi=120)
@@ -103,4 +136,7 @@ def main(out, keys):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2:])
+    if len(sys.argv) > 2 and sys.argv[2] == "--seeds":
+        main(sys.argv[1], sys.argv[3:], seeds=True)
+    else:
+        main(sys.argv[1], sys.argv[2:])

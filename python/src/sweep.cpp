@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include "agglo/run/sweep.hpp"
+#include "agglo/run/sweep_seeds.hpp"
 #include "bindings.hpp"
 #include "case.hpp"
 #include "options.hpp"
@@ -48,7 +49,22 @@ nlohmann::json cases_json(const std::vector<run::SweepAxis>& axes, const run::Sw
   return cases;
 }
 
-Result sweep(const Case& c, const py::dict& params, const std::string& command, const RunOptions& o) {
+// The points of a sweep with seeds: {"values": {key: value}, "members", "folder", "stats": {q: {"mean",
+// "stderr", "n"}}} in grid order.
+nlohmann::json points_json(const std::vector<run::SweepAxis>& axes, const std::vector<io::SweepPoint>& points) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : points) {
+    nlohmann::json values = nlohmann::json::object(), stats = nlohmann::json::object();
+    for (std::size_t k = 0; k < p.values.size(); ++k) values[axes[k].key] = value_json(p.values[k]);
+    for (const auto& s : p.stats)
+      stats[s.quantity] = {{"mean", s.value.mean}, {"stderr", s.value.standard_error}, {"n", s.value.n}};
+    out.push_back({{"values", values}, {"members", p.members}, {"folder", p.folder}, {"stats", stats}});
+  }
+  return out;
+}
+
+Result sweep(const Case& c, const py::dict& params, const std::string& command, long long seeds,
+             const RunOptions& o) {
   const auto& cmd = run::find_command(command);
   std::vector<run::SweepAxis> axes;
   for (auto [key, values] : params) {
@@ -57,15 +73,24 @@ Result sweep(const Case& c, const py::dict& params, const std::string& command, 
     axes.push_back(std::move(axis));
   }
   Config base = copy_of(c);
+  auto details = details_of(axes, command);  // the user's axes, as the CLI records them
+  if (seeds != 1) axes = run::with_seed_axis(cmd, base, std::move(axes), seeds);
   auto plan = run::plan_sweep(cmd, base, axes);  // every case validated before the folder is made
   const auto ctx = context_of(cmd, o);
   RunFolder folder(o.out);
   auto r = run_released(
       [&](const run::RunContext& x) {
-        const auto res = run::execute_sweep(cmd, base, axes, plan, folder.path(), x, details_of(axes, command));
         run::CommandResult out;
-        out.summary = {{"command", command}, {"cases", cases_json(axes, res)}};
-        out.data = res.data;
+        if (seeds == 1) {
+          const auto res = run::execute_sweep(cmd, base, axes, plan, folder.path(), x, details);
+          out.summary = {{"command", command}, {"cases", cases_json(axes, res)}};
+          out.data = res.data;
+          return out;
+        }
+        details["seeds"] = seeds;
+        const auto res = run::execute_seeded_sweep(cmd, base, axes, plan, folder.path(), x, details);
+        out.summary = {{"command", command}, {"cases", cases_json(axes, res.runs)}, {"points", points_json(axes, res.points)}};
+        out.data = res.runs.data;
         return out;
       },
       ctx, o.progress);
@@ -78,11 +103,13 @@ Result sweep(const Case& c, const py::dict& params, const std::string& command, 
 void bind_sweep(py::module_& m) {
   m.def(
       "sweep",
-      [](const Case& c, const py::dict& params, const std::string& command, py::object out, int threads,
-         py::object progress, py::object format, bool resume, bool overwrite) {
-        return sweep(c, params, command, options_of(out, threads, progress, format, std::nullopt, resume, overwrite));
+      [](const Case& c, const py::dict& params, const std::string& command, long long seeds, py::object out,
+         int threads, py::object progress, py::object format, bool resume, bool overwrite) {
+        return sweep(c, params, command, seeds,
+                     options_of(out, threads, progress, format, std::nullopt, resume, overwrite));
       },
-      py::arg("case"), py::arg("params"), py::kw_only(), py::arg("command") = "acoustic", py::arg("out") = py::none(),
+      py::arg("case"), py::arg("params"), py::kw_only(), py::arg("command") = "acoustic", py::arg("seeds") = 1,
+      py::arg("out") = py::none(),
       py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("format") = "csv,netcdf",
       py::arg("resume") = false, py::arg("overwrite") = false,
       R"(Runs `command` for every point of a grid of config values, cases in parallel (as `agglo sweep`).
@@ -91,11 +118,16 @@ void bind_sweep(py::module_& m) {
   params   dict {dotted key: list of values}, e.g. {"projectile.speed": [0.1, 0.2]}; several keys make a
            grid (last key fastest). A str value is TOML text as on the command line (a bare word is a string).
   command  the command run for each case (default "acoustic"; see command_names())
+  seeds    N >= 2: every point runs N seeds (derived from the case's seed and the member index; member 0
+           is the case's own seed), the seed being the grid's last axis; out also gets sweep_ensemble.csv
+           and sweep_ensemble.nc with each point's mean and standard error (default 1: one run per point)
   out, threads, progress, format, resume, overwrite: as for the command functions (no checkpoint);
   out gets sweep.csv and one folder per case.
 
 Returns an agglo.Result whose summary is {"command": ..., "cases": [{"index", "values": {key: value},
-"folder", "summary"}, ...]} in grid order; its seed is 0 and it has no arrays.)");
+"folder", "summary"}, ...]} in grid order (with seeds, also "points": [{"values": {key: value}, "members",
+"folder" (member 0's), "stats": {quantity: {"mean", "stderr", "n"}}}, ...]); its seed is 0 and its arrays
+are the table of the cases (results.nc).)");
 }
 
 }  // namespace agglo::python

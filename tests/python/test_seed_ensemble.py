@@ -48,3 +48,33 @@ def test_seeds_one_is_the_single_run_and_bad_seeds_raise(agglo_module):
     for bad in (0, -2):
         with pytest.raises(agglo.ConfigError, match="--seeds"):
             agglo.acoustic(_case(agglo), seeds=bad)
+
+
+def test_sweep_with_seeds_equals_cli(agglo_module, tmp_path):
+    """agglo.sweep(..., seeds=N) as `agglo sweep --seeds N`: the points' statistics in the summary and in
+    sweep_ensemble.csv, each from the point's own members."""
+    agglo = agglo_module
+    path = tmp_path / "case.toml"
+    path.write_text(_case(agglo).to_toml())
+    res = agglo.sweep(agglo.Case.load(path), {"population.1.diameter": [20e-6, 40e-6]}, seeds=2,
+                      out=tmp_path / "py", threads=2)
+    proc = cli("sweep", path, "--param", "population.1.diameter", "--values", "2e-05,4e-05", "--seeds", "2",
+               "--threads", "2", "--out", tmp_path / "cli")
+    assert proc.returncode == 0, proc.stderr
+    points, cases = res.summary["points"], res.summary["cases"]
+    assert len(points) == 2 and len(cases) == 4
+    assert [p["values"]["population.1.diameter"] for p in points] == [20e-6, 40e-6]
+    rows = (tmp_path / "cli" / "sweep_ensemble.csv").read_text().splitlines()
+    header = rows[0].split(",")
+    for i, p in enumerate(points):
+        assert p["members"] == 2 and p["folder"] == cases[2 * i]["folder"]
+        own = [c["summary"]["fine_efficiency"] for c in cases[2 * i:2 * i + 2]]
+        eff = p["stats"]["fine_efficiency"]
+        assert own[0] != own[1]
+        assert eff["mean"] == pytest.approx(np.mean(own), rel=1e-12)
+        assert eff["stderr"] == pytest.approx(np.std(own, ddof=1) / np.sqrt(2), rel=1e-9)
+        row = rows[1 + i].split(",")
+        assert float(row[header.index("fine_efficiency_mean")]) == pytest.approx(eff["mean"], rel=1e-9)
+    with pytest.raises(agglo.ConfigError, match="--seeds"):
+        agglo.sweep(agglo.Case.load(path), {"population.1.diameter": [20e-6]}, seeds=0, out=tmp_path / "bad")
+    assert not (tmp_path / "bad").exists()

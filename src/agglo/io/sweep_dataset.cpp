@@ -16,11 +16,11 @@ bool as_number(const std::string& s, double& x) {
   return ec == std::errc() && end == s.data() + s.size();
 }
 
-// The swept key's values as numbers, or false when one is not a number.
-bool numeric_column(const std::vector<SweepRow>& rows, std::size_t k, std::vector<double>& out) {
+// The values of column k of `rows` as numbers, or false when one is not a number.
+bool numeric_column(const std::vector<std::vector<std::string>>& rows, std::size_t k, std::vector<double>& out) {
   for (const auto& r : rows) {
     double x = 0;
-    if (k >= r.values.size() || !as_number(r.values[k], x)) return false;
+    if (k >= r.size() || !as_number(r[k], x)) return false;
     out.push_back(x);
   }
   return true;
@@ -41,6 +41,21 @@ void add_summaries(Dataset& d, const std::vector<SweepRow>& rows) {
 
 }  // namespace
 
+void add_key_columns(Dataset& d, const std::string& dim, const std::vector<std::string>& keys,
+                     const std::vector<std::vector<std::string>>& rows) {
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    std::vector<double> x;
+    if (numeric_column(rows, k, x)) {
+      d.add(netcdf_name(keys[k]), {dim}, udunits_of_config_key(keys[k]), "swept value of " + keys[k], x)
+          .attributes["config_key"] = keys[k];
+      continue;
+    }
+    nlohmann::json values = nlohmann::json::array();
+    for (const auto& r : rows) values.push_back(k < r.size() ? r[k] : "");
+    d.attributes[netcdf_name(keys[k])] = values.dump();
+  }
+}
+
 Dataset sweep_dataset(const std::vector<std::string>& keys, const std::vector<SweepRow>& rows) {
   Dataset d;
   std::vector<std::int64_t> index;
@@ -50,17 +65,9 @@ Dataset sweep_dataset(const std::vector<std::string>& keys, const std::vector<Sw
     folders.push_back(rows[i].folder);
   }
   add_int_column(d, "case", "case", "1", "case index (sweep.csv index)", index);
-  for (std::size_t k = 0; k < keys.size(); ++k) {
-    std::vector<double> x;
-    if (numeric_column(rows, k, x)) {
-      d.add(netcdf_name(keys[k]), {"case"}, udunits_of_config_key(keys[k]), "swept value of " + keys[k], x)
-          .attributes["config_key"] = keys[k];
-      continue;
-    }
-    nlohmann::json values = nlohmann::json::array();
-    for (const auto& r : rows) values.push_back(k < r.values.size() ? r.values[k] : "");
-    d.attributes[netcdf_name(keys[k])] = values.dump();
-  }
+  std::vector<std::vector<std::string>> values;
+  for (const auto& r : rows) values.push_back(r.values);
+  add_key_columns(d, "case", keys, values);
   d.attributes["case_folders"] = folders.dump();
   add_summaries(d, rows);
   return d;

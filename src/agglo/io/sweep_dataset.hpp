@@ -14,4 +14,9 @@ namespace agglo::io {
 
 Dataset sweep_dataset(const std::vector<std::string>& keys, const std::vector<SweepRow>& rows);
 
+// The swept keys' columns on dimension `dim` (rows[i][k]: key k's value in row i): a key whose values are
+// all numbers as a variable named like the key, any other as a global attribute (JSON array as text).
+void add_key_columns(Dataset& d, const std::string& dim, const std::vector<std::string>& keys,
+                     const std::vector<std::vector<std::string>>& rows);
+
 }  // namespace agglo::io

@@ -86,7 +86,7 @@ void write_run_files(const OutputDir& out, const Config& cfg, std::string_view c
 }
 
 void write_results_nc(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
-                      const io::Dataset& data, std::string_view status) {
+                      const io::Dataset& data, std::string_view status, const std::string& file) {
   nlohmann::json provenance{
       {"Conventions", "CF-1.8"},
       {"title", fmt::format("agglo {} of {}", command, std::filesystem::path(cfg.file()).filename().string())},
@@ -96,7 +96,7 @@ void write_results_nc(const OutputDir& out, const Config& cfg, std::string_view 
       {"seed", seed},
       {"config", cfg.resolved_toml()}};
   if (status != "complete") provenance["status"] = std::string(status);
-  io::write_netcdf(out, data, io::kResultsFile, provenance);
+  io::write_netcdf(out, data, file, provenance);
 }
 
 namespace {

@@ -18,6 +18,7 @@
 #include "agglo/core/estimate.hpp"
 #include "agglo/core/settings.hpp"
 #include "agglo/io/dataset.hpp"
+#include "agglo/io/netcdf_writer.hpp"
 #include "agglo/io/output_dir.hpp"
 #include "agglo/run/budget.hpp"
 #include "agglo/run/reporter.hpp"
@@ -128,9 +129,10 @@ void write_run_started(const OutputDir& out, std::string_view command, const std
 // results.nc (io/netcdf_writer.hpp) of a complete run: `data` plus the global attributes Conventions
 // ("CF-1.8"), title, agglo_version, git_hash, command, seed and config (the resolved TOML text).
 // `status` other than "complete" (e.g. "incomplete" for the partial results of an interrupted run) is
-// added as the global attribute `status`.
+// added as the global attribute `status`. `file`: another NetCDF file of the run with the same attributes.
 void write_results_nc(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
-                      const io::Dataset& data, std::string_view status = "complete");
+                      const io::Dataset& data, std::string_view status = "complete",
+                      const std::string& file = io::kResultsFile);
 
 // config.resolved.toml and run.json of a finished ("complete") or interrupted ("incomplete") run (also
 // used by sweep for its own folder).
