@@ -5,13 +5,9 @@
 # defaults; bad budget values are one-line errors; --dry-run validates and prints the estimates of
 # every shipped case within the default budgets without creating anything.
 # $1 = agglo executable, $2 = source dir.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 unset AGGLO_MAX_STEPS AGGLO_MAX_MEMORY AGGLO_MAX_OUTPUT
 DEM="$SRC/cases/seed000_neutral_tetrahedron.toml"
-AC="$SRC/cases/seed002_baseline.toml"
 ES="$SRC/cases/electrostatics_tetrahedron.toml"
 
 # err <expected fragment> <agglo args...>: exit 2, one line on stderr holding the fragment, no folder.

@@ -1,10 +1,7 @@
 #!/usr/bin/env bash
 # CLI contract of the DEM commands: help/version, bad input -> exit 2 with one line naming
 # file/key/value, no output folder content on failure, and a good run writing its files.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 
 $A --help >/dev/null || fail "--help"
 $A --version | grep -q "agglo" || fail "--version"

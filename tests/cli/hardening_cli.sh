@@ -3,12 +3,8 @@
 # and unusable output folders give exit 2 with exactly one line (control characters escaped) and no
 # output folder; sweep.csv quotes its fields; stale temporary files and snapshots never survive a
 # later run. $1 = agglo executable, $2 = source dir.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'chmod -R u+w "$T" 2>/dev/null; rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-DEM="$SRC/cases/seed000_neutral_tetrahedron.toml"
-AC="$SRC/cases/seed002_baseline.toml"
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
+DEM=$NT
 SHORT_AC=(--set time.end=0.001 --set "output.psd_times=[0.0,0.001]" --set "output.snapshot_times=[0.0]"
           --set output.plots=false)
 

@@ -2,10 +2,7 @@
 # Numerical hardening (docs/dem.md and docs/acoustics.md, "Limits and checks"): absurd inputs end in
 # a one-line error with the right exit code (2 = refused input, 3 = blow-up detected), never in a
 # run that writes nan/inf or that does not end. $1 = agglo executable, $2 = source dir.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 TET="$SRC/cases/seed000_neutral_tetrahedron.toml"
 ACO="$SRC/cases/seed002_baseline.toml"
 

@@ -4,12 +4,8 @@
 # coordinate labelled, units on every variable and the same numbers as the CSV columns; provenance
 # (version, git hash, command, seed, resolved config) in the global attributes. $1 = agglo executable,
 # $2 = source dir.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 DEM="$SRC/cases/seed000_neutral_tetrahedron.toml"
-AC="$SRC/cases/seed002_baseline.toml"
 SHORT=(--set time.after_contact=2e-5 --set output.snapshot_interval=1e-5)
 ASHORT=(--set time.end=0.001 --set "output.psd_times=[0.0,0.001]" --set "output.snapshot_times=[0.0]")
 

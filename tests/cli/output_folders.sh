@@ -4,12 +4,8 @@
 # folder agglo did not write; run.json says running / complete / incomplete / failed; an interrupted run
 # flushes its results so far and is marked incomplete; a single run restarts under --resume, an
 # ensemble continues from its journal. $1 = agglo executable, $2 = source dir.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 DEM="$SRC/cases/seed000_neutral_tetrahedron.toml"
-AC="$SRC/cases/seed002_baseline.toml"
 SHORT=(--set time.after_contact=1e-6)
 status() { /usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["status"])' "$1/run.json"; }
 

@@ -5,11 +5,7 @@
 # and the same final checkpoint.bin byte for byte, whatever the thread count; a kill during a write
 # leaves the previous checkpoint usable; a checkpoint of another config is refused with one line, exit 2.
 # $1 = agglo executable, $2 = source dir.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-AC="$SRC/cases/seed002_baseline.toml"
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 # 400 collision steps of 5e-5 s, 4600 samples (above the engine's threshold for threads); checkpoints every
 # 80 steps (5 of them, the last at the end).
 SHORT=(--set time.end=0.02 --set "output.snapshot_times=[0.0,0.01]" --set "output.psd_times=[0.0,0.0101,0.02]"

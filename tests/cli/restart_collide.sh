@@ -4,12 +4,8 @@
 # then resumed, leaves every output byte-identical to the uninterrupted run (run.json aside; result.json
 # without its wall-time field), including the final checkpoint.bin; neutral and charged (kappa_p = 15,
 # spectral), at 1 and 2 threads. A checkpoint of another config is refused with exit 2 and one line.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 
-NT=$SRC/cases/seed000_neutral_tetrahedron.toml
 CH=$SRC/cases/seed000_charged_tetrahedron_k15.toml
 NS=(--set time.after_contact=2e-4 --set output.snapshot_interval=5e-5)
 CS=(--set time.after_contact=4e-5 --set output.snapshot_interval=2e-5 --set projectile.gap_radii=0.3)

@@ -3,10 +3,7 @@
 # checkpoint write (fault hook AGGLO_FAULT_KILL_CHECKPOINT=N) and continued with --resume ends with the
 # uninterrupted run's files (run.json and wall times aside; results.nc by content) and final checkpoint.bin, byte for byte; a
 # checkpoint of another config is refused with one line, exit 2. $1 = agglo executable, $2 = source dir.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 CASE="$SRC/cases/partmc_brownian.toml"
 SHORT=(--set time.end=7200.0 --set "output.psd_times=[0.0,3600.0,7200.0]" --set output.plots=false)
 run() { "$A" -q --no-plots sectional "$CASE" "${SHORT[@]}" --checkpoint 900 "$@"; }

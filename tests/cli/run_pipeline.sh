@@ -2,10 +2,7 @@
 # The run pipeline from the command line: `sweep` runs every command (and a grid of two keys), an
 # ensemble resumed from its journal repeats only the missing jobs and gives the same result, and
 # Ctrl-C (SIGINT) stops with exit 130 keeping the finished jobs.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 cd "$SRC" || exit 1
 NT=cases/seed000_neutral_tetrahedron.toml
 SHORT=(--set time.after_contact=2e-4 --set output.snapshot_interval=0)

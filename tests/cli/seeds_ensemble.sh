@@ -4,11 +4,7 @@
 # single run; a member missing from the journal (deleted, or cut off by SIGINT) is run again by --resume
 # and the outputs equal the uninterrupted run's (wall times aside); bad --seeds values and --checkpoint
 # with an ensemble are refused with one line, exit 2. $1 = agglo executable, $2 = source dir.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-AC="$SRC/cases/seed002_baseline.toml"
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 SHORT=(--set time.end=0.01 --set "output.psd_times=[0.0,0.01]" --set "output.snapshot_times=[0.0]"
        --set output.plots=false --set population.0.samples=1500 --set population.1.samples=50)
 run() { "$A" -q --no-plots acoustic "$AC" "${SHORT[@]}" "$@"; }

@@ -5,11 +5,7 @@
 # rows (mean, s.e. with n - 1), member 0 of each point equal to the plain sweep's case, each point equal to
 # `agglo acoustic --seeds N` at that value, 1 and 2 threads identical, --resume after a lost member equal;
 # bad --seeds uses refused with one line, exit 2, no folder. $1 = agglo executable, $2 = source dir.
-set -u
-A=$1; SRC=$2
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-AC="$SRC/cases/seed002_baseline.toml"
+. "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 SHORT=(--set time.end=0.01 --set "output.psd_times=[0.0,0.01]" --set "output.snapshot_times=[0.0]"
        --set population.0.samples=1500 --set population.1.samples=50)
 P=(--param population.1.diameter --values 20e-6,40e-6)
