@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Runs the seed-002 studies behind docs/acoustics.md. Usage: bench/acoustic_studies.sh AGGLO OUTDIR [part]
-# parts: integrator | diameter | concentration | validation | baseline | all (default all).
+# parts: integrator | diameter | concentration | validation | baseline | diameter_seeds |
+# concentration_seeds | all (default all: the first five; the *_seeds parts are the two sweeps with 4 seeds
+# per point and error bars, points with droplets only, docs/acoustics.md "Seed ensembles and error bars").
 # Every case runs at its own steps (5e-5 s for the 2000 Hz cases, 10 steps per acoustic period; the
 # exact integrator with drift correction, docs/acoustics.md sec. 3). Extra flags for every sweep can be
-# given in BIG (e.g. BIG="--set time.collision_dt=1e-5 --set time.motion_dt=1e-5"). JOBS = threads.
+# given in BIG (e.g. BIG="--set time.collision_dt=1e-5 --set time.motion_dt=1e-5"). JOBS = threads,
+# SEEDS = members per point of the *_seeds parts (default 4).
 set -eu
 AGGLO="$1"
 OUT="$2"
@@ -37,4 +40,14 @@ if [ "$PART" = validation ] || [ "$PART" = all ]; then
 fi
 if [ "$PART" = baseline ] || [ "$PART" = all ]; then
   "$AGGLO" -q acoustic "$C/seed002_baseline.toml" --overwrite --out "$OUT/baseline" -j "${JOBS:-1}"
+fi
+if [ "$PART" = diameter_seeds ]; then
+  "$AGGLO" -q sweep "$C/seed002_droplet_diameter.toml" --param population.1.diameter \
+    --values 10e-6,20e-6,30e-6,40e-6,50e-6 --seeds "${SEEDS:-4}" --overwrite --out "$OUT/droplet_diameter_seeds" \
+    "${big[@]}" -j "${JOBS:-2}"
+fi
+if [ "$PART" = concentration_seeds ]; then
+  "$AGGLO" -q sweep "$C/seed002_droplet_concentration.toml" --param population.1.number_concentration \
+    --values 1e8,5e8,1e9,2e9,3e9,5e9 --seeds "${SEEDS:-4}" --overwrite --out "$OUT/droplet_concentration_seeds" \
+    "${big[@]}" -j "${JOBS:-2}"
 fi
