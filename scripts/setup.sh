@@ -1,21 +1,15 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages agglo needs (when missing) and builds it in Release into build/.
+# Installs the Debian 12 packages agglo needs to run (when missing) and builds, in Release into build/,
+# what the showcase and the Python module need: the CLI `agglo` and the extension `_agglo`. The test
+# suite's own packages and targets (GoogleTest, Google Benchmark, clang-tidy, Dask) come with
+# scripts/test.sh, the README's second command.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-PKGS="build-essential cmake pkg-config libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
-      nlohmann-json3-dev librandom123-dev libgtest-dev libbenchmark-dev python3-matplotlib python3-numpy
-      clang-tidy libnetcdf-dev pybind11-dev python3-dev python3-pytest python3-xarray python3-netcdf4
-      python3-distributed libopenmpi-dev openmpi-bin"
-missing=""
-for p in $PKGS; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
-if [ -n "$missing" ]; then
-  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-  echo "setup: installing$missing"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing >/dev/null
-fi
+# shellcheck source=scripts/packages.sh
+source scripts/packages.sh
+install_missing $RUN_PKGS
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null
-cmake --build build -j"$(nproc)"
+cmake --build build -j"$(nproc)" --target agglo _agglo
 # Make `import agglo` work for /usr/bin/python3: a .pth file in the site folder for local packages
 # pointing at this build's module (docs/python.md).
 site=$(/usr/bin/python3 -c 'import sys; print(f"/usr/local/lib/python3.{sys.version_info.minor}/dist-packages")')

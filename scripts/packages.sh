@@ -1,0 +1,21 @@
+# The Debian 12 packages of agglo, declared once (sourced by scripts/setup.sh and scripts/test.sh;
+# README "Building by hand" lists the same two groups).
+# To build and run agglo, its plots and its Python module:
+RUN_PKGS="build-essential cmake pkg-config libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
+  nlohmann-json3-dev librandom123-dev libnetcdf-dev libopenmpi-dev openmpi-bin pybind11-dev python3-dev
+  python3-numpy python3-matplotlib python3-xarray python3-netcdf4"
+# Only for the test suite and the benchmarks (GoogleTest, Google Benchmark, the function-size lint,
+# pytest, the Dask example's test, the notebooks):
+TEST_PKGS="libgtest-dev libbenchmark-dev clang-tidy python3-pytest python3-distributed"
+
+# install_missing PKG...: apt-get installs the packages that dpkg does not know as installed.
+install_missing() {
+  local missing="" p SUDO=""
+  for p in "$@"; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
+  [ -n "$missing" ] || return 0
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  echo "setup: installing$missing"
+  $SUDO apt-get update -qq
+  # shellcheck disable=SC2086
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing >/dev/null
+}
