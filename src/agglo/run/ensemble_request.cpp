@@ -54,7 +54,7 @@ void check_request(const EnsembleRequest& r, const RunContext& ctx) {
 // when only the seed varies (member 0 is the base, already parsed); as written when only the swept values
 // make it valid (e.g. a required key given by --param).
 Config resolved_base(const EnsemblePlan& p) {
-  if (p.request.axes.empty()) return p.sweep.configs.front().clone();
+  if (p.one_point()) return p.sweep.configs.front().clone();
   Config r = p.request.base.clone();
   try {
     parse_case(*p.cmd, r);
@@ -99,7 +99,7 @@ EnsemblePlan plan_ensemble(EnsembleRequest request, const RunContext& ctx) {
   } catch (const ConfigError&) {
     p.seed = p.cmd->seed(p.sweep.configs.front());
   }
-  p.recorded = !p.seeds.empty() && p.request.axes.empty() ? std::string(p.cmd->name()) : std::string("sweep");
+  p.recorded = p.one_point() ? std::string(p.cmd->name()) : std::string("sweep");
   p.details = ensemble_details(p.request.command, p.request.axes, p.seeds);
   p.estimate = ensemble_estimate(p, ctx);
   return p;
@@ -122,7 +122,7 @@ void write_runs(const EnsemblePlan& p, const OutputDir& out, SweepResult& runs, 
   const auto keys = keys_of(p.axes, p.axes.size());
   if (ctx.formats.csv) io::write_sweep_table(out, keys, rows);
   runs.data = std::make_shared<const io::Dataset>(io::sweep_dataset(keys, rows));
-  if (ctx.formats.netcdf && p.recorded == "sweep") write_results_nc(out, p.resolved, "sweep", p.seed, *runs.data);
+  if (ctx.formats.netcdf && !p.one_point()) write_results_nc(out, p.resolved, "sweep", p.seed, *runs.data);
 }
 
 // Each point's statistics files (in its folder), then the table of the points (with axes).
@@ -131,7 +131,7 @@ void write_points(const EnsemblePlan& p, const OutputDir& out, EnsembleResult& r
   res.points = sweep_points(res.runs, n);
   const auto keys = keys_of(p.axes, p.axes.size());
   for (std::size_t k = 0; k < res.points.size(); ++k) {
-    const std::string name = p.request.axes.empty() ? "" : grid_folder("point", k, res.points[k].values);
+    const std::string name = p.one_point() ? "" : grid_folder("point", k, res.points[k].values);
     auto data = std::make_shared<const io::Dataset>(point_dataset(res.runs, k * n, n, keys));
     for (std::size_t i = k * n; i < (k + 1) * n; ++i) res.runs.case_data[i] = nullptr;  // folded into `data`
     const OutputDir dir = name.empty() ? out : OutputDir(out.path() / name);
@@ -143,7 +143,7 @@ void write_points(const EnsemblePlan& p, const OutputDir& out, EnsembleResult& r
     if (name.empty()) res.data = data;
     res.point_folders.push_back(name);
   }
-  if (p.request.axes.empty()) return;
+  if (p.one_point()) return;
   const auto user_keys = keys_of(p.axes, p.request.axes.size());
   if (ctx.formats.csv) io::write_sweep_points(out, user_keys, res.points);
   if (ctx.formats.netcdf)

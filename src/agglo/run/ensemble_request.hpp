@@ -58,6 +58,8 @@ struct EnsemblePlan {
   nlohmann::json details;                 // ensemble_details
   Estimate estimate;                      // every run plus the statistics files
   std::size_t members() const { return seeds.empty() ? 1 : seeds.size(); }
+  // A seed ensemble of the case alone: its one point's statistics are the folder's own files.
+  bool one_point() const { return !seeds.empty() && request.axes.empty(); }
 };
 
 // Everything checked before anything is made. ConfigError (one line) for an unknown command, an empty
