@@ -6,10 +6,12 @@ and sweep_time.png with the efficiency vs time of every case.
 Any other sweep: sweep.png with the headline result of the command (v_crit, v50, broken, energy,
 fine efficiency) vs the first key, one line per value of the second key when there is one.
 With --seeds (agglo sweep --seeds N; the last key is the seed): the points' means with error bars of one
-standard error (sweep_ensemble.csv), the size distributions of member 0 (the case's own seed) and the
-efficiency vs time averaged over the members of each point.
+standard error (sweep_ensemble.csv), the size distributions of member 0 (the case's own seed) and each
+point's mean efficiency vs time with a band of +-1 standard error (ensemble_timeseries.csv of the point's
+folder point_<index>_<values>).
 Usage: plot_sweep.py OUTDIR [--seeds] KEY [KEY2 ...]"""
 import csv
+import glob
 import os
 import sys
 
@@ -72,6 +74,21 @@ def generic(out, keys, rows):
     plt.close(fig)
 
 
+def point_efficiency(out, index):
+    """The mean and standard error of the efficiency vs time of sweep point `index` (its folder's
+    ensemble_timeseries.csv), in %; (None, None, None) when the point has none."""
+    found = glob.glob(os.path.join(out, f"point_{index:02d}_*", "ensemble_timeseries.csv"))
+    if len(found) != 1:
+        return None, None, None
+    rows = read(found[0])
+    if not rows or "fine_efficiency_mean" not in rows[0]:
+        return None, None, None
+    t = [float(q["t_s"]) for q in rows]
+    m = [100 * float(q["fine_efficiency_mean"]) for q in rows]
+    e = [100 * (number(q["fine_efficiency_stderr"]) or 0.0) for q in rows]
+    return t, m, e
+
+
 def mean_efficiency(out, folders):
     """The efficiency vs time averaged over member folders (the members share their output times)."""
     curves = []
@@ -124,11 +141,18 @@ def main(out, keys, seeds=False):
 
     fig, ax = plt.subplots(figsize=(5, 3.6))
     for r in rows:
-        t, e = mean_efficiency(out, [q["case"] for q in runs if q[key] == r[key]] if seeds else [r["case"]])
+        t, m, e = point_efficiency(out, int(r["index"])) if seeds else (None, None, None)
         if t is not None:
-            ax.plot(t, e, label=r[key])
+            line, = ax.plot(t, m, label=r[key])
+            ax.fill_between(t, [a - b for a, b in zip(m, e)], [a + b for a, b in zip(m, e)], color=line.get_color(),
+                            alpha=0.25, linewidth=0)
+            continue
+        t, m = mean_efficiency(out, [q["case"] for q in runs if q[key] == r[key]] if seeds else [r["case"]])
+        if t is not None:
+            ax.plot(t, m, label=r[key])
     ax.set_xlabel("t / s")
-    ax.set_ylabel(f"fine efficiency / % (mean of {rows[0]['members']} seeds)" if seeds else "fine efficiency / %")
+    ax.set_ylabel(f"fine efficiency / % (mean ± s.e. of {rows[0]['members']} seeds)" if seeds
+                  else "fine efficiency / %")
     ax.legend(frameon=False, fontsize=7, title=key.split(".")[-1])
     fig.tight_layout()
     fig.savefig(os.path.join(out, "sweep_time.png"), dpi=120)

@@ -1,7 +1,8 @@
 // One CLI subcommand per command of the run pipeline (collide, vcrit, breakup, electrostatics,
 // acoustic): parse, run, summarise, write, plot. A command's shortcuts (e.g. `collide --speed V`)
 // become options that override their config key. A command with a random seed (Command::seed_key)
-// takes `--seeds N`: N >= 2 runs a seed ensemble (run/seed_ensemble.hpp), N = 1 the single run.
+// takes `--seeds N`: N >= 2 runs a seed ensemble (a seeded sweep with no axes, run/ensemble_request.hpp),
+// N = 1 the single run.
 #include <charconv>
 #include <memory>
 
@@ -9,13 +10,12 @@
 
 #include "agglo/core/error.hpp"
 #include "agglo/run/commands.hpp"
-#include "agglo/run/ranks.hpp"
-#include "agglo/run/seed_ensemble.hpp"
+#include "agglo/run/ensemble_request.hpp"
 #include "command.hpp"
 
 namespace {
 
-// --seeds: a whole number (>= 1 is checked by plan_seed_ensemble).
+// --seeds: a whole number (>= 1 is checked by run::plan_ensemble).
 long long seed_count(const std::string& text) {
   long long n = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
@@ -25,18 +25,15 @@ long long seed_count(const std::string& text) {
   return n;
 }
 
-void run_seed_ensemble(const agglo::run::Command& cmd, const agglo::Config& cfg, const agglo::cli::CommonArgs& args,
+// --seeds N >= 2: the seeded ensemble of the case, with no axes (run/ensemble_request.hpp).
+void run_seed_ensemble(const agglo::run::Command& cmd, agglo::Config cfg, const agglo::cli::CommonArgs& args,
                        long long n) {
-  auto plan = agglo::run::plan_seed_ensemble(cmd, cfg, n);  // ConfigError for n < 1
-  if (args.checkpoint > 0)
-    throw agglo::ConfigError(fmt::format("--checkpoint {} with --seeds {}: checkpoints are for single runs; an "
-                                         "ensemble resumes from its journal (--resume repeats the missing members)",
-                                         args.checkpoint, n));
-  const auto out = agglo::cli::output_path(args, std::string(cmd.name()));
   const auto ctx = agglo::cli::context(args);
-  if (args.dry_run) return agglo::cli::dry_run(cfg.file(), agglo::run::seed_ensemble_estimate(cmd, plan, ctx), ctx);
-  agglo::run::execute_seed_ensemble(cmd, cfg, plan, out, ctx);
-  if (ctx.formats.csv && agglo::run::is_output_rank()) agglo::cli::run_plot_script("plot_ensemble.py", out);
+  auto plan = agglo::run::plan_ensemble(
+      {std::string(cmd.name()), std::move(cfg), {}, n, agglo::cli::output_path(args, std::string(cmd.name()))}, ctx);
+  if (args.dry_run) return agglo::cli::dry_run(plan.request.base.file(), plan.estimate, ctx);
+  agglo::run::execute_ensemble(plan, ctx);
+  if (ctx.formats.csv) agglo::cli::run_plot_script("plot_ensemble.py", plan.request.folder);
 }
 
 void add_subcommand(CLI::App& app, const agglo::run::Command& cmd) {
@@ -64,7 +61,7 @@ void add_subcommand(CLI::App& app, const agglo::run::Command& cmd) {
     agglo::Config cfg = agglo::cli::load_case(*args);
     for (std::size_t k = 0; k < shortcuts.size(); ++k)
       if (!(*values)[k].empty()) cfg.apply_override(fmt::format("{}={}", shortcuts[k].key->dotted(), (*values)[k]));
-    if (n != 1) return run_seed_ensemble(cmd, cfg, *args, n);
+    if (n != 1) return run_seed_ensemble(cmd, std::move(cfg), *args, n);
     const auto out = agglo::cli::output_path(*args, std::string(cmd.name()));
     const auto ctx = agglo::cli::context(*args);
     if (args->dry_run) return agglo::cli::dry_run(cfg.file(), agglo::run::plan(cmd, cfg, ctx), ctx);

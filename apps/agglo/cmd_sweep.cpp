@@ -1,14 +1,13 @@
 // `agglo sweep CASE.toml --param KEY --values v1,v2,... [--param KEY2 --values ...] [--command NAME]
 // [--seeds N]`: independent runs of any command over a grid of config values, on all cores; writes
 // sweep.csv, one folder per case and a plot (scripts/plot_sweep.py). With --seeds N >= 2 every point runs
-// N seeds and sweep_ensemble.csv/.nc give each point's mean and standard error (run/sweep_seeds.hpp).
+// N seeds and gets the mean and standard error of every result (run/ensemble_request.hpp).
 #include <memory>
 
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
-#include "agglo/run/sweep.hpp"
-#include "agglo/run/sweep_seeds.hpp"
+#include "agglo/run/ensemble_request.hpp"
 #include "command.hpp"
 
 namespace {
@@ -30,27 +29,15 @@ std::vector<agglo::run::SweepAxis> axes(const SweepArgs& a) {
 }
 
 void run(const SweepArgs& a) {
-  const auto& cmd = agglo::run::find_command(a.command);
-  agglo::Config base = agglo::cli::load_case(a.common);
-  const auto ax = a.seeds == 1 ? axes(a) : agglo::run::with_seed_axis(cmd, base, axes(a), a.seeds);
-  const auto path = agglo::cli::output_path(a.common, "sweep");
-  auto plan = agglo::run::plan_sweep(cmd, base, ax);  // every case validated before the folder is made
   const auto ctx = agglo::cli::context(a.common);
-  const auto cost = agglo::run::sweep_estimate(cmd, plan, ctx);
-  if (a.common.dry_run) return agglo::cli::dry_run(base.file(), cost, ctx);
-  nlohmann::json details = {{"param", a.params.size() == 1 ? nlohmann::json(a.params[0]) : nlohmann::json(a.params)},
-                            {"values", ax.size() == 1 ? nlohmann::json(ax[0].values) : nlohmann::json(a.values)},
-                            {"command", a.command}};
+  auto plan = agglo::run::plan_ensemble(
+      {a.command, agglo::cli::load_case(a.common), axes(a), a.seeds, agglo::cli::output_path(a.common, "sweep")}, ctx);
+  if (a.common.dry_run) return agglo::cli::dry_run(plan.request.base.file(), plan.estimate, ctx);
+  agglo::run::execute_ensemble(plan, ctx);
   std::vector<std::string> plot_args;  // the swept keys (--seeds: the seed key is the last)
-  for (const auto& x : ax) plot_args.push_back(x.key);
-  if (a.seeds != 1) {
-    details["seeds"] = a.seeds;
-    agglo::run::execute_seeded_sweep(cmd, base, ax, plan, path, ctx, details);
-    plot_args.insert(plot_args.begin(), "--seeds");
-  } else {
-    agglo::run::execute_sweep(cmd, base, ax, plan, path, ctx, details);
-  }
-  if (ctx.formats.csv) agglo::cli::run_plot_script("plot_sweep.py", path, plot_args);  // the plots read sweep.csv
+  for (const auto& x : plan.axes) plot_args.push_back(x.key);
+  if (!plan.seeds.empty()) plot_args.insert(plot_args.begin(), "--seeds");
+  if (ctx.formats.csv) agglo::cli::run_plot_script("plot_sweep.py", plan.request.folder, plot_args);  // reads sweep.csv
 }
 
 agglo::cli::Registration reg([](CLI::App& app) {
@@ -68,8 +55,8 @@ agglo::cli::Registration reg([](CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--seeds", a->seeds,
                   "Run every point with N seeds (derived from the case's seed and the member index; member 0 is "
-                  "the case's own) and write each point's mean and standard error to sweep_ensemble.csv "
-                  "(default 1: one run per point)")
+                  "the case's own): each point's mean and standard error of every result in point_<index>_<values>/ "
+                  "and sweep_ensemble.csv (default 1: one run per point)")
       ->type_name("N");
   sub->callback([a] { run(*a); });
 });

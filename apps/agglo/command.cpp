@@ -51,26 +51,16 @@ CLI::Validator thread_count() {
 CLI::Validator output_formats() {
   return CLI::Validator(
       [](std::string& s) -> std::string {
-        run::OutputFormats f{false, false};
-        return parse_formats(s, f) ? std::string() : "'" + s + "' is not csv, netcdf or csv,netcdf";
+        try {
+          (void)run::parse_formats(s);
+          return {};
+        } catch (const ConfigError& e) {
+          return e.what();
+        }
       },
       "csv|netcdf|csv,netcdf");
 }
 }  // namespace
-
-bool parse_formats(const std::string& text, run::OutputFormats& f) {
-  f = {false, false};
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const auto end = std::min(text.find(',', start), text.size());
-    const auto item = text.substr(start, end - start);
-    if (item == "csv") f.csv = true;
-    else if (item == "netcdf") f.netcdf = true;
-    else return false;
-    start = end + 1;
-  }
-  return true;
-}
 
 void add_common_options(CLI::App& sub, CommonArgs& args) {
   sub.add_option("case", args.case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
@@ -140,7 +130,7 @@ run::RunContext context(const CommonArgs& args) {
   ctx.overwrite = args.overwrite;
   ctx.budgets = &budgets;
   ctx.checkpoint_interval = args.checkpoint;
-  parse_formats(args.format, ctx.formats);  // validated by the option's check
+  ctx.formats = run::parse_formats(args.format);  // validated by the option's check
   return ctx;
 }
 

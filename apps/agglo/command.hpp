@@ -30,9 +30,6 @@ struct CommonArgs {
 // Adds CASE.toml, --out, --set, --threads, --resume, --overwrite, the budgets and --dry-run to a subcommand.
 void add_common_options(CLI::App& sub, CommonArgs& args);
 
-// Parses "csv", "netcdf" or "csv,netcdf" into f; false for anything else.
-bool parse_formats(const std::string& text, run::OutputFormats& f);
-
 // --checkpoint SECONDS on a subcommand whose command writes checkpoints.
 void add_checkpoint_option(CLI::App& sub, CommonArgs& args);
 

@@ -9,7 +9,7 @@
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings.hpp"
 #include "agglo/run/commands.hpp"
-#include "agglo/run/seed_ensemble.hpp"
+#include "agglo/run/ensemble_request.hpp"
 #include "bindings.hpp"
 #include "case.hpp"
 #include "options.hpp"
@@ -32,25 +32,23 @@ Result run_command(const run::Command& cmd, const Case& c, const RunOptions& o,
                 std::move(r.result.data), std::move(r.messages)};
 }
 
-// seeds = N >= 2: a seed ensemble (run/seed_ensemble.hpp, as `agglo acoustic --seeds N`); the result's
-// summary holds the members' seeds and folders and every summary scalar's mean, stderr and n; its arrays
-// are the ensemble's results.nc.
+// seeds = N >= 2: a seed ensemble (a seeded sweep with no axes, run/ensemble_request.hpp, as `agglo acoustic
+// --seeds N`); the result's summary holds the members' seeds and folders and every summary scalar's mean,
+// stderr and n; its arrays are the ensemble's results.nc.
 Result run_seed_ensemble(const run::Command& cmd, const Case& c, const RunOptions& o, long long n) {
-  Config base = copy_of(c);
-  auto plan = run::plan_seed_ensemble(cmd, base, n);  // ConfigError for n < 1
-  if (o.checkpoint) throw ConfigError(fmt::format("checkpoint with seeds={}: checkpoints are for single runs", n));
   const auto ctx = context_of(cmd, o);
   RunFolder folder(o.out);
+  auto plan = run::plan_ensemble({std::string(cmd.name()), copy_of(c), {}, n, folder.path()}, ctx);
   auto r = run_released(
       [&](const run::RunContext& x) {
-        const auto ens = run::execute_seed_ensemble(cmd, base, plan, folder.path(), x);
+        const auto ens = run::execute_ensemble(plan, x);
         nlohmann::json stats = nlohmann::json::object(), folders = nlohmann::json::array();
-        for (const auto& s : ens.summary) stats[s.quantity] = {{"mean", s.value.mean}, {"stderr", s.value.standard_error},
-                                                               {"n", s.value.n}};
-        for (const auto& m : ens.members.cases) folders.push_back(m.folder);
+        for (const auto& s : ens.points.at(0).stats)
+          stats[s.quantity] = {{"mean", s.value.mean}, {"stderr", s.value.standard_error}, {"n", s.value.n}};
+        for (const auto& m : ens.runs.cases) folders.push_back(m.folder);
         run::CommandResult out;
-        out.summary = {{"members", ens.seeds.size()}, {"seeds", ens.seeds}, {"folders", folders}, {"ensemble", stats}};
-        out.seed = cmd.seed(base);
+        out.summary = {{"members", plan.seeds.size()}, {"seeds", plan.seeds}, {"folders", folders}, {"ensemble", stats}};
+        out.seed = plan.seed;
         out.data = ens.data;
         return out;
       },

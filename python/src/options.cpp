@@ -14,27 +14,12 @@ namespace agglo::python {
 
 namespace {
 
-// "csv", "netcdf", "csv,netcdf" or a list of those names.
+// "csv", "netcdf", "csv,netcdf" or a list of those names, read by run::parse_formats (as the CLI's --format).
 run::OutputFormats formats_of(const py::object& format) {
-  std::vector<std::string> names;
-  if (py::isinstance<py::str>(format)) {
-    const auto text = format.cast<std::string>();
-    for (std::size_t start = 0; start <= text.size();) {
-      const auto end = std::min(text.find(',', start), text.size());
-      names.push_back(text.substr(start, end - start));
-      start = end + 1;
-    }
-  } else {
-    names = format.cast<std::vector<std::string>>();
-  }
-  run::OutputFormats f{false, false};
-  for (const auto& n : names) {
-    if (n == "csv") f.csv = true;
-    else if (n == "netcdf") f.netcdf = true;
-    else throw ConfigError(fmt::format("format '{}': not csv, netcdf or csv,netcdf", std::string(py::str(format))));
-  }
-  if (names.empty()) throw ConfigError("format: give csv, netcdf or both");
-  return f;
+  if (py::isinstance<py::str>(format)) return run::parse_formats(format.cast<std::string>());
+  std::string text;
+  for (const auto& n : format.cast<std::vector<std::string>>()) text += (text.empty() ? "" : ",") + n;
+  return run::parse_formats(text);
 }
 
 }  // namespace

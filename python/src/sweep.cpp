@@ -3,8 +3,7 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
-#include "agglo/run/sweep.hpp"
-#include "agglo/run/sweep_seeds.hpp"
+#include "agglo/run/ensemble_request.hpp"
 #include "bindings.hpp"
 #include "case.hpp"
 #include "options.hpp"
@@ -24,20 +23,6 @@ nlohmann::json value_json(const std::string& text) {
   return j.is_discarded() ? nlohmann::json(text) : j;
 }
 
-// run.json's details, as the CLI writes them.
-nlohmann::json details_of(const std::vector<run::SweepAxis>& axes, const std::string& command) {
-  nlohmann::json keys = nlohmann::json::array(), lists = nlohmann::json::array();
-  for (const auto& a : axes) {
-    keys.push_back(a.key);
-    std::string joined;
-    for (const auto& v : a.values) joined += (joined.empty() ? "" : ",") + v;
-    lists.push_back(joined);
-  }
-  return {{"param", axes.size() == 1 ? keys[0] : keys},
-          {"values", axes.size() == 1 ? nlohmann::json(axes[0].values) : lists},
-          {"command", command}};
-}
-
 nlohmann::json cases_json(const std::vector<run::SweepAxis>& axes, const run::SweepResult& res) {
   nlohmann::json cases = nlohmann::json::array();
   for (std::size_t i = 0; i < res.cases.size(); ++i) {
@@ -49,47 +34,40 @@ nlohmann::json cases_json(const std::vector<run::SweepAxis>& axes, const run::Sw
   return cases;
 }
 
-// The points of a sweep with seeds: {"values": {key: value}, "members", "folder", "stats": {q: {"mean",
-// "stderr", "n"}}} in grid order.
-nlohmann::json points_json(const std::vector<run::SweepAxis>& axes, const std::vector<io::SweepPoint>& points) {
+// The points of a sweep with seeds: {"values": {key: value}, "members", "folder", "statistics", "stats": {q:
+// {"mean", "stderr", "n"}}} in grid order.
+nlohmann::json points_json(const std::vector<run::SweepAxis>& axes, const run::EnsembleResult& res) {
   nlohmann::json out = nlohmann::json::array();
-  for (const auto& p : points) {
+  for (std::size_t i = 0; i < res.points.size(); ++i) {
+    const auto& p = res.points[i];
     nlohmann::json values = nlohmann::json::object(), stats = nlohmann::json::object();
     for (std::size_t k = 0; k < p.values.size(); ++k) values[axes[k].key] = value_json(p.values[k]);
     for (const auto& s : p.stats)
       stats[s.quantity] = {{"mean", s.value.mean}, {"stderr", s.value.standard_error}, {"n", s.value.n}};
-    out.push_back({{"values", values}, {"members", p.members}, {"folder", p.folder}, {"stats", stats}});
+    out.push_back({{"values", values}, {"members", p.members}, {"folder", p.folder},
+                   {"statistics", res.point_folders[i]}, {"stats", stats}});
   }
   return out;
 }
 
 Result sweep(const Case& c, const py::dict& params, const std::string& command, long long seeds,
              const RunOptions& o) {
-  const auto& cmd = run::find_command(command);
-  std::vector<run::SweepAxis> axes;
+  run::EnsembleRequest request{command, copy_of(c), {}, seeds, {}};
   for (auto [key, values] : params) {
     run::SweepAxis axis{py::str(key).cast<std::string>(), {}};
     for (auto v : py::reinterpret_borrow<py::iterable>(values)) axis.values.push_back(sweep_value(v));
-    axes.push_back(std::move(axis));
+    request.axes.push_back(std::move(axis));
   }
-  Config base = copy_of(c);
-  auto details = details_of(axes, command);  // the user's axes, as the CLI records them
-  if (seeds != 1) axes = run::with_seed_axis(cmd, base, std::move(axes), seeds);
-  auto plan = run::plan_sweep(cmd, base, axes);  // every case validated before the folder is made
-  const auto ctx = context_of(cmd, o);
+  const auto ctx = context_of(run::find_command(command), o);
   RunFolder folder(o.out);
+  request.folder = folder.path();
+  auto plan = run::plan_ensemble(std::move(request), ctx);  // every case validated before the folder is made
   auto r = run_released(
       [&](const run::RunContext& x) {
+        const auto res = run::execute_ensemble(plan, x);
         run::CommandResult out;
-        if (seeds == 1) {
-          const auto res = run::execute_sweep(cmd, base, axes, plan, folder.path(), x, details);
-          out.summary = {{"command", command}, {"cases", cases_json(axes, res)}};
-          out.data = res.data;
-          return out;
-        }
-        details["seeds"] = seeds;
-        const auto res = run::execute_seeded_sweep(cmd, base, axes, plan, folder.path(), x, details);
-        out.summary = {{"command", command}, {"cases", cases_json(axes, res.runs)}, {"points", points_json(axes, res.points)}};
+        out.summary = {{"command", command}, {"cases", cases_json(plan.axes, res.runs)}};
+        if (!plan.seeds.empty()) out.summary["points"] = points_json(plan.axes, res);
         out.data = res.runs.data;
         return out;
       },
@@ -120,13 +98,16 @@ void bind_sweep(py::module_& m) {
   command  the command run for each case (default "acoustic"; see command_names())
   seeds    N >= 2: every point runs N seeds (derived from the case's seed and the member index; member 0
            is the case's own seed), the seed being the grid's last axis; out also gets sweep_ensemble.csv
-           and sweep_ensemble.nc with each point's mean and standard error (default 1: one run per point)
+           and sweep_ensemble.nc with each point's scalar means and standard errors, and per point a folder
+           point_<index>_<values> with the mean and standard error of every result (ensemble_summary.csv,
+           ensemble_timeseries.csv, results.nc; docs/outputs.md) (default 1: one run per point)
   out, threads, progress, format, resume, overwrite: as for the command functions (no checkpoint);
   out gets sweep.csv and one folder per case.
 
 Returns an agglo.Result whose summary is {"command": ..., "cases": [{"index", "values": {key: value},
 "folder", "summary"}, ...]} in grid order (with seeds, also "points": [{"values": {key: value}, "members",
-"folder" (member 0's), "stats": {quantity: {"mean", "stderr", "n"}}}, ...]); its seed is 0 and its arrays
+"folder" (member 0's), "statistics" (the point's folder), "stats": {quantity: {"mean", "stderr", "n"}}},
+...]); its seed is 0 and its arrays
 are the table of the cases (results.nc).)");
 }
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# `agglo acoustic CASE --seeds N` (run/seed_ensemble.hpp): member folders, sweep.csv, ensemble_summary.csv,
-# ensemble_timeseries.csv and results.nc with the mean and stderr of every variable; --seeds 1 is the
-# single run; a member missing from the journal (deleted, or cut off by SIGINT) is run again by --resume
+# `agglo acoustic CASE --seeds N` (a seeded sweep with no axes, run/ensemble_request.hpp): member folders,
+# sweep.csv, ensemble_summary.csv, ensemble_timeseries.csv and results.nc with the mean and stderr of every
+# variable; run.json records the command acoustic (not sweep); --seeds 1 is the single run; a member missing from the journal (deleted, or cut off by SIGINT) is run again by --resume
 # and the outputs equal the uninterrupted run's (wall times aside); bad --seeds values and --checkpoint
 # with an ensemble are refused with one line, exit 2. $1 = agglo executable, $2 = source dir.
 . "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
@@ -30,6 +30,25 @@ members=$(ls -d "$T"/e/case_* | wc -l)
 [ "$members" -eq 3 ] || fail "$members member folders, expected 3"
 [ -d "$T"/e/case_00_20230064702 ] || fail "member 0 does not run the case's own seed 20230064702"
 [ "$(wc -l < "$T/e/journal.jsonl")" -eq 3 ] || fail "journal.jsonl does not hold 3 members"
+/usr/bin/python3 - "$T/e/run.json" <<'PY' || fail "run.json: $(cat "$T/e/run.json")"
+import json, sys
+r = json.load(open(sys.argv[1]))
+d = r["details"]
+assert r["command"] == "acoustic" and r["status"] == "complete", r
+assert d["command"] == "acoustic" and d["ensemble"] == "seeds" and d["members"] == 3, d
+assert d["seeds"][0] == 20230064702 and len(set(d["seeds"])) == 3 and "param" not in d, d
+PY
+[ -e "$T/e/sweep_ensemble.csv" ] && fail "a seed ensemble without axes wrote the points' table"
+# a seed ensemble is not a sweep: `sweep --resume` refuses its folder, naming the command acoustic
+cp -r "$T/e" "$T/notsweep"
+"$A" -q --no-plots sweep "$AC" "${SHORT[@]}" --param population.1.diameter --values 20e-6 --out "$T/notsweep" \
+  --resume > /dev/null 2> "$T/err" && fail "sweep --resume took an acoustic --seeds folder"
+grep -q "acoustic" "$T/err" || fail "sweep --resume of an ensemble folder: $(cat "$T/err")"
+# ... nor a single run: `acoustic --resume` without --seeds refuses it with one line, exit 2, folder kept
+run --out "$T/notsweep" --resume > /dev/null 2> "$T/err"; rc=$?
+[ $rc -eq 2 ] && [ "$(wc -l < "$T/err")" -eq 1 ] && grep -q "journal.jsonl" "$T/err" ||
+  fail "acoustic --resume of an ensemble folder: exit $rc: $(cat "$T/err")"
+cmp -s "$T/e/run.json" "$T/notsweep/run.json" || fail "a refused single run changed the ensemble's run.json"
 head -1 "$T/e/ensemble_summary.csv" | grep -qx 'quantity,unit,mean,stderr,n' || fail "ensemble_summary.csv header"
 grep -q '^fine_efficiency,1,[0-9.e-]*,[0-9.e-]*,3$' "$T/e/ensemble_summary.csv" || fail "no fine_efficiency row with n = 3"
 grep -q '^n_solid_final_cm3,cm-3,' "$T/e/ensemble_summary.csv" || fail "no n_solid_final_cm3 row"

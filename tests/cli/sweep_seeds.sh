@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# `agglo sweep ... --seeds N` (run/sweep_seeds.hpp): every point of the grid runs the same N member seeds
-# (the seed as the last axis), and sweep_ensemble.csv / sweep_ensemble.nc give each point's mean and
-# standard error. Checked against independent computations: the statistics recomputed from sweep.csv's
-# rows (mean, s.e. with n - 1), member 0 of each point equal to the plain sweep's case, each point equal to
-# `agglo acoustic --seeds N` at that value, 1 and 2 threads identical, --resume after a lost member equal;
+# `agglo sweep ... --seeds N` (run/ensemble_request.hpp, run/seed_ensemble.hpp): every point of the grid runs
+# the same N member seeds (the seed as the last axis); sweep_ensemble.csv / sweep_ensemble.nc give each point's
+# scalar means and standard errors, and each point's folder point_<p>_<value> the whole statistics (time
+# series, size distributions) of `agglo acoustic --seeds N` at that value. Checked against independent
+# computations: the statistics recomputed from sweep.csv's rows (mean, s.e. with n - 1), member 0 of each
+# point equal to the plain sweep's case, each point's files equal to `agglo acoustic --seeds N` at that
+# value, 1 and 2 threads identical, --resume after a lost member equal;
 # bad --seeds uses refused with one line, exit 2, no folder. $1 = agglo executable, $2 = source dir.
 . "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, AC, NT
 SHORT=(--set time.end=0.01 --set "output.psd_times=[0.0,0.01]" --set "output.snapshot_times=[0.0]"
@@ -23,7 +25,13 @@ for f in sweep.csv sweep_ensemble.csv sweep_ensemble.nc results.nc journal.jsonl
 done
 [ "$(ls -d "$T"/s/case_* | wc -l)" -eq 6 ] || fail "expected 2 points x 3 members = 6 case folders"
 [ "$(wc -l < "$T/s/journal.jsonl")" -eq 6 ] || fail "journal.jsonl does not hold 6 runs"
-grep -q '"seeds": 3' "$T/s/run.json" || fail "run.json details lack seeds"
+grep -q '"members": 3' "$T/s/run.json" || fail "run.json details lack the members"
+grep -q '"command": "sweep"' "$T/s/run.json" || fail "run.json does not record the sweep"
+for p in point_00_20e-6 point_01_40e-6; do
+  for f in ensemble_summary.csv ensemble_timeseries.csv results.nc; do
+    [ -s "$T/s/$p/$f" ] || fail "$p/$f missing"
+  done
+done
 
 # the statistics, recomputed from the runs' rows of sweep.csv, and the NetCDF copy of the table
 /usr/bin/python3 - "$T/s" <<'PY' || fail "sweep_ensemble.csv/.nc disagree with the runs in sweep.csv"
@@ -70,10 +78,29 @@ pt = list(csv.DictReader(open(sys.argv[2])))[1]
 for q in ("fine_efficiency", "n_solid_final_cm3", "nanbu.coalescences.dry"):
     assert ens[q]["mean"] == pt[q + "_mean"] and ens[q]["stderr"] == pt[q + "_stderr"], (q, ens[q], pt)
 PY
+# ... and so are its files: the time series and size distributions (results.nc), not only the scalars
+cmp -s "$T/e/ensemble_timeseries.csv" "$T/s/point_01_40e-6/ensemble_timeseries.csv" ||
+  fail "point_01's ensemble_timeseries.csv differs from acoustic --seeds 3"
+cmp -s <(grep -v '^wall_time_s,' "$T/e/ensemble_summary.csv") \
+  <(grep -v '^wall_time_s,' "$T/s/point_01_40e-6/ensemble_summary.csv") || fail "point_01's ensemble_summary.csv differs"
+/usr/bin/python3 - "$T/e/results.nc" "$T/s/point_01_40e-6/results.nc" <<'PY' || fail "point_01's results.nc differs"
+import sys
+import netCDF4
+import numpy as np
+with netCDF4.Dataset(sys.argv[1]) as e, netCDF4.Dataset(sys.argv[2]) as p:
+    names = [n for n in e.variables if n.endswith("_mean") or n.endswith("_stderr")]
+    assert "solid_dNdlogd_cm3_mean" in names and p["solid_dNdlogd_cm3_mean"].dimensions == ("psd_time", "diameter")
+    for n in names:
+        if n.startswith("wall_time"):
+            continue
+        assert np.array_equal(e[n][:], p[n][:], equal_nan=True), n
+PY
 
 # 1 thread: identical; a lost member (journal line and folder removed) is run again by --resume
 sweep --seeds 3 --out "$T/one" -j 1 > /dev/null 2>&1 || fail "--seeds 3 on one thread"
 cmp -s <(untimed "$T/s/sweep_ensemble.csv") <(untimed "$T/one/sweep_ensemble.csv") || fail "1 and 2 threads differ"
+cmp -s "$T/s/point_00_20e-6/ensemble_timeseries.csv" "$T/one/point_00_20e-6/ensemble_timeseries.csv" ||
+  fail "1 and 2 threads: point_00's time series differ"
 sed -i '4d' "$T/one/journal.jsonl" && rm -rf "$T"/one/case_04_*
 sweep --seeds 3 --out "$T/one" -j 2 --resume > /dev/null 2> "$T/err" || fail "--resume: $(cat "$T/err")"
 cmp -s <(untimed "$T/s/sweep_ensemble.csv") <(untimed "$T/one/sweep_ensemble.csv") || fail "--resume differs"

@@ -37,6 +37,11 @@ def test_seed_ensemble_equals_cli(agglo_module, tmp_path):
     assert res["fine_efficiency_mean"][-1] == pytest.approx(eff["mean"], rel=1e-12)
     assert (tmp_path / "py" / "ensemble_timeseries.csv").read_text() == \
         (tmp_path / "cli" / "ensemble_timeseries.csv").read_text()
+    # one request for both front ends: the same run.json command and details
+    py_run, cli_run = (json.loads((tmp_path / d / "run.json").read_text()) for d in ("py", "cli"))
+    assert py_run["command"] == cli_run["command"] == "acoustic"
+    assert py_run["details"] == cli_run["details"]
+    assert py_run["details"]["seeds"] == res.summary["seeds"] and py_run["details"]["members"] == 3
 
 
 def test_seeds_one_is_the_single_run_and_bad_seeds_raise(agglo_module):
@@ -75,6 +80,15 @@ def test_sweep_with_seeds_equals_cli(agglo_module, tmp_path):
         assert eff["stderr"] == pytest.approx(np.std(own, ddof=1) / np.sqrt(2), rel=1e-9)
         row = rows[1 + i].split(",")
         assert float(row[header.index("fine_efficiency_mean")]) == pytest.approx(eff["mean"], rel=1e-9)
+        # the point's whole statistics (time series), as the CLI's point folder
+        assert p["statistics"].startswith(f"point_{i:02d}_")
+        series = (tmp_path / "py" / p["statistics"] / "ensemble_timeseries.csv").read_text()
+        assert "fine_efficiency_mean,fine_efficiency_stderr" in series.splitlines()[0]
+        (cli_point,) = (tmp_path / "cli").glob(f"point_{i:02d}_*")
+        assert series == (cli_point / "ensemble_timeseries.csv").read_text()
+        last = series.splitlines()[-1].split(",")
+        head = series.splitlines()[0].split(",")
+        assert float(last[head.index("fine_efficiency_mean")]) == pytest.approx(eff["mean"], rel=1e-9)
     with pytest.raises(agglo.ConfigError, match="--seeds"):
         agglo.sweep(agglo.Case.load(path), {"population.1.diameter": [20e-6]}, seeds=0, out=tmp_path / "bad")
     assert not (tmp_path / "bad").exists()

@@ -8,13 +8,16 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <limits>
+#include <sstream>
 #include <unistd.h>
 
 #include "agglo/core/error.hpp"
 #include "agglo/io/dataset_json.hpp"
 #include "agglo/io/ensemble_stats.hpp"
 #include "agglo/run/commands.hpp"
+#include "agglo/run/ensemble_request.hpp"
 #include "agglo/run/seed_ensemble.hpp"
 
 using namespace agglo;
@@ -87,11 +90,11 @@ TEST(SeedEnsemble, MemberSeedsFollowTheDocumentedRule) {
 }
 
 TEST(SeedEnsemble, PlanRejectsMemberCountsBelowOneAndCommandsWithoutSeed) {
-  const Config base = short_case();
   const auto& acoustic = find_command("acoustic");
+  const auto dir = temp_dir("plan_refusals");
   for (long long n : {0LL, -3LL}) {
     try {
-      (void)plan_seed_ensemble(acoustic, base, n);
+      (void)plan_ensemble({"acoustic", short_case(), {}, n, dir}, quiet_context(1));
       ADD_FAILURE() << "n = " << n << " accepted";
     } catch (const ConfigError& e) {
       const std::string m = e.what();
@@ -99,14 +102,27 @@ TEST(SeedEnsemble, PlanRejectsMemberCountsBelowOneAndCommandsWithoutSeed) {
       EXPECT_NE(m.find(">= 1"), std::string::npos) << m;
     }
   }
-  EXPECT_THROW((void)plan_seed_ensemble(find_command("electrostatics"), base, 2), ConfigError);
-  const auto plan = plan_seed_ensemble(acoustic, base, 3);
-  EXPECT_TRUE(plan.keep_data);
-  ASSERT_EQ(plan.cases.size(), 3u);
-  EXPECT_EQ(plan.cases[0].assignments[0], "seed=20230064702");
-  const auto sweep = plan_sweep(acoustic, base, {{"seed", {"20230064702"}}});
+  EXPECT_THROW((void)plan_ensemble({"electrostatics", short_case(), {}, 2, dir}, quiet_context(1)), ConfigError);
+  RunContext checkpointing = quiet_context(1);
+  checkpointing.checkpoint_interval = 0.005;
+  try {
+    (void)plan_ensemble({"acoustic", short_case(), {}, 2, dir}, checkpointing);
+    ADD_FAILURE() << "--checkpoint accepted with --seeds";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("--checkpoint 0.005 with --seeds 2"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir));  // refused before anything is made
+  const auto plan = plan_ensemble({"acoustic", short_case(), {}, 3, dir}, quiet_context(1));
+  EXPECT_TRUE(plan.sweep.keep_data);
+  ASSERT_EQ(plan.sweep.cases.size(), 3u);
+  EXPECT_EQ(plan.sweep.cases[0].assignments[0], "seed=20230064702");
+  EXPECT_EQ(plan.recorded, "acoustic");  // run.json names the command, not "sweep"
+  EXPECT_EQ(plan.details.value("ensemble", ""), "seeds");
+  EXPECT_EQ(plan.details.value("members", 0), 3);
+  EXPECT_FALSE(plan.details.contains("param"));
+  const auto sweep = plan_sweep(acoustic, short_case(), {{"seed", {"20230064702"}}});
   EXPECT_FALSE(sweep.keep_data);
-  EXPECT_NE(sweep.journal_key, plan.journal_key);  // a plain sweep's journal is never taken for an ensemble
+  EXPECT_NE(sweep.journal_key, plan.sweep.journal_key);  // a plain sweep's journal is never taken for an ensemble
 }
 
 TEST(SeedEnsemble, DatasetJsonRoundTripIsBitwiseExact) {
@@ -187,23 +203,29 @@ TEST(SeedEnsemble, StatisticsEqualThoseOfSeparateSingleRunsAndDoNotDependOnThrea
   const auto& cmd = find_command("acoustic");
   const Config base = short_case();
   const auto dir = temp_dir("seed_ensemble");
-  auto plan = plan_seed_ensemble(cmd, base, 3);
-  const auto ens = execute_seed_ensemble(cmd, base, plan, dir / "two", quiet_context(2));
-  auto plan1 = plan_seed_ensemble(cmd, base, 3);
-  const auto ens1 = execute_seed_ensemble(cmd, base, plan1, dir / "one", quiet_context(1));
+  const auto ens = execute_ensemble({"acoustic", base.clone(), {}, 3, dir / "two"}, quiet_context(2));
+  const auto ens1 = execute_ensemble({"acoustic", base.clone(), {}, 3, dir / "one"}, quiet_context(1));
   ASSERT_TRUE(ens.data && ens1.data);
   expect_same_data(*ens.data, *ens1.data);  // whatever the thread count
-  EXPECT_EQ(ens.seeds, member_seeds(cmd.seed(base), 3));
+  const auto seeds = ens.data->attributes.at("seeds").get<std::vector<std::int64_t>>();
+  EXPECT_EQ(seeds, member_seeds(cmd.seed(base), 3));
+  ASSERT_EQ(ens.points.size(), 1u);
+  EXPECT_EQ(ens.point_folders, std::vector<std::string>{""});  // no axes: the statistics in the folder itself
 
   // The members' own single runs, made here with each member's seed in folders of their own.
   std::vector<io::DatasetPtr> singles;
+  nlohmann::json summary0;
   for (std::size_t k = 0; k < 3; ++k) {
     Config cfg = base.clone();
-    if (k > 0) cfg.apply_override("seed=" + std::to_string(ens.seeds[k]));  // member 0: the case as it is
-    singles.push_back(execute(cmd, cfg, dir / ("single_" + std::to_string(k)), quiet_context(2)).data);
+    if (k > 0) cfg.apply_override("seed=" + std::to_string(seeds[k]));  // member 0: the case as it is
+    auto r = execute(cmd, cfg, dir / ("single_" + std::to_string(k)), quiet_context(2));
+    if (k == 0) summary0 = r.summary;
+    singles.push_back(r.data);
   }
   // Member 0 is the plain single run of the case.
-  expect_same_data(io::dataset_from_json(ens.members.case_data[0]), io::labelled_part(*singles[0]));
+  EXPECT_EQ(ens.runs.cases[0].folder, "case_00_20230064702");
+  for (const char* q : {"fine_efficiency", "n_solid_final_cm3"})
+    EXPECT_EQ(ens.runs.summaries[0].at(q).get<double>(), summary0.at(q).get<double>()) << q;
 
   for (const char* name : {"fine_efficiency", "n_solid_cm3", "pure_droplet_fraction", "collisions"}) {
     const auto* mean = ens.data->find(std::string(name) + "_mean");
@@ -225,4 +247,94 @@ TEST(SeedEnsemble, StatisticsEqualThoseOfSeparateSingleRunsAndDoNotDependOnThrea
   const auto* eff = ens.data->find("fine_efficiency_stderr");
   EXPECT_GT(eff->reals.back(), 0.0);
   std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+std::string text_of(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// ensemble_summary.csv without its wall-time row.
+std::string untimed(const std::filesystem::path& p) {
+  std::istringstream in(text_of(p));
+  std::string line, out;
+  while (std::getline(in, line))
+    if (line.rfind("wall_time_s,", 0) != 0) out += line + "\n";
+  return out;
+}
+
+}  // namespace
+
+// The one request of every ensemble (run/ensemble_request.hpp): a case is parsed once per run, a seeded
+// sweep gives every point the whole statistics of `acoustic --seeds` at that point (time series and size
+// distributions, not only the summary scalars), and run.json's details are made once for every front end.
+
+TEST(EnsembleRequest, EveryCaseIsParsedOncePerRun) {
+  const auto dir = temp_dir("parse_once");
+  // 2 points x 2 seeds = 4 runs; the ensemble's own config.resolved.toml parses the base once more.
+  std::size_t before = case_parses();
+  auto plan = plan_ensemble({"acoustic", short_case(), {{"population.1.diameter", {"20e-6", "40e-6"}}}, 2, dir / "s"},
+                            quiet_context(2));
+  (void)execute_ensemble(plan, quiet_context(2));
+  EXPECT_EQ(case_parses() - before, 4u + 1u);
+  // A seed ensemble without axes: its member 0 is the base case, so exactly one parse per member.
+  before = case_parses();
+  (void)execute_ensemble({"acoustic", short_case(), {}, 3, dir / "e"}, quiet_context(2));
+  EXPECT_EQ(case_parses() - before, 3u);
+  // A single run: once.
+  before = case_parses();
+  Config one = short_case();
+  (void)execute(find_command("acoustic"), one, dir / "one", quiet_context(2));
+  EXPECT_EQ(case_parses() - before, 1u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(EnsembleRequest, SweepPointsGetTheWholeStatisticsOfTheSeedEnsembleAtThatPoint) {
+  const auto dir = temp_dir("points");
+  const auto res = execute_ensemble(
+      {"acoustic", short_case(), {{"population.1.diameter", {"20e-6", "40e-6"}}}, 3, dir / "s"}, quiet_context(2));
+  ASSERT_EQ(res.point_folders, (std::vector<std::string>{"point_00_20e-6", "point_01_40e-6"}));
+  Config at = short_case();
+  at.apply_override("population.1.diameter=40e-6");
+  const auto ens = execute_ensemble({"acoustic", std::move(at), {}, 3, dir / "e"}, quiet_context(2));
+  const auto point = dir / "s" / "point_01_40e-6";
+  // The time series of the point's mean and s.e. are those of `acoustic --seeds 3` at 40e-6, byte for byte.
+  const auto series = text_of(point / "ensemble_timeseries.csv");
+  EXPECT_NE(series.find("fine_efficiency_mean,fine_efficiency_stderr"), std::string::npos);
+  EXPECT_EQ(series, text_of(dir / "e" / "ensemble_timeseries.csv"));
+  EXPECT_EQ(untimed(point / "ensemble_summary.csv"), untimed(dir / "e" / "ensemble_summary.csv"));
+  // ... and differ from the other point's.
+  EXPECT_NE(series, text_of(dir / "s" / "point_00_20e-6" / "ensemble_timeseries.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "s" / "sweep_ensemble.csv"));
+  // run.json: the sweep as "sweep" with its axes, the seed ensemble as its command.
+  EXPECT_NE(text_of(dir / "s" / "run.json").find("\"command\": \"sweep\""), std::string::npos);
+  const auto run_json = text_of(dir / "e" / "run.json");
+  EXPECT_NE(run_json.find("\"command\": \"acoustic\""), std::string::npos) << run_json;
+  EXPECT_EQ(run_json.find("\"command\": \"sweep\""), std::string::npos) << run_json;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(EnsembleRequest, DetailsNameTheAxesAndTheMembers) {
+  const auto one = ensemble_details("collide", {{"projectile.speed", {"0.1", "0.2"}}}, {});
+  EXPECT_EQ(one, (nlohmann::json{{"command", "collide"}, {"param", "projectile.speed"}, {"values", {"0.1", "0.2"}}}));
+  const auto grid = ensemble_details("acoustic", {{"a", {"1", "2"}}, {"b", {"x"}}}, {7, 9});
+  EXPECT_EQ(grid.at("param"), (nlohmann::json{"a", "b"}));
+  EXPECT_EQ(grid.at("values"), (nlohmann::json{"1,2", "x"}));
+  EXPECT_EQ(grid.at("members"), 2);
+  EXPECT_EQ(grid.at("seeds"), (nlohmann::json{7, 9}));
+  const auto seeds = ensemble_details("acoustic", {}, {7, 9, 11});
+  EXPECT_FALSE(seeds.contains("param"));
+  EXPECT_EQ(seeds.at("ensemble"), "seeds");
+}
+
+TEST(EnsembleRequest, FormatsAreParsedByOneFunction) {
+  EXPECT_TRUE(parse_formats("csv").csv);
+  EXPECT_FALSE(parse_formats("csv").netcdf);
+  const auto both = parse_formats("netcdf,csv");
+  EXPECT_TRUE(both.csv && both.netcdf);
+  for (const char* bad : {"", "xml", "csv,", "csv,,netcdf"}) EXPECT_THROW((void)parse_formats(bad), ConfigError) << bad;
 }

@@ -1,4 +1,4 @@
-// Sweeps with seeds (run/sweep_seeds.hpp): the seed axis (member seeds of the base seed, appended last;
+// Sweeps with seeds (run/seed_ensemble.hpp, run/ensemble_request.hpp): the seed axis (member seeds of the base seed, appended last;
 // refusals), the grouping of the runs into points and their statistics against the formula of
 // io/ensemble_stats.hpp. The whole command is tested end to end by tests/cli/sweep_seeds.sh.
 #include <gtest/gtest.h>
@@ -8,7 +8,6 @@
 #include "agglo/core/error.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/run/seed_ensemble.hpp"
-#include "agglo/run/sweep_seeds.hpp"
 
 using namespace agglo;
 using namespace agglo::run;

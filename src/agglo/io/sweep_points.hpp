@@ -1,5 +1,5 @@
 #pragma once
-// The per-point statistics of a sweep with --seeds N (run/sweep_seeds.hpp): one row per point of the
+// The per-point statistics of a sweep with --seeds N (run/seed_ensemble.hpp): one row per point of the
 // parameter grid, the mean and standard error over its N members (io/ensemble_stats.hpp) of every
 // numeric summary scalar.
 //   sweep_ensemble.csv: index, one column per swept key (the seed excluded), members, case (the folder of

@@ -1,5 +1,7 @@
 #include "agglo/run/command.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <fstream>
 #include <sstream>
@@ -36,9 +38,33 @@ double output_bytes(double csv_estimate, const OutputFormats& f) {
   return (f.csv ? csv_estimate : 0.0) + (f.netcdf ? csv_estimate + kNetcdfOverhead : 0.0);
 }
 
+OutputFormats parse_formats(std::string_view text) {
+  OutputFormats f{false, false};
+  for (std::size_t start = 0; start <= text.size();) {
+    const auto end = std::min(text.find(',', start), text.size());
+    const auto item = text.substr(start, end - start);
+    if (item == "csv") f.csv = true;
+    else if (item == "netcdf") f.netcdf = true;
+    else throw ConfigError(fmt::format("format '{}': give csv, netcdf or csv,netcdf", text));
+    start = end + 1;
+  }
+  return f;
+}
+
+namespace {
+std::atomic<std::size_t> g_case_parses{0};
+}  // namespace
+
+void parse_case(const Command& cmd, Config& cfg) {
+  ++g_case_parses;
+  cmd.parse(cfg);
+}
+
+std::size_t case_parses() { return g_case_parses.load(); }
+
 Estimate plan(const Command& cmd, Config& cfg, const RunContext& ctx) {
   check_budgets(cmd.lower_bound(cfg), budgets_of(ctx), cfg.file());
-  cmd.parse(cfg);
+  parse_case(cmd, cfg);
   Estimate e = cmd.estimate(cfg, ctx);
   e.memory.value += kProcessBaseBytes;
   if (ctx.formats.netcdf) e.memory.value += e.output.value;  // the results.nc arrays, at most as large
@@ -112,13 +138,25 @@ std::string read_text_file(const std::filesystem::path& path) {
 
 CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
                       const nlohmann::json& extra) {
-  const auto start = std::chrono::steady_clock::now();
   if (rank_count() > 1 && !in_job() && !cmd.resumable())
     throw ConfigError(fmt::format("{} is a single run; under mpirun ({} ranks) run an ensemble of it (sweep, or "
                                   "acoustic --seeds) or one of vcrit, breakup, calibrate",
                                   cmd.name(), rank_count()));
-  check_budgets(plan(cmd, cfg, ctx), budgets_of(ctx), cfg.file());
+  const Estimate planned = plan(cmd, cfg, ctx);
+  return execute_planned(cmd, cfg, planned, out_dir, ctx, extra);
+}
+
+CommandResult execute_planned(const Command& cmd, Config& cfg, const Estimate& planned,
+                              const std::filesystem::path& out_dir, const RunContext& ctx,
+                              const nlohmann::json& extra) {
+  const auto start = std::chrono::steady_clock::now();
+  check_budgets(planned, budgets_of(ctx), cfg.file());
   std::error_code ec;
+  // A seed ensemble's folder records its command too (e.g. acoustic --seeds N); a single run does not
+  // continue it: its journal marks it as an ensemble.
+  if (ctx.resume && !cmd.resumable() && !in_job() && std::filesystem::exists(out_dir / "journal.jsonl", ec))
+    throw ConfigError(fmt::format("output folder {}: holds an ensemble of {} runs (journal.jsonl); --resume it with "
+                                  "the same --seeds, or choose another --out", out_dir.string(), cmd.name()));
   const bool existed = std::filesystem::exists(out_dir, ec);
   // A single run without checkpoints starts again under --resume; a restartable one continues in place.
   const bool restart = ctx.resume && !cmd.resumable() && !cmd.restartable();

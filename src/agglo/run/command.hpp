@@ -39,6 +39,10 @@ struct OutputFormats {
 inline constexpr double kNetcdfOverhead = 64.0 * 1024.0;
 double output_bytes(double csv_estimate, const OutputFormats& f);
 
+// The formats named by `text`: "csv", "netcdf" or "csv,netcdf" (either order) — the one parser of the CLI's
+// --format and Python's format=. ConfigError naming the text and what is allowed otherwise.
+OutputFormats parse_formats(std::string_view text);
+
 struct RunContext {
   Reporter* reporter = nullptr;          // null = silent
   const CancelToken* cancel = nullptr;   // null = not cancellable
@@ -104,8 +108,15 @@ std::vector<std::string> command_names();
 // runtime), added to every memory estimate.
 inline constexpr double kProcessBaseBytes = 16.0 * 1024.0 * 1024.0;
 
+// cmd.parse(cfg), the only way the run layer parses a case (plan, plan_sweep, a sweep's base), so that a
+// case is parsed once per run: an ensemble parses each of its cases once when it is planned and runs it
+// with execute_planned. case_parses() counts the calls (all threads), for the tests that check it.
+void parse_case(const Command& cmd, Config& cfg);
+std::size_t case_parses();
+
 // lower bound within the budgets (ConfigError otherwise) -> parse -> estimate (cmd.estimate plus
-// kProcessBaseBytes); cfg gets its defaults written in.
+// kProcessBaseBytes; output in ctx.formats, and memory plus the results.nc arrays with NetCDF); cfg gets
+// its defaults written in.
 Estimate plan(const Command& cmd, Config& cfg, const RunContext& ctx);
 // The budgets of a context (ctx.budgets, else resolve_budgets({})).
 Budgets budgets_of(const RunContext& ctx);
@@ -119,6 +130,11 @@ Budgets budgets_of(const RunContext& ctx);
 // run whose command returned data, when ctx.formats.netcdf (--format).
 CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::path& out_dir, const RunContext& ctx,
                       const nlohmann::json& extra = {});
+// execute of a case that plan() has already parsed (defaults written in) and estimated as `planned`: the
+// estimate is checked against the budgets, the case is not parsed again (the runs of an ensemble).
+CommandResult execute_planned(const Command& cmd, Config& cfg, const Estimate& planned,
+                              const std::filesystem::path& out_dir, const RunContext& ctx,
+                              const nlohmann::json& extra = {});
 
 // The folder policy a run context asks for (resume wins over overwrite; the CLI forbids both).
 FolderPolicy folder_policy(const RunContext& ctx);

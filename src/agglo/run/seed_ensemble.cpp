@@ -8,9 +8,9 @@
 
 #include "agglo/core/error.hpp"
 #include "agglo/io/dataset_json.hpp"
-#include "agglo/io/ensemble_tables.hpp"
-#include "agglo/run/journal.hpp"
-#include "agglo/run/ranks.hpp"
+#include "agglo/io/ensemble_stats.hpp"
+#include "agglo/io/sweep_dataset.hpp"
+#include "agglo/io/sweep_table.hpp"
 
 namespace agglo::run {
 
@@ -34,28 +34,32 @@ std::vector<std::int64_t> member_seeds(std::int64_t base, std::size_t n) {
   return seeds;
 }
 
-SweepPlan plan_seed_ensemble(const Command& cmd, const Config& base, long long n) {
-  if (n < 1)
-    throw ConfigError(fmt::format("--seeds {}: the number of ensemble members must be a whole number >= 1", n));
+std::vector<SweepAxis> with_seed_axis(const Command& cmd, const Config& base, std::vector<SweepAxis> axes,
+                                      long long n) {
+  if (n < 2) throw ConfigError(fmt::format("--seeds {}: a seed ensemble needs a whole number >= 2 of members", n));
   if (!cmd.seed_key())
     throw ConfigError(fmt::format("--seeds: command '{}' has no random seed to vary", cmd.name()));
-  SweepAxis axis{std::string(cmd.seed_key()->dotted()), {}};
-  for (auto s : member_seeds(cmd.seed(base), static_cast<std::size_t>(n))) axis.values.push_back(std::to_string(s));
-  SweepPlan plan = plan_sweep(cmd, base, {axis});
-  plan.keep_data = true;
-  plan.journal_key = hash_hex(plan.journal_key + "\nseed ensemble");
-  return plan;
+  const std::string key(cmd.seed_key()->dotted());
+  for (const auto& a : axes)
+    if (a.key == key)
+      throw ConfigError(fmt::format("--seeds {} with --param {}: the seeds are already swept; give one or the other",
+                                    n, key));
+  SweepAxis seeds{key, {}};
+  for (auto s : member_seeds(cmd.seed(base), static_cast<std::size_t>(n))) seeds.values.push_back(std::to_string(s));
+  axes.push_back(std::move(seeds));
+  return axes;
 }
 
-Estimate seed_ensemble_estimate(const Command& cmd, const SweepPlan& plan, const RunContext& ctx) {
-  Estimate total = sweep_estimate(cmd, plan, ctx);
-  Config first = plan.configs.front().clone();
-  cmd.parse(first);
-  RunContext one = ctx;
-  one.threads = 1;
-  const Estimate e = cmd.estimate(first, one);
-  add_to(total.output, 2.0 * output_bytes(e.output.value, ctx.formats), e.output.keys);
-  return total;
+std::vector<io::SweepPoint> sweep_points(const SweepResult& res, std::size_t members) {
+  std::vector<io::SweepPoint> points;
+  for (std::size_t first = 0; first + members <= res.cases.size(); first += members) {
+    const auto& c = res.cases[first];
+    io::SweepPoint p{{c.values.begin(), c.values.end() - 1}, c.folder, members, {}};
+    p.stats = io::summary_stats({res.summaries.begin() + static_cast<std::ptrdiff_t>(first),
+                                 res.summaries.begin() + static_cast<std::ptrdiff_t>(first + members)});
+    points.push_back(std::move(p));
+  }
+  return points;
 }
 
 namespace {
@@ -69,52 +73,23 @@ void add_member_table(io::Dataset& d, const io::Dataset& table, const std::vecto
 }
 }  // namespace
 
-SeedEnsembleResult ensemble_statistics(SweepResult res, const std::vector<std::int64_t>& seeds) {
-  std::vector<io::Dataset> members;
-  for (std::size_t i = 0; i < res.case_data.size(); ++i) {
-    if (res.case_data[i].is_null())
-      throw std::invalid_argument(fmt::format("seed ensemble: member {} returned no data", i));
-    members.push_back(io::dataset_from_json(res.case_data[i]));
-  }
-  SeedEnsembleResult out;
-  out.summary = io::summary_stats(res.summaries);
-  auto data = std::make_shared<io::Dataset>(io::ensemble_dataset(members));
-  if (res.data) add_member_table(*data, *res.data, seeds);
-  data->attributes["members"] = static_cast<std::int64_t>(seeds.size());
-  data->attributes["seeds"] = seeds;
-  out.data = data;
-  out.seeds = seeds;
-  out.members = std::move(res);
-  return out;
-}
-
-SeedEnsembleResult execute_seed_ensemble(const Command& cmd, const Config& base, SweepPlan& plan,
-                                         const std::filesystem::path& path, const RunContext& ctx) {
-  check_budgets(seed_ensemble_estimate(cmd, plan, ctx), budgets_of(ctx), base.file());
+io::Dataset point_dataset(const SweepResult& res, std::size_t first, std::size_t members,
+                          const std::vector<std::string>& keys) {
+  std::vector<io::Dataset> data;
+  std::vector<io::SweepRow> rows;
   std::vector<std::int64_t> seeds;
-  std::vector<std::string> values;
-  for (const auto& c : plan.cases) {
-    values.push_back(c.values.front());
-    seeds.push_back(std::stoll(c.values.front()));
+  for (std::size_t i = first; i < first + members; ++i) {
+    if (i >= res.case_data.size() || res.case_data[i].is_null())
+      throw std::invalid_argument(fmt::format("seed ensemble: member {} returned no data", i - first));
+    data.push_back(io::dataset_from_json(res.case_data[i]));
+    rows.push_back({res.cases[i].values, res.cases[i].folder, res.summaries[i]});
+    seeds.push_back(std::stoll(res.cases[i].values.back()));
   }
-  const SweepAxis axis{std::string(cmd.seed_key()->dotted()), values};
-  const nlohmann::json details = {{"param", axis.key},          {"values", values},
-                                  {"command", std::string(cmd.name())}, {"ensemble", "seeds"},
-                                  {"members", plan.cases.size()}, {"seeds", seeds}};
-  SweepResult res = execute_sweep(cmd, base, {axis}, plan, path, ctx, details);
-  if (!is_output_rank()) return {std::move(res), seeds, {}, nullptr};
-  auto ens = ensemble_statistics(std::move(res), seeds);
-  const OutputDir out(path);
-  if (ctx.formats.csv) {
-    io::write_ensemble_summary(out, ens.summary);
-    io::write_ensemble_timeseries(out, *ens.data);
-  }
-  if (ctx.formats.netcdf) {
-    Config resolved = base.clone();
-    cmd.parse(resolved);
-    write_results_nc(out, resolved, cmd.name(), cmd.seed(base), *ens.data);
-  }
-  return ens;
+  io::Dataset d = io::ensemble_dataset(data);
+  add_member_table(d, io::sweep_dataset(keys, rows), seeds);
+  d.attributes["members"] = static_cast<std::int64_t>(members);
+  d.attributes["seeds"] = seeds;
+  return d;
 }
 
 }  // namespace agglo::run

@@ -5,6 +5,7 @@
 // sweep.csv. Cases are jobs of the ensemble runner (threads shared, results in grid order whatever the
 // scheduling, journaled so that `--resume` repeats only the missing cases).
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -40,34 +41,33 @@ struct SweepResult {
   io::DatasetPtr data;                    // the sweep table as labelled arrays (results.nc, Python)
 };
 
-// The validated cases of a sweep: every case is the base case with its assignments applied and
-// parsed by `cmd` (ConfigError naming the first bad case), before any folder or file is made.
+// The folder of run `index` of a grid: <prefix>_<index, 2 digits>_<values joined by "_", characters
+// other than letters, digits, ".", "-", "+" as "_"> (e.g. case_03_2e-05_17).
+std::string grid_folder(std::string_view prefix, std::size_t index, const std::vector<std::string>& values);
+
+// The validated cases of a sweep: every case is the base case with its assignments applied, parsed once by
+// `cmd` (run::plan: defaults written in, ConfigError naming the first bad case) and estimated, before any
+// folder or file is made. The runs use these parsed configs and estimates (execute_planned).
 struct SweepPlan {
   std::vector<SweepCase> cases;
-  std::vector<Config> configs;  // by case index, not yet parsed (execute parses them)
-  std::string journal_key;      // identifies the base case and command in journal.jsonl
+  std::vector<Config> configs;       // by case index, parsed
+  std::vector<Estimate> estimates;   // by case index: run::plan of one case on one thread
+  std::string journal_key;           // identifies the base case and command in journal.jsonl
   std::filesystem::path cases_root;  // folder of the case folders (empty: run_sweep's `out`)
   // Seed ensembles (run/seed_ensemble.hpp): each case's job returns {"summary": ..., "data": ...} (its
   // dataset's io::labelled_part as JSON) instead of the summary alone, so the ensemble statistics come
   // from the job results (journal, MPI messages) and never from the case folders.
   bool keep_data = false;
 };
-SweepPlan plan_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes);
+SweepPlan plan_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes,
+                     const RunContext& ctx = {});
 
 // The cost of a whole sweep: steps and output summed over its cases; memory of the cases that run at
 // the same time (the largest min(threads, cases) case estimates) plus run::kProcessBaseBytes once.
-Estimate sweep_estimate(const Command& cmd, const SweepPlan& plan, const RunContext& ctx);
+Estimate sweep_estimate(const SweepPlan& plan, const RunContext& ctx);
 
-// Runs `cmd` for every case of the plan under `out`. Throws the first failure (in case order)
-// after every case has run.
+// Runs `cmd` for every case of the plan under `out` (the whole ensemble: run/ensemble_request.hpp). Throws
+// the first failure (in case order) after every case has run.
 SweepResult run_sweep(const Command& cmd, SweepPlan& plan, const OutputDir& out, const RunContext& ctx);
-
-// A whole sweep in the folder `path` (CLI and Python): the plan's cost checked against the budgets, the
-// folder claimed, the cases run (run_sweep), then sweep.csv, config.resolved.toml (the base case with
-// every default filled in, or as written when only the swept values make it valid) and run.json with
-// `details`. After a failure run.json says "incomplete" (interrupted) or "failed" and the error is rethrown.
-SweepResult execute_sweep(const Command& cmd, const Config& base, const std::vector<SweepAxis>& axes,
-                          SweepPlan& plan, const std::filesystem::path& path, const RunContext& ctx,
-                          const nlohmann::json& details);
 
 }  // namespace agglo::run

@@ -1,0 +1,188 @@
+#include "agglo/run/ensemble_request.hpp"
+
+#include <chrono>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "agglo/core/error.hpp"
+#include "agglo/io/ensemble_tables.hpp"
+#include "agglo/io/sweep_dataset.hpp"
+#include "agglo/io/sweep_table.hpp"
+#include "agglo/run/journal.hpp"
+#include "agglo/run/ranks.hpp"
+#include "agglo/run/seed_ensemble.hpp"
+
+namespace agglo::run {
+
+nlohmann::json ensemble_details(const std::string& command, const std::vector<SweepAxis>& axes,
+                                const std::vector<std::int64_t>& member_seeds) {
+  nlohmann::json d = {{"command", command}};
+  if (!axes.empty()) {
+    nlohmann::json keys = nlohmann::json::array(), lists = nlohmann::json::array();
+    for (const auto& a : axes) {
+      keys.push_back(a.key);
+      std::string joined;
+      for (const auto& v : a.values) joined += (joined.empty() ? "" : ",") + v;
+      lists.push_back(joined);
+    }
+    d["param"] = axes.size() == 1 ? keys[0] : keys;
+    d["values"] = axes.size() == 1 ? nlohmann::json(axes[0].values) : lists;
+  }
+  if (!member_seeds.empty()) {
+    d["ensemble"] = "seeds";
+    d["members"] = member_seeds.size();
+    d["seeds"] = member_seeds;
+  }
+  return d;
+}
+
+namespace {
+
+// The request's own refusals, before any case is parsed.
+void check_request(const EnsembleRequest& r, const RunContext& ctx) {
+  if (r.seeds < 1)
+    throw ConfigError(fmt::format("--seeds {}: the number of members per point must be a whole number >= 1 (1: one "
+                                  "run per point)", r.seeds));
+  if (ctx.checkpoint_interval > 0.0)
+    throw ConfigError(fmt::format("--checkpoint {} with {}: checkpoints are for single runs; an ensemble resumes from "
+                                  "its journal (--resume repeats the missing runs)", ctx.checkpoint_interval,
+                                  r.seeds > 1 ? fmt::format("--seeds {}", r.seeds) : std::string("a sweep")));
+}
+
+// The ensemble folder's config.resolved.toml: the base case with every default filled in; the case itself
+// when only the seed varies (member 0 is the base, already parsed); as written when only the swept values
+// make it valid (e.g. a required key given by --param).
+Config resolved_base(const EnsemblePlan& p) {
+  if (p.one_point()) return p.sweep.configs.front().clone();
+  Config r = p.request.base.clone();
+  try {
+    parse_case(*p.cmd, r);
+    return r;
+  } catch (const ConfigError&) {
+    return p.request.base.clone();
+  }
+}
+
+// sweep_estimate plus, with seeds, each point's statistics files (mean and s.e.: at most twice one member's
+// output).
+Estimate ensemble_estimate(const EnsemblePlan& p, const RunContext& ctx) {
+  Estimate total = sweep_estimate(p.sweep, ctx);
+  if (p.seeds.empty()) return total;
+  for (std::size_t first = 0; first < p.sweep.estimates.size(); first += p.members()) {
+    const auto& e = p.sweep.estimates[first].output;
+    add_to(total.output, 2.0 * e.value, e.keys);
+  }
+  return total;
+}
+
+}  // namespace
+
+EnsemblePlan plan_ensemble(EnsembleRequest request, const RunContext& ctx) {
+  EnsemblePlan p;
+  p.cmd = &find_command(request.command);
+  check_request(request, ctx);
+  p.axes = request.axes;
+  if (request.seeds > 1) {
+    p.axes = with_seed_axis(*p.cmd, request.base, std::move(p.axes), request.seeds);
+    for (const auto& v : p.axes.back().values) p.seeds.push_back(std::stoll(v));
+  }
+  p.sweep = plan_sweep(*p.cmd, request.base, p.axes, ctx);  // every case parsed once, before anything is made
+  if (!p.seeds.empty()) {
+    p.sweep.keep_data = true;
+    p.sweep.journal_key = hash_hex(p.sweep.journal_key + "\nseed ensemble");  // never a plain sweep's journal
+  }
+  p.request = std::move(request);
+  p.resolved = resolved_base(p);
+  try {
+    p.seed = p.cmd->seed(p.request.base);
+  } catch (const ConfigError&) {
+    p.seed = p.cmd->seed(p.sweep.configs.front());
+  }
+  p.recorded = p.one_point() ? std::string(p.cmd->name()) : std::string("sweep");
+  p.details = ensemble_details(p.request.command, p.request.axes, p.seeds);
+  p.estimate = ensemble_estimate(p, ctx);
+  return p;
+}
+
+namespace {
+
+std::vector<std::string> keys_of(const std::vector<SweepAxis>& axes, std::size_t count) {
+  std::vector<std::string> keys;
+  for (std::size_t k = 0; k < count; ++k) keys.push_back(axes[k].key);
+  return keys;
+}
+
+// sweep.csv (CSV format) and the runs' table as a dataset (results.nc in NetCDF format, unless the folder's
+// results.nc holds a seed ensemble's statistics).
+void write_runs(const EnsemblePlan& p, const OutputDir& out, SweepResult& runs, const RunContext& ctx) {
+  std::vector<io::SweepRow> rows;
+  for (std::size_t i = 0; i < runs.cases.size(); ++i)
+    rows.push_back({runs.cases[i].values, runs.cases[i].folder, runs.summaries[i]});
+  const auto keys = keys_of(p.axes, p.axes.size());
+  if (ctx.formats.csv) io::write_sweep_table(out, keys, rows);
+  runs.data = std::make_shared<const io::Dataset>(io::sweep_dataset(keys, rows));
+  if (ctx.formats.netcdf && !p.one_point()) write_results_nc(out, p.resolved, "sweep", p.seed, *runs.data);
+}
+
+// Each point's statistics files (in its folder), then the table of the points (with axes).
+void write_points(const EnsemblePlan& p, const OutputDir& out, EnsembleResult& res, const RunContext& ctx) {
+  const std::size_t n = p.members();
+  res.points = sweep_points(res.runs, n);
+  const auto keys = keys_of(p.axes, p.axes.size());
+  for (std::size_t k = 0; k < res.points.size(); ++k) {
+    const std::string name = p.one_point() ? "" : grid_folder("point", k, res.points[k].values);
+    auto data = std::make_shared<const io::Dataset>(point_dataset(res.runs, k * n, n, keys));
+    for (std::size_t i = k * n; i < (k + 1) * n; ++i) res.runs.case_data[i] = nullptr;  // folded into `data`
+    const OutputDir dir = name.empty() ? out : OutputDir(out.path() / name);
+    if (ctx.formats.csv) {
+      io::write_ensemble_summary(dir, res.points[k].stats);
+      io::write_ensemble_timeseries(dir, *data);
+    }
+    if (ctx.formats.netcdf) write_results_nc(dir, p.sweep.configs[k * n], p.cmd->name(), p.seed, *data);
+    if (name.empty()) res.data = data;
+    res.point_folders.push_back(name);
+  }
+  if (p.one_point()) return;
+  const auto user_keys = keys_of(p.axes, p.request.axes.size());
+  if (ctx.formats.csv) io::write_sweep_points(out, user_keys, res.points);
+  if (ctx.formats.netcdf)
+    write_results_nc(out, p.resolved, "sweep", p.seed, io::sweep_points_dataset(user_keys, res.points), "complete",
+                     "sweep_ensemble.nc");
+}
+
+}  // namespace
+
+EnsembleResult execute_ensemble(EnsemblePlan& p, const RunContext& ctx) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto& base = p.request.base;
+  check_budgets(p.estimate, budgets_of(ctx), base.file());
+  const auto& path = p.request.folder;
+  const auto folder = claim_run_folder(path, folder_policy(ctx), p.recorded);  // rank 0's, or a scratch folder
+  const ScratchFolder scratch(folder, path);
+  const OutputDir out(folder);
+  write_run_started(out, p.recorded, base.file());
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  EnsembleResult res;
+  p.sweep.cases_root = path;  // under MPI every rank writes the cases it runs there (not into its scratch folder)
+  try {
+    res.runs = run_sweep(*p.cmd, p.sweep, out, ctx);
+    write_runs(p, out, res.runs, ctx);
+    res.data = res.runs.data;
+    if (!p.seeds.empty() && is_output_rank()) write_points(p, out, res, ctx);
+  } catch (const std::exception& e) {  // the journal keeps the finished runs; run.json says why it stopped
+    const bool stopped = dynamic_cast<const InterruptedError*>(&e) != nullptr;
+    write_run_files(out, p.resolved, p.recorded, p.seed, seconds(), {{stopped ? "interrupted" : "error", e.what()}},
+                    stopped ? "incomplete" : "failed");
+    throw;
+  }
+  write_run_files(out, p.resolved, p.recorded, p.seed, seconds(), p.details);
+  return res;
+}
+
+EnsembleResult execute_ensemble(EnsembleRequest request, const RunContext& ctx) {
+  auto plan = plan_ensemble(std::move(request), ctx);
+  return execute_ensemble(plan, ctx);
+}
+
+}  // namespace agglo::run
