@@ -1,4 +1,6 @@
 // io::Table (io/table.hpp): one declaration renders the CSV file and the results.nc variables.
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -37,6 +39,19 @@ std::string csv(const io::Table& t) {
 }
 
 }  // namespace
+
+// The function above is the one docs/contributing.md shows, character for character.
+TEST(Table, WorkedExampleIsTheDocs) {
+  auto read = [](const std::string& rel) {
+    std::ifstream f(std::string(AGGLO_SOURCE_DIR) + "/" + rel);
+    return std::string(std::istreambuf_iterator<char>(f), {});
+  };
+  const std::string self = read("tests/io/test_table.cpp"), doc = read("docs/contributing.md");
+  const auto from = self.find("io::Table concentration_table(");
+  ASSERT_NE(from, std::string::npos);
+  const std::string function = self.substr(from, self.find("\n}\n", from) + 3 - from);
+  EXPECT_NE(doc.find("```cpp\n" + function + "```"), std::string::npos) << function;
+}
 
 TEST(Table, WorkedExampleRendersCsvAndDataset) {
   const auto t = concentration_table({{0.0, 2e6, 0}, {0.5, 1.5e6, 3}});
