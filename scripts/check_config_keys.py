@@ -13,7 +13,8 @@ Usage: check_config_keys.py AGGLO_EXECUTABLE SOURCE_DIR
 3. No call of the config reader (ConfigSection::number, integer, ..., section, tables, has) in
    src/ or apps/ may pass a literal key: values are read through the setting objects.
 
-src/agglo/io/ is excluded: it holds output column names, which may coincide with key names.
+src/agglo/io/ and src/agglo/writers/ are excluded: they hold output column names, which may coincide with key
+names.
 Every offender is printed as file:line; the exit status is 1 if there is any.
 """
 import pathlib
@@ -58,7 +59,7 @@ def code_lines(path):
 def sources(root, folder):
     for p in sorted((root / folder).rglob("*")):
         rel = p.relative_to(root).as_posix()
-        if p.suffix in (".cpp", ".hpp") and not rel.startswith("src/agglo/io/"):
+        if p.suffix in (".cpp", ".hpp") and not rel.startswith(("src/agglo/io/", "src/agglo/writers/")):
             yield p, rel
 
 

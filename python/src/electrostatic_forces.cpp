@@ -15,7 +15,7 @@
 #include <pybind11/numpy.h>
 
 #include "agglo/electrostatics/solver.hpp"
-#include "agglo/io/electrostatics_writers.hpp"
+#include "agglo/writers/electrostatics.hpp"
 #include "bindings.hpp"
 #include "electrostatic_input.hpp"
 
@@ -114,7 +114,7 @@ ElectrostaticResult electrostatic_forces(py::object positions, py::object radii,
     solver = es::make_solver(in.options);
     sol = solver->solve(in.problem);
   }
-  nlohmann::json stats = io::solve_stats(*solver, in.problem, sol);
+  nlohmann::json stats = writers::solve_stats(*solver, in.problem, sol);
   stats["min_gap"] = in.min_gap ? nlohmann::json(*in.min_gap) : nlohmann::json(nullptr);
   ElectrostaticResult r;
   r.energy = sol.energy;

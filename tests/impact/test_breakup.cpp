@@ -6,11 +6,11 @@
 #include <cmath>
 #include <omp.h>
 
-#include "agglo/impact/breakup.hpp"
-#include "agglo/io/impact_writers.hpp"
-#include "agglo/run/impact_ensemble.hpp"
-#include "agglo/impact/impact_case.hpp"
 #include "agglo/core/config.hpp"
+#include "agglo/impact/breakup.hpp"
+#include "agglo/impact/impact_case.hpp"
+#include "agglo/run/impact_ensemble.hpp"
+#include "agglo/writers/impact.hpp"
 
 using namespace agglo;
 using namespace agglo::impact;
@@ -50,10 +50,10 @@ ImpactBatch ensemble_of(const std::function<ImpactOutcome(double, double)>& f, i
     std::vector<agglo::run::Job> jobs;
     for (const auto& b : batch)
       jobs.push_back({"", [f, b](const agglo::run::JobContext&) {
-                        return agglo::io::outcome_json(f(b.speed, b.offset_radii));
+                        return agglo::writers::outcome_json(f(b.speed, b.offset_radii));
                       }});
     std::vector<ImpactOutcome> out;
-    for (const auto& o : agglo::run::run_jobs(jobs, {threads})) out.push_back(agglo::io::outcome_from_json(o.result));
+    for (const auto& o : agglo::run::run_jobs(jobs, {threads})) out.push_back(agglo::writers::outcome_from_json(o.result));
     return out;
   };
 }

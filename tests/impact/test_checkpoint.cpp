@@ -1,4 +1,4 @@
-// Checkpoint and exact restart of a collision run (impact_run.hpp, io/impact_checkpoint.hpp): a saved
+// Checkpoint and exact restart of a collision run (impact_run.hpp, impact/checkpoint.hpp): a saved
 // state loads and saves to the same bytes, and a run stopped after k steps, saved, loaded into a fresh
 // run and continued ends in exactly the state (payload bytes) and records (rows, snapshots) of the
 // uninterrupted run, for k in the approach, just after the first contact forms, just after an
@@ -12,9 +12,9 @@
 
 #include "agglo/core/config.hpp"
 #include "agglo/impact/agglomerate.hpp"
+#include "agglo/impact/checkpoint.hpp"
 #include "agglo/impact/impact_case.hpp"
 #include "agglo/impact/impact_run.hpp"
-#include "agglo/io/impact_checkpoint.hpp"
 
 using namespace agglo;
 using namespace agglo::impact;
@@ -31,13 +31,13 @@ ImpactCase load_case(const std::string& stem, const std::vector<std::string>& se
 
 std::string payload(const ImpactState& s) {
   io::CheckpointWriter w;
-  io::write_impact_state(w, s);
+  impact::write_impact_state(w, s);
   return w.bytes();
 }
 
 ImpactState load(const std::string& bytes) {
   io::CheckpointReader r(bytes, "test");
-  return io::read_impact_state(r);
+  return impact::read_impact_state(r);
 }
 
 bool same_rows(const Recorder& a, const Recorder& b) {

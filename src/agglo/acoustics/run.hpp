@@ -1,6 +1,6 @@
 #pragma once
 // One acoustic DSMC run, from a validated case to its observations (docs/model.md §C.6). The run
-// never prints or writes files: warnings go to a callback, and io/acoustic_writers.hpp writes
+// never prints or writes files: warnings go to a callback, and writers/acoustic.hpp writes
 //   efficiency.csv  t, concentrations by phase, fine efficiency, pure-droplet fraction, volume
 //                   fractions (conservation), guard counters
 //   psd.csv         dN/dlog10 d by phase at output.psd_times

@@ -161,7 +161,7 @@ Estimate collide_estimate(const ImpactCase& c) {
   add_to(e.output, row_text + snap_text + kSmallFilesBytes, out_keys);
   // Recorded rows and snapshots (vector capacity up to 2x), the CSV text while it is written.
   const double recorded = 2.0 * rows * sizeof(TimeseriesRow) +
-                          snaps * (2.0 * sizeof(std::pair<double, io::ParticleSnapshot>) + n * 96.0);
+                          snaps * (2.0 * sizeof(std::pair<double, dem::ParticleSnapshot>) + n * 96.0);
   add_to(e.memory, run_memory(c) + recorded + row_text, out_keys);
   return e;
 }

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "agglo/impact/impact_case.hpp"
 #include "agglo/dem/dem_system.hpp"
-#include "agglo/io/vtk_particles.hpp"
+#include "agglo/dem/particle_snapshot.hpp"
+#include "agglo/impact/impact_case.hpp"
 
 namespace agglo::impact {
 
@@ -26,7 +26,7 @@ struct TimeseriesRow {
 
 struct Recorder {
   std::vector<TimeseriesRow> rows;
-  std::vector<std::pair<double, io::ParticleSnapshot>> snapshots;
+  std::vector<std::pair<double, dem::ParticleSnapshot>> snapshots;
 };
 
 struct Fragment {

@@ -20,9 +20,9 @@ namespace {
 // most 6 contacts per particle) with margin. Any larger rise is energy made by the integrator.
 constexpr double kJkrReleasePerParticle = 10.0;
 
-io::ParticleSnapshot snapshot(const dem::DemSystem& sys) {
+dem::ParticleSnapshot snapshot(const dem::DemSystem& sys) {
   const auto& p = sys.particles();
-  return io::ParticleSnapshot{p.x, p.v, p.w, p.r, p.q, sys.contacts_per_particle()};
+  return dem::ParticleSnapshot{p.x, p.v, p.w, p.r, p.q, sys.contacts_per_particle()};
 }
 
 // Broken, every fragment escaping, and every fragment's surfaces at least `min_gap` from the rest

@@ -1,6 +1,6 @@
 #pragma once
 // The complete state of one collision run (impact_run.hpp) between two steps, as plain data for
-// checkpoints (io/impact_checkpoint.hpp, docs/restart.md, "Collide"): the DEM state, the electrostatic coupling
+// checkpoints (impact/checkpoint.hpp, docs/restart.md, "Collide"): the DEM state, the electrostatic coupling
 // (held forces, warm start), the recorded rows and snapshots, the phase of the run with its stop
 // times and extension count, the output clocks and the energy watchdog's launch values. Restored
 // into a run of the same case, the continuation is bitwise identical to the uninterrupted run.

@@ -59,7 +59,7 @@ class CheckpointWriter {
 };
 
 // Reads values back in the order they were written; ConfigError naming the file on running past the end.
-// Writer and reader are header-only, so that engines below io (acoustics, dem) can serialise their state.
+// Each engine owns its payload and serialises it with these (acoustics/, sectional/, impact/checkpoint).
 class CheckpointReader {
  public:
   CheckpointReader(std::string bytes, std::string file) : bytes_(std::move(bytes)), file_(std::move(file)) {}

@@ -1,8 +1,9 @@
 #pragma once
 // A run's results as named, labelled arrays — the data model of NetCDF and xarray: dimensions with
 // lengths, variables over dimensions with CF-style `units` and `long_name`, and global attributes.
-// Built from a command's observations (io/*_dataset.hpp); consumed by the NetCDF writer (results.nc)
-// and by the Python module (NumPy arrays that share the variables' storage).
+// Built from a command's observations (writers/<command>.hpp, its tables through io::Table); consumed
+// by the NetCDF writer (results.nc) and by the Python module (NumPy arrays that share the variables'
+// storage).
 #include <cstddef>
 #include <cstdint>
 #include <memory>

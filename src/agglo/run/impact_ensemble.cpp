@@ -4,7 +4,7 @@
 
 #include "agglo/core/error.hpp"
 #include "agglo/impact/orientation_set.hpp"
-#include "agglo/io/impact_writers.hpp"
+#include "agglo/writers/impact.hpp"
 
 namespace agglo::run {
 
@@ -23,19 +23,19 @@ impact::ImpactBatch impact_batch(const impact::ImpactCase& c, const dem::Particl
                         ck.projectile.offset_radii = b.offset_radii;
                         auto poll = [&ctx](double, double) { throw_if_cancelled(ctx.cancel); };
                         if (b.orientations <= 1)
-                          return io::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &relaxed));
+                          return writers::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &relaxed));
                         // Rigid rotation of the relaxed agglomerate: contact overlaps and pair
                         // distances are unchanged, so it is still relaxed (no external field).
                         dem::Particles turned = relaxed;
                         impact::rotate_about_centroid(
                             turned, impact::stratified_orientation(b.orientation, b.orientations).rotation);
-                        return io::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &turned));
+                        return writers::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &turned));
                       }});
     }
     const auto outcomes = run_jobs(jobs, opt);
     rethrow_first_error(outcomes, &jobs);
     std::vector<impact::ImpactOutcome> out;
-    for (const auto& o : outcomes) out.push_back(io::outcome_from_json(o.result));
+    for (const auto& o : outcomes) out.push_back(writers::outcome_from_json(o.result));
     return out;
   };
 }

@@ -2,7 +2,7 @@
 // The impacts of vcrit and breakup as jobs of the ensemble runner: job key "v=<speed> offset=<offset>"
 // (17 significant digits), followed by " orientation=<k>/<M>" for rotation k of a set of M > 1
 // (breakup.orientations; one orientation keeps the older keys, so older journals stay valid),
-// result = result.json of the impact (io::outcome_json), so a journal entry restores the outcome
+// result = result.json of the impact (writers::outcome_json), so a journal entry restores the outcome
 // exactly and `--resume` repeats only the missing impacts.
 #include "agglo/impact/breakup.hpp"
 #include "agglo/impact/vcrit.hpp"

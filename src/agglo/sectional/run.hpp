@@ -1,6 +1,6 @@
 #pragma once
 // One `agglo sectional` run: the sectional solution (solver.hpp) observed like an acoustic DSMC run,
-// so that io/acoustic_writers.hpp writes the same files with the same columns:
+// so that writers/acoustic.hpp writes the same files with the same columns:
 //   efficiency.csv  every output.efficiency_interval and at the end (collision columns 0: no samples)
 //   psd.csv         dN/dlog10 d at output.psd_times; each pivot's particles spread evenly in log d over
 //                   its section [d_i r^-1/2, d_i r^1/2] (r = d_{i+1}/d_i) and shared among the output bins

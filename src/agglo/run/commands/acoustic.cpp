@@ -3,10 +3,9 @@
 #include "agglo/acoustics/run.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_acoustic.hpp"
-#include "agglo/io/acoustic_dataset.hpp"
-#include "agglo/io/acoustic_writers.hpp"
 #include "agglo/run/checkpoint_io.hpp"
 #include "agglo/run/commands.hpp"
+#include "agglo/writers/acoustic.hpp"
 
 namespace agglo::run {
 
@@ -47,18 +46,18 @@ class Acoustic final : public Command {
     hooks.checkpoint = ck.write;
     hooks.resume = ck.resume ? &*ck.resume : nullptr;
     const auto obs = acoustics::run_acoustic(c, hooks);
-    io::write_acoustic(out, obs, ctx.formats.csv);
+    writers::write_acoustic(out, obs, ctx.formats.csv);
     if (!obs.interrupted.empty()) {  // partial results flushed (results.nc with status "incomplete")
       if (ctx.formats.netcdf)
-        write_results_nc(out, cfg, name(), static_cast<long long>(c.engine.seed), io::acoustic_dataset(obs),
+        write_results_nc(out, cfg, name(), static_cast<long long>(c.engine.seed), writers::acoustic_dataset(obs),
                          "incomplete");
       throw InterruptedError(obs.interrupted);
     }
     CommandResult r;
-    r.summary = io::acoustic_summary(obs);
+    r.summary = writers::acoustic_summary(obs);
     r.details = r.summary;
     r.seed = static_cast<long long>(c.engine.seed);
-    r.data = std::make_shared<const io::Dataset>(io::acoustic_dataset(obs));
+    r.data = std::make_shared<const io::Dataset>(writers::acoustic_dataset(obs));
     if (c.output.plots) r.plot_script = "plot_acoustic.py";
     return r;
   }

@@ -2,11 +2,10 @@
 #include <fmt/format.h>
 
 #include "agglo/impact/estimate.hpp"
-#include "agglo/io/impact_dataset.hpp"
-#include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/run/commands/impact_command.hpp"
 #include "agglo/run/impact_ensemble.hpp"
+#include "agglo/writers/impact.hpp"
 
 namespace agglo::run {
 
@@ -35,9 +34,9 @@ class Breakup final : public ImpactCommand {
     Journal journal(out.file("journal.jsonl"), impact_context(name(), cfg), ctx.resume);
     const EnsembleOptions opt{ctx.threads, &journal, ctx.cancel, &ctx.report(), "breakup"};
     const auto res = impact::breakup_probability(c.breakup, c.projectile.offset_radii, impact_batch(c, relaxed, opt));
-    if (ctx.formats.csv) io::write_breakup(out, res);
+    if (ctx.formats.csv) writers::write_breakup(out, res);
     CommandResult r;
-    r.data = std::make_shared<const io::Dataset>(io::breakup_dataset(res));
+    r.data = std::make_shared<const io::Dataset>(writers::breakup_dataset(res));
     r.summary = {{"v10", level(res.v10)}, {"v50", level(res.v50)}, {"v90", level(res.v90)},
                  {"runs", res.outcomes.size()}};
     r.plot_script = "plot_breakup.py";

@@ -13,13 +13,12 @@
 #include "agglo/impact/breakup.hpp"
 #include "agglo/impact/experiment.hpp"
 #include "agglo/impact/vcrit.hpp"
-#include "agglo/io/calibration_dataset.hpp"
-#include "agglo/io/calibration_writers.hpp"
 #include "agglo/run/calibrate_case.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/run/ensemble.hpp"
 #include "agglo/run/impact_ensemble.hpp"
 #include "agglo/run/journal.hpp"
+#include "agglo/writers/calibration.hpp"
 
 namespace agglo::run {
 
@@ -150,9 +149,9 @@ class Calibrate final : public Command {
       observables.push_back(t.observable);
     }
     const auto predictions = predict(c, res, journal, ctx);
-    if (ctx.formats.csv) io::write_calibration(out, c.spec, res, files, observables, predictions);
+    if (ctx.formats.csv) writers::write_calibration(out, c.spec, res, files, observables, predictions);
     CommandResult r;
-    r.data = std::make_shared<const io::Dataset>(io::calibration_dataset(c.spec, res, files, observables, predictions));
+    r.data = std::make_shared<const io::Dataset>(writers::calibration_dataset(c.spec, res, files, observables, predictions));
     r.summary = {{"chi2", res.chi2}, {"feasible", res.feasible}, {"mapped_points", res.points.size()}};
     for (std::size_t j = 0; j < res.best.size(); ++j) r.summary[c.spec.parameters[j].key] = res.best[j];
     r.plot_script = "plot_calibration.py";

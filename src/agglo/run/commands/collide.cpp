@@ -7,11 +7,10 @@
 #include "agglo/impact/estimate.hpp"
 #include "agglo/impact/experiment.hpp"
 #include "agglo/impact/impact_run.hpp"
-#include "agglo/io/impact_dataset.hpp"
-#include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/run/commands/collide_checkpoint.hpp"
 #include "agglo/run/commands/impact_command.hpp"
+#include "agglo/writers/impact.hpp"
 
 namespace agglo::run {
 
@@ -46,19 +45,19 @@ class Collide final : public ImpactCommand {
       res = run.run([&](const impact::ImpactRun& r) { checkpoints.at_boundary(r); });
       checkpoints.at_end(run);
     } catch (const InterruptedError&) {  // flush the history so far; run.json marks the run incomplete
-      if (ctx.formats.csv) io::write_timeseries(out, rec);
-      if (ctx.formats.csv) io::write_snapshots(out, rec);
-      if (ctx.formats.netcdf) write_results_nc(out, cfg, name(), 0, io::collide_dataset(rec, nullptr), "incomplete");
+      if (ctx.formats.csv) writers::write_timeseries(out, rec);
+      if (ctx.formats.csv) writers::write_snapshots(out, rec);
+      if (ctx.formats.netcdf) write_results_nc(out, cfg, name(), 0, writers::collide_dataset(rec, nullptr), "incomplete");
       throw;
     }
     CommandResult r;
-    r.summary = io::outcome_json(res);
+    r.summary = writers::outcome_json(res);
     if (ctx.formats.csv) {
-      io::write_timeseries(out, rec);
-      io::write_snapshots(out, rec);
+      writers::write_timeseries(out, rec);
+      writers::write_snapshots(out, rec);
       out.write_json("result.json", r.summary);
     }
-    r.data = std::make_shared<const io::Dataset>(io::collide_dataset(rec, &res));
+    r.data = std::make_shared<const io::Dataset>(writers::collide_dataset(rec, &res));
     r.plot_script = "plot_collision.py";
     ctx.report().info(fmt::format("{}: v_in = {:.6g} m/s -> {} ({} fragment(s)); outputs in {}", c.name, res.speed,
                                   res.broken ? "BROKEN" : (res.undecided ? "undecided" : "not broken"),

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "agglo/io/impact_checkpoint.hpp"
+#include "agglo/impact/checkpoint.hpp"
 
 namespace agglo::run {
 
@@ -13,7 +13,7 @@ CollideCheckpoints::CollideCheckpoints(const Command& collide, const Config& cfg
 
 std::optional<impact::ImpactState> CollideCheckpoints::resume_state() {
   if (!io_.resume) return std::nullopt;  // a killed writer's checkpoint.bin.tmp-<pid>: removed by OutputDir
-  return io::read_impact_state(*io_.resume);
+  return impact::read_impact_state(*io_.resume);
 }
 
 void CollideCheckpoints::at_boundary(const impact::ImpactRun& run) {
@@ -37,7 +37,7 @@ void CollideCheckpoints::at_end(const impact::ImpactRun& run) {
 
 void CollideCheckpoints::save(const impact::ImpactRun& run) {
   io::CheckpointWriter w;
-  io::write_impact_state(w, run.state());
+  impact::write_impact_state(w, run.state());
   io_.write(static_cast<std::uint64_t>(run.steps()), run.since_launch(), w.bytes());
 }
 

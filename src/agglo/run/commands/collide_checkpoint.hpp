@@ -1,6 +1,6 @@
 #pragma once
 // Checkpoints of `agglo collide` (docs/restart.md, "Collide"): with --checkpoint INTERVAL a checkpoint of the
-// whole collision state (io/impact_checkpoint.hpp) is written each time the simulated time since
+// whole collision state (impact/checkpoint.hpp) is written each time the simulated time since
 // launch crosses a multiple of INTERVAL, when the run is interrupted (at the step boundary where the
 // cancellation is seen) and at the end. Under --resume the run continues from the folder's checkpoint
 // (none: from the launch); a checkpoint of another build or config is refused (ConfigError).

@@ -5,9 +5,8 @@
 
 #include "agglo/electrostatics/config.hpp"
 #include "agglo/electrostatics/estimate.hpp"
-#include "agglo/io/electrostatics_dataset.hpp"
-#include "agglo/io/electrostatics_writers.hpp"
 #include "agglo/run/commands.hpp"
+#include "agglo/writers/electrostatics.hpp"
 
 namespace agglo::run {
 
@@ -38,10 +37,10 @@ class Electrostatics final : public Command {
     const es::EsCase sc = es::parse_electrostatics_case(cfg);
     const auto solver = es::make_solver(sc.settings.options);
     const es::Solution sol = solver->solve(sc.problem);
-    if (ctx.formats.csv) io::write_electrostatics(out, *solver, sc.problem, sol);
+    if (ctx.formats.csv) writers::write_electrostatics(out, *solver, sc.problem, sol);
     CommandResult r;
-    r.data = std::make_shared<const io::Dataset>(io::electrostatics_dataset(*solver, sc.problem, sol));
-    r.summary = io::solve_stats(*solver, sc.problem, sol);
+    r.data = std::make_shared<const io::Dataset>(writers::electrostatics_dataset(*solver, sc.problem, sol));
+    r.summary = writers::solve_stats(*solver, sc.problem, sol);
     r.summary["energy_J"] = sol.energy;
     ctx.report().info(fmt::format(
         "electrostatics ({}): {} particles, U = {:.6g} J, {} iterations, degree {}, {:.3g} s; outputs in {}",

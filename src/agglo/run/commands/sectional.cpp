@@ -1,10 +1,9 @@
 // agglo sectional: deterministic sectional (fixed-pivot) coagulation of an acoustic case file with a
 // kernel of the sizes only; the same efficiency.csv and psd.csv as agglo acoustic (docs/sectional.md).
-#include "agglo/io/acoustic_dataset.hpp"
-#include "agglo/io/acoustic_writers.hpp"
 #include "agglo/run/checkpoint_io.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/sectional/run.hpp"
+#include "agglo/writers/acoustic.hpp"
 
 namespace agglo::run {
 
@@ -33,11 +32,11 @@ class Sectional final : public Command {
     hooks.checkpoint = ck.write;
     hooks.resume = ck.resume ? &*ck.resume : nullptr;
     const auto obs = sectional::run_sectional(c, hooks);
-    io::write_acoustic(out, obs, ctx.formats.csv);
+    writers::write_acoustic(out, obs, ctx.formats.csv);
     CommandResult r;
-    r.summary = io::acoustic_summary(obs);
+    r.summary = writers::acoustic_summary(obs);
     r.details = r.summary;
-    r.data = std::make_shared<const io::Dataset>(io::acoustic_dataset(obs));
+    r.data = std::make_shared<const io::Dataset>(writers::acoustic_dataset(obs));
     if (c.base.output.plots) r.plot_script = "plot_acoustic.py";
     return r;
   }

@@ -3,12 +3,11 @@
 
 #include "agglo/core/settings_impact.hpp"
 #include "agglo/impact/estimate.hpp"
-#include "agglo/io/impact_dataset.hpp"
-#include "agglo/io/impact_writers.hpp"
 #include "agglo/run/commands.hpp"
-#include "agglo/run/ranks.hpp"
 #include "agglo/run/commands/impact_command.hpp"
 #include "agglo/run/impact_ensemble.hpp"
+#include "agglo/run/ranks.hpp"
+#include "agglo/writers/impact.hpp"
 
 namespace agglo::run {
 
@@ -45,9 +44,9 @@ class Vcrit final : public ImpactCommand {
     const EnsembleOptions opt{ctx.threads, &journal, ctx.cancel, nullptr, "vcrit"};
     const auto res = impact::find_vcrit(c.vcrit, speed_batch(c, relaxed, opt),
                                         [&](double f) { ctx.report().progress("vcrit", f, 0.0); });
-    if (ctx.formats.csv) out.write_json("vcrit.json", io::vcrit_json(res));
+    if (ctx.formats.csv) out.write_json("vcrit.json", writers::vcrit_json(res));
     CommandResult r;
-    r.data = std::make_shared<const io::Dataset>(io::vcrit_dataset(res));
+    r.data = std::make_shared<const io::Dataset>(writers::vcrit_dataset(res));
     r.summary = {{"v_crit", res.v_crit}, {"bracket_lo", res.lo}, {"bracket_hi", res.hi}, {"rounds", res.rounds},
                  {"runs", res.runs.size()}, {"warnings", res.warnings.size()}};
     r.plot_script = "plot_vcrit.py";

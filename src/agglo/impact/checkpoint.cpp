@@ -1,11 +1,14 @@
-// Checkpoint payload of a collision run (impact_checkpoint.hpp).
-#include "agglo/io/impact_checkpoint.hpp"
+// Checkpoint payload of a collision run (impact/checkpoint.hpp).
+#include "agglo/impact/checkpoint.hpp"
 
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
 
-namespace agglo::io {
+namespace agglo::impact {
+
+using io::CheckpointReader;
+using io::CheckpointWriter;
 
 namespace {
 
@@ -181,4 +184,4 @@ impact::ImpactState read_impact_state(CheckpointReader& r) {
   return s;
 }
 
-}  // namespace agglo::io
+}  // namespace agglo::impact

@@ -1,8 +1,8 @@
-#include "agglo/io/surface_vtu.hpp"
+#include "agglo/writers/surface_vtu.hpp"
 
 #include <fmt/format.h>
 
-namespace agglo::io {
+namespace agglo::writers {
 
 void write_surface_vtu(std::ostream& os, const std::vector<SurfaceSample>& s,
                        const std::vector<std::array<int, 3>>& tri) {
@@ -43,4 +43,4 @@ void write_surface_vtu(std::ostream& os, const std::vector<SurfaceSample>& s,
   os << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 }
 
-}  // namespace agglo::io
+}  // namespace agglo::writers

@@ -1,11 +1,14 @@
-#include "agglo/io/calibration_writers.hpp"
+#include "agglo/writers/calibration.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
-namespace agglo::io {
+#include "agglo/io/config_units.hpp"
+#include "agglo/io/dataset_scalars.hpp"
+
+namespace agglo::writers {
 
 namespace {
 
@@ -82,33 +85,74 @@ nlohmann::json calibration_json(const calibrate::Spec& spec, const calibrate::Re
           {"sigma_from", spec.widths ? "width of p(v) at the best fit" : "target tolerances"}};
 }
 
+io::Table points_table(const calibrate::Spec& spec, const calibrate::Result& r) {
+  const std::size_t nd = spec.parameters.size(), nt = spec.targets.size();
+  std::vector<std::int64_t> round;
+  std::vector<std::vector<double>> x(nd), obs(nt), weight(nt);
+  for (const auto& p : r.points) {
+    round.push_back(p.round);
+    for (std::size_t j = 0; j < nd; ++j) x[j].push_back(j < p.x.size() ? p.x[j] : 0.0);
+    for (std::size_t k = 0; k < nt; ++k) {
+      obs[k].push_back(k < p.observables.size() ? p.observables[k].value : 0.0);
+      weight[k].push_back(k < p.robust_weight.size() ? p.robust_weight[k] : 0.0);
+    }
+  }
+  io::Table t("calibration_points.csv", {{"point", r.points.size()}}, "{:.10g}");
+  t.integer("round", "1", "mapping round of the run", round);
+  for (std::size_t j = 0; j < nd; ++j) {
+    const auto& key = spec.parameters[j].key;
+    t.real(fmt::format("x{}", j), io::udunits_of_config_key(key), "value of " + key, x[j]).attribute("config_key", key);
+  }
+  for (std::size_t k = 0; k < nt; ++k) {
+    t.real(fmt::format("obs{}", k), "m s-1", fmt::format("observable of target {} (NaN: none)", k), obs[k]);
+    t.real(fmt::format("weight{}", k), "1", fmt::format("robustness weight of target {}", k), weight[k])
+        .with_format("{:.4g}");
+  }
+  return t;
+}
+
+io::Table surface_table(const calibrate::Spec& spec, const calibrate::Result& r) {
+  const std::size_t nd = spec.parameters.size(), nt = spec.targets.size();
+  io::Table t("calibration_surface.csv", {{"surface_point", r.plot_u.size()}}, "{:.10g}");
+  for (std::size_t j = 0; j < nd; ++j) {
+    std::vector<double> x;
+    for (const auto& u : r.plot_u) x.push_back(spec.parameters[j].from_unit(u[j]));
+    const auto& key = spec.parameters[j].key;
+    t.real(fmt::format("surface_x{}", j), io::udunits_of_config_key(key), "value of " + key, x)
+        .header({fmt::format("x{}", j)});
+  }
+  for (std::size_t k = 0; k < nt && k < r.plot_values.size(); ++k)
+    if (r.plot_values[k].size() == r.plot_u.size())
+      t.real(fmt::format("surrogate{}", k), "m s-1", fmt::format("surrogate of target {}", k), r.plot_values[k]);
+  return t;
+}
+
 void write_calibration(const OutputDir& out, const calibrate::Spec& spec, const calibrate::Result& r,
                        const std::vector<std::string>& files, const std::vector<std::string>& observables,
                        const std::vector<calibrate::Prediction>& predictions) {
   out.write_json("calibration.json", calibration_json(spec, r, files, observables, predictions));
-  const std::size_t d = spec.parameters.size(), nt = spec.targets.size();
-  out.write("calibration_points.csv", [&](std::ostream& o) {
-    o << "round";
-    for (std::size_t j = 0; j < d; ++j) o << ",x" << j;
-    for (std::size_t k = 0; k < nt; ++k) o << ",obs" << k << ",weight" << k;
-    o << "\n";
-    for (const auto& p : r.points) {
-      o << p.round;
-      for (double x : p.x) o << fmt::format(",{:.10g}", x);
-      for (std::size_t k = 0; k < nt; ++k) o << fmt::format(",{:.10g},{:.4g}", p.observables[k].value, p.robust_weight[k]);
-      o << "\n";
-    }
-  });
-  out.write("calibration_surface.csv", [&](std::ostream& o) {
-    for (std::size_t j = 0; j < d; ++j) o << (j ? "," : "") << "x" << j;
-    for (std::size_t k = 0; k < nt; ++k) o << ",surrogate" << k;
-    o << "\n";
-    for (std::size_t i = 0; i < r.plot_u.size(); ++i) {
-      for (std::size_t j = 0; j < d; ++j) o << (j ? "," : "") << fmt::format("{:.10g}", spec.parameters[j].from_unit(r.plot_u[i][j]));
-      for (std::size_t k = 0; k < nt; ++k) o << fmt::format(",{:.10g}", r.plot_values[k][i]);
-      o << "\n";
-    }
-  });
+  io::write_csv(out, points_table(spec, r));
+  io::write_csv(out, surface_table(spec, r));
 }
 
-}  // namespace agglo::io
+io::Dataset calibration_dataset(const calibrate::Spec& spec, const calibrate::Result& r,
+                                const std::vector<std::string>& case_files,
+                                const std::vector<std::string>& observables,
+                                const std::vector<calibrate::Prediction>& predictions) {
+  io::Dataset d;
+  points_table(spec, r).add_to(d);
+  surface_table(spec, r).add_to(d);
+  const std::size_t nd = spec.parameters.size();
+  if (r.best.size() == nd)
+    io::add_column(d, "best", "parameter", "1", "fitted parameter values (units of x0, x1, ...)", r.best);
+  if (r.feasible_lo.size() == nd && r.feasible_hi.size() == nd) {
+    io::add_column(d, "feasible_lo", "parameter", "1", "feasible set, lower corner (units of x0, x1, ...)",
+                   r.feasible_lo);
+    io::add_column(d, "feasible_hi", "parameter", "1", "feasible set, upper corner (units of x0, x1, ...)",
+                   r.feasible_hi);
+  }
+  io::add_scalars(d, calibration_json(spec, r, case_files, observables, predictions));
+  return d;
+}
+
+}  // namespace agglo::writers

@@ -9,11 +9,11 @@
 
 #include "agglo/electrostatics/solver.hpp"
 
-namespace agglo::io {
+namespace agglo::writers {
 
 using es::SurfaceSample;
 
 void write_surface_vtu(std::ostream& os, const std::vector<SurfaceSample>& samples,
                        const std::vector<std::array<int, 3>>& triangles);
 
-}  // namespace agglo::io
+}  // namespace agglo::writers

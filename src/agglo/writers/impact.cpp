@@ -1,22 +1,37 @@
-#include "agglo/io/impact_writers.hpp"
+#include "agglo/writers/impact.hpp"
 
 #include <filesystem>
 
 #include <fmt/format.h>
 
 #include "agglo/impact/orientation_set.hpp"
+#include "agglo/io/dataset_scalars.hpp"
+#include "agglo/io/vtk.hpp"
 
-namespace agglo::io {
+namespace agglo::writers {
 
-void write_timeseries(const OutputDir& out, const Recorder& rec) {
-  out.write("timeseries.csv", [&](std::ostream& o) {
-    o << "t,kinetic_energy,electrostatic_energy,U_over_U0,radius_of_gyration,n_contacts,"
-         "radius_of_gyration_agglomerate\n";
-    for (const auto& r : rec.rows)
-      o << fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{},{:.9e}\n", r.t, r.kinetic, r.electrostatic, r.u_over_u0,
-                       r.rg, r.contacts, r.rg_agglomerate);
-  });
+using io::VtkArray;
+using io::vtk_vectors;
+
+io::Table timeseries_table(const Recorder& rec) {
+  using Row = impact::TimeseriesRow;
+  const auto& rows = rec.rows;
+  io::Table t("timeseries.csv", {{"time", rows.size()}}, "{:.9e}");
+  t.real("time", "s", "time since launch", io::reals_of(rows, [](const Row& r) { return r.t; })).header({"t"});
+  t.real("kinetic_energy", "J", "kinetic energy of all particles", io::reals_of(rows, [](const Row& r) { return r.kinetic; }));
+  t.real("electrostatic_energy", "J", "electrostatic energy",
+         io::reals_of(rows, [](const Row& r) { return r.electrostatic; }));
+  t.real("U_over_U0", "1", "electrostatic energy over U0 = 2 pi r_p^3 sigma_f^2 / eps0",
+         io::reals_of(rows, [](const Row& r) { return r.u_over_u0; }));
+  t.real("radius_of_gyration", "m", "radius of gyration of all particles",
+         io::reals_of(rows, [](const Row& r) { return r.rg; }));
+  t.integer("n_contacts", "1", "number of contacts", io::ints_of(rows, [](const Row& r) { return r.contacts; }));
+  t.real("radius_of_gyration_agglomerate", "m", "radius of gyration of the original agglomerate particles",
+         io::reals_of(rows, [](const Row& r) { return r.rg_agglomerate; }));
+  return t;
 }
+
+void write_timeseries(const OutputDir& out, const Recorder& rec) { io::write_csv(out, timeseries_table(rec)); }
 
 namespace {
 // The snapshots of an earlier run into the same folder (particles.pvd, snapshots/particles_*.vtp), so
@@ -29,6 +44,15 @@ void remove_old_snapshots(const OutputDir& out) {
     if (name.rfind("particles_", 0) == 0 && e.path().extension() == ".vtp") std::filesystem::remove(e.path(), ec);
   }
 }
+
+// One snapshot's particles as VTK point data (the active scalars: radius).
+std::vector<VtkArray> point_data(const dem::ParticleSnapshot& s) {
+  return {{"radius", "Float64", 1, s.radius},
+          vtk_vectors("velocity", s.velocity),
+          vtk_vectors("angular_velocity", s.angular_velocity),
+          {"charge", "Float64", 1, s.charge},
+          {"contacts", "Int32", 1, {s.contacts.begin(), s.contacts.end()}}};
+}
 }  // namespace
 
 void write_snapshots(const OutputDir& out, const Recorder& rec) {
@@ -36,10 +60,11 @@ void write_snapshots(const OutputDir& out, const Recorder& rec) {
   std::vector<std::pair<double, std::string>> files;
   for (std::size_t k = 0; k < rec.snapshots.size(); ++k) {
     std::string name = fmt::format("snapshots/particles_{:04d}.vtp", k);
-    out.write(name, [&](std::ostream& o) { write_vtp(o, rec.snapshots[k].second); });
+    const auto& snap = rec.snapshots[k].second;
+    out.write(name, [&](std::ostream& o) { io::write_vtp(o, snap.position, point_data(snap)); });
     files.emplace_back(rec.snapshots[k].first, name);
   }
-  if (!files.empty()) out.write("particles.pvd", [&](std::ostream& o) { write_pvd(o, files); });
+  if (!files.empty()) out.write("particles.pvd", [&](std::ostream& o) { io::write_pvd(o, files); });
 }
 
 nlohmann::json outcome_json(const ImpactOutcome& o) {
@@ -100,13 +125,24 @@ nlohmann::json orientations_json(int n) {
 
 }  // namespace
 
+io::Table breakup_table(const BreakupResult& r) {
+  using P = impact::BreakupPoint;
+  const auto& p = r.points;
+  io::Table t("breakup.csv", {{"speed", p.size()}}, "{:.6g}");
+  t.real("speed", "m s-1", "projectile speed (breakup.csv speed_m_s)", io::reals_of(p, [](const P& x) { return x.speed; }))
+      .header({"speed_m_s"})
+      .with_format("{:.9g}");
+  t.integer("runs", "1", "runs at this speed", io::ints_of(p, [](const P& x) { return x.runs; }));
+  t.integer("broken", "1", "runs that broke", io::ints_of(p, [](const P& x) { return x.broken; }));
+  t.integer("undecided", "1", "runs undecided", io::ints_of(p, [](const P& x) { return x.undecided; }));
+  t.real("p_break", "1", "break-up probability", io::reals_of(p, [](const P& x) { return x.p; }));
+  t.real("ci95_lo", "1", "Wilson 95 % interval, lower end", io::reals_of(p, [](const P& x) { return x.ci_lo; }));
+  t.real("ci95_hi", "1", "Wilson 95 % interval, upper end", io::reals_of(p, [](const P& x) { return x.ci_hi; }));
+  return t;
+}
+
 void write_breakup(const OutputDir& out, const BreakupResult& r) {
-  out.write("breakup.csv", [&](std::ostream& os) {
-    os << "speed_m_s,runs,broken,undecided,p_break,ci95_lo,ci95_hi\n";
-    for (const auto& p : r.points)
-      os << fmt::format("{:.9g},{},{},{},{:.6g},{:.6g},{:.6g}\n", p.speed, p.runs, p.broken, p.undecided, p.p,
-                        p.ci_lo, p.ci_hi);
-  });
+  io::write_csv(out, breakup_table(r));
   auto level = [](double v) { return v < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(v); };
   nlohmann::json pts = nlohmann::json::array(), runs = nlohmann::json::array();
   for (const auto& p : r.points)
@@ -125,4 +161,4 @@ void write_breakup(const OutputDir& out, const BreakupResult& r) {
   out.write_json("breakup.json", doc);
 }
 
-}  // namespace agglo::io
+}  // namespace agglo::writers

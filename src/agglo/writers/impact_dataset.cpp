@@ -1,33 +1,22 @@
-#include "agglo/io/impact_dataset.hpp"
-
+// results.nc of the impact commands (writers/impact.hpp).
 #include <cmath>
 #include <limits>
 
 #include "agglo/io/dataset_scalars.hpp"
-#include "agglo/io/impact_writers.hpp"
+#include "agglo/writers/impact.hpp"
 
-namespace agglo::io {
+namespace agglo::writers {
+
+using io::add_column;
+using io::add_int_column;
+using io::add_scalars;
+using io::Dataset;
+using io::ints_of;
+using io::reals_of;
 
 namespace {
 
 const nlohmann::json kFlag = {{"flag_values", {0, 1}}, {"flag_meanings", "false true"}};
-
-void add_timeseries(Dataset& d, const impact::Recorder& rec) {
-  using Row = impact::TimeseriesRow;
-  const auto& rows = rec.rows;
-  add_column(d, "time", "time", "s", "time since launch", reals_of(rows, [](const Row& r) { return r.t; }));
-  d.add("kinetic_energy", {"time"}, "J", "kinetic energy of all particles",
-        reals_of(rows, [](const Row& r) { return r.kinetic; }));
-  d.add("electrostatic_energy", {"time"}, "J", "electrostatic energy",
-        reals_of(rows, [](const Row& r) { return r.electrostatic; }));
-  d.add("U_over_U0", {"time"}, "1", "electrostatic energy over U0 = 2 pi r_p^3 sigma_f^2 / eps0",
-        reals_of(rows, [](const Row& r) { return r.u_over_u0; }));
-  d.add("radius_of_gyration", {"time"}, "m", "radius of gyration of all particles",
-        reals_of(rows, [](const Row& r) { return r.rg; }));
-  d.add_ints("n_contacts", {"time"}, "1", "number of contacts", ints_of(rows, [](const Row& r) { return r.contacts; }));
-  d.add("radius_of_gyration_agglomerate", {"time"}, "m", "radius of gyration of the original agglomerate particles",
-        reals_of(rows, [](const Row& r) { return r.rg_agglomerate; }));
-}
 
 // Per-particle component and fragment index of an outcome (dim particle) and the fragment table.
 void add_fragments(Dataset& d, const impact::ImpactOutcome& o) {
@@ -61,16 +50,16 @@ void add_fragments(Dataset& d, const impact::ImpactOutcome& o) {
         reals_of(fr, [](const F& f) { return f.binding; }));
 }
 
-std::vector<double> flatten(const std::vector<std::pair<double, ParticleSnapshot>>& snaps,
-                            std::vector<Vec3> ParticleSnapshot::*field) {
+std::vector<double> flatten(const std::vector<std::pair<double, dem::ParticleSnapshot>>& snaps,
+                            std::vector<Vec3> dem::ParticleSnapshot::*field) {
   std::vector<double> out;
   for (const auto& s : snaps)
     for (const auto& v : s.second.*field) out.insert(out.end(), {v.x, v.y, v.z});
   return out;
 }
 
-std::vector<double> flatten(const std::vector<std::pair<double, ParticleSnapshot>>& snaps,
-                            std::vector<double> ParticleSnapshot::*field) {
+std::vector<double> flatten(const std::vector<std::pair<double, dem::ParticleSnapshot>>& snaps,
+                            std::vector<double> dem::ParticleSnapshot::*field) {
   std::vector<double> out;
   for (const auto& s : snaps) out.insert(out.end(), (s.second.*field).begin(), (s.second.*field).end());
   return out;
@@ -90,16 +79,16 @@ void add_snapshots(Dataset& d, const impact::Recorder& rec) {
   add_column(d, "frame_time", "frame", "s", "time of the snapshot frame",
              reals_of(s, [](const auto& f) { return f.first; }));
   const nlohmann::json coord{{"coordinates", "frame_time"}};
-  d.add("position", {"frame", "particle", "xyz"}, "m", "particle centre", flatten(s, &ParticleSnapshot::position))
+  d.add("position", {"frame", "particle", "xyz"}, "m", "particle centre", flatten(s, &dem::ParticleSnapshot::position))
       .attributes = coord;
-  d.add("velocity", {"frame", "particle", "xyz"}, "m s-1", "particle velocity", flatten(s, &ParticleSnapshot::velocity))
+  d.add("velocity", {"frame", "particle", "xyz"}, "m s-1", "particle velocity", flatten(s, &dem::ParticleSnapshot::velocity))
       .attributes = coord;
   d.add("angular_velocity", {"frame", "particle", "xyz"}, "rad s-1", "particle angular velocity",
-        flatten(s, &ParticleSnapshot::angular_velocity))
+        flatten(s, &dem::ParticleSnapshot::angular_velocity))
       .attributes = coord;
-  d.add("radius", {"frame", "particle"}, "m", "particle radius", flatten(s, &ParticleSnapshot::radius)).attributes =
+  d.add("radius", {"frame", "particle"}, "m", "particle radius", flatten(s, &dem::ParticleSnapshot::radius)).attributes =
       coord;
-  d.add("charge", {"frame", "particle"}, "C", "particle charge", flatten(s, &ParticleSnapshot::charge)).attributes =
+  d.add("charge", {"frame", "particle"}, "C", "particle charge", flatten(s, &dem::ParticleSnapshot::charge)).attributes =
       coord;
   std::vector<std::int64_t> contacts;
   for (const auto& f : s) contacts.insert(contacts.end(), f.second.contacts.begin(), f.second.contacts.end());
@@ -113,7 +102,7 @@ double level(double v) { return v < 0.0 ? std::numeric_limits<double>::quiet_NaN
 
 Dataset collide_dataset(const impact::Recorder& rec, const impact::ImpactOutcome* outcome) {
   Dataset d;
-  add_timeseries(d, rec);
+  timeseries_table(rec).add_to(d);
   if (outcome) {
     add_scalars(d, outcome_json(*outcome));
     add_fragments(d, *outcome);
@@ -144,18 +133,9 @@ Dataset vcrit_dataset(const impact::VcritResult& r) {
 }
 
 Dataset breakup_dataset(const impact::BreakupResult& r) {
-  using P = impact::BreakupPoint;
   using O = impact::ImpactOutcome;
   Dataset d;
-  const auto& p = r.points;
-  add_column(d, "speed", "speed", "m s-1", "projectile speed (breakup.csv speed_m_s)",
-             reals_of(p, [](const P& x) { return x.speed; }));
-  d.add_ints("runs", {"speed"}, "1", "runs at this speed", ints_of(p, [](const P& x) { return x.runs; }));
-  d.add_ints("broken", {"speed"}, "1", "runs that broke", ints_of(p, [](const P& x) { return x.broken; }));
-  d.add_ints("undecided", {"speed"}, "1", "runs undecided", ints_of(p, [](const P& x) { return x.undecided; }));
-  d.add("p_break", {"speed"}, "1", "break-up probability", reals_of(p, [](const P& x) { return x.p; }));
-  d.add("ci95_lo", {"speed"}, "1", "Wilson 95 % interval, lower end", reals_of(p, [](const P& x) { return x.ci_lo; }));
-  d.add("ci95_hi", {"speed"}, "1", "Wilson 95 % interval, upper end", reals_of(p, [](const P& x) { return x.ci_hi; }));
+  breakup_table(r).add_to(d);
   add_column(d, "offsets_radii", "offset", "1", "lateral projectile offsets in projectile radii", r.offsets);
   const std::size_t m = std::max<std::size_t>(r.offsets.size(), 1),
                     n = static_cast<std::size_t>(std::max(r.orientations, 1));
@@ -181,4 +161,4 @@ Dataset breakup_dataset(const impact::BreakupResult& r) {
   return d;
 }
 
-}  // namespace agglo::io
+}  // namespace agglo::writers

@@ -1,0 +1,188 @@
+#include "agglo/writers/acoustic.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "agglo/io/dataset_scalars.hpp"
+
+namespace agglo::writers {
+
+using io::ints_of;
+using io::reals_of;
+
+namespace {
+constexpr double kPerCm3 = 1e-6;  // 1/m^3 -> 1/cm^3
+using acoustics::AcousticObservations;
+
+nlohmann::json stats_json(const acoustics::CollisionStats& s, acoustics::Selection sel) {
+  if (sel == acoustics::Selection::binned)
+    return {{"particle_steps", s.particle_steps},
+            {"candidates", s.trials},
+            {"kernel_evals", s.kernel_evals},
+            {"collisions", s.collisions},
+            {"coalescences", {{"droplet", s.coalescences[0]}, {"dry", s.coalescences[1]}, {"wet", s.coalescences[2]}}},
+            {"rebounds", {{"droplet", s.rebounds[0]}, {"dry", s.rebounds[1]}, {"wet", s.rebounds[2]}}},
+            {"full_row_rate_computations", s.row_rate_updates},
+            {"max_beta_over_majorant", s.max_pn},
+            {"violations", s.violations},
+            {"cell_steps_subdivided", s.subcycled},
+            {"max_substeps", s.max_subcycles},
+            {"refills", s.refills},
+            {"dead_samples", s.dead},
+            {"energy_lost_J", s.energy_lost},
+            {"energy_returned_J", s.energy_returned}};
+  return {{"particle_steps", s.particle_steps},
+          {"trials", s.trials},
+          {"kernel_evals", s.kernel_evals},
+          {"collisions", s.collisions},
+          {"coalescences", {{"droplet", s.coalescences[0]}, {"dry", s.coalescences[1]}, {"wet", s.coalescences[2]}}},
+          {"rebounds", {{"droplet", s.rebounds[0]}, {"dry", s.rebounds[1]}, {"wet", s.rebounds[2]}}},
+          {"max_bound_pn", s.max_bound_pn},
+          {"subcycled_particle_steps", s.subcycled},
+          {"max_subcycles", s.max_subcycles},
+          {"max_pn_evaluated", s.max_pn},
+          {"violations", s.violations},
+          {"refills", s.refills},
+          {"dead_samples", s.dead},
+          {"energy_lost_J", s.energy_lost},
+          {"energy_returned_J", s.energy_returned}};
+}
+
+// psd.csv's bins: lower and upper edges and centres (geometric mean of the edges) [m].
+struct Bins {
+  std::vector<double> lo, hi, mid;
+};
+Bins bins_of(const std::vector<double>& e) {
+  Bins b;
+  for (std::size_t k = 0; k + 1 < e.size(); ++k) {
+    b.lo.push_back(e[k]);
+    b.hi.push_back(e[k + 1]);
+    b.mid.push_back(std::sqrt(e[k] * e[k + 1]));
+  }
+  return b;
+}
+
+io::Table efficiency_table(const AcousticObservations& o) {
+  using R = acoustics::EfficiencyRow;
+  const auto& e = o.efficiency;
+  io::Table t("efficiency.csv", {{"time", e.size()}}, "{:.8g}");
+  t.real("time", "s", "simulated time (efficiency.csv t_s)", reals_of(e, [](const R& r) { return r.t; })).header({"t_s"});
+  t.real("n_total_cm3", "cm-3", "number concentration, all particles",
+         reals_of(e, [](const R& r) { return r.counts.n_total * kPerCm3; }));
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::string phase = acoustics::phase_name(static_cast<acoustics::Phase>(k));
+    t.real("n_" + phase + "_cm3", "cm-3", "number concentration, " + phase,
+           reals_of(e, [k](const R& r) { return r.counts.n_phase[k] * kPerCm3; }));
+  }
+  t.real("fine_efficiency", "1", "agglomeration efficiency of the fine particles",
+         reals_of(e, [](const R& r) { return r.fine_efficiency; }));
+  t.real("pure_droplet_fraction", "1", "fraction of droplets still free of solid",
+         reals_of(e, [](const R& r) { return r.pure_droplet_fraction; }));
+  t.real("solid_volume_fraction", "1", "solid volume per box volume",
+         reals_of(e, [](const R& r) { return r.counts.solid_volume; }))
+      .with_format("{:.17g}");
+  t.real("liquid_volume_fraction", "1", "liquid volume per box volume",
+         reals_of(e, [](const R& r) { return r.counts.liquid_volume; }))
+      .with_format("{:.17g}");
+  t.integer("collisions", "1", "collisions so far", ints_of(e, [](const R& r) { return r.collisions; }));
+  t.integer("subcycled_particle_steps", "1", "subcycled particle steps so far",
+            ints_of(e, [](const R& r) { return r.subcycled; }));
+  return t;
+}
+
+io::Table psd_table(const AcousticObservations& o) {
+  const auto& e = o.bins.edges;
+  const Bins b = bins_of(e);
+  io::Table t("psd.csv", {{"psd_time", o.psd.size()}, {"diameter", b.mid.size()}}, "{:.6g}");
+  t.add_dim("diameter_edge", e.size());
+  t.real("psd_time", "s", "time of the size distribution", reals_of(o.psd, [](const auto& r) { return r.t; }))
+      .over({"psd_time"})
+      .header({"t_s"})
+      .with_format("{:.8g}");
+  t.real("d_lo_m", "m", "lower bin edge", b.lo).over({"diameter"});
+  t.real("d_hi_m", "m", "upper bin edge", b.hi).over({"diameter"});
+  t.real("diameter", "m", "bin centre diameter (geometric mean of the edges, psd.csv d_mid_m)", b.mid)
+      .over({"diameter"})
+      .header({"d_mid_m"});
+  t.real("diameter_edge", "m", "bin edge diameters", e).over({"diameter_edge"}).header({});
+  const char* names[4] = {"solid", "liquid", "mixed", "total"};
+  for (std::size_t p = 0; p < 4; ++p) {
+    std::vector<double> v;
+    for (const auto& rec : o.psd)
+      for (std::size_t k = 0; k < b.mid.size(); ++k) v.push_back(rec.dndlogd[p][k] * kPerCm3);
+    t.real(std::string(names[p]) + "_dNdlogd_cm3", "cm-3", std::string("size distribution dN/dlog10(d), ") + names[p],
+           v);
+  }
+  return t;
+}
+
+io::Table snapshot_table(const AcousticObservations& o) {
+  using S = acoustics::SnapshotRow;
+  const auto& s = o.snapshots;
+  io::Table t("snapshots.csv", {{"snapshot_row", s.size()}}, "{:.8g}");
+  t.real("snapshot_time", "s", "time of the snapshot (snapshots.csv t_s)", reals_of(s, [](const S& r) { return r.t; }))
+      .header({"t_s"});
+  t.integer("id", "1", "sample id", ints_of(s, [](const S& r) { return r.id; }));
+  t.real("x_m", "m", "sample position x", reals_of(s, [](const S& r) { return r.x; }));
+  t.real("y_m", "m", "sample position y", reals_of(s, [](const S& r) { return r.y; }));
+  t.real("z_m", "m", "sample position z", reals_of(s, [](const S& r) { return r.z; }));
+  t.real("d_m", "m", "sample diameter", reals_of(s, [](const S& r) { return r.d; })).with_format("{:.6g}");
+  t.real("solid_volume_m3", "m3", "solid volume of the particle", reals_of(s, [](const S& r) { return r.vol_s; }))
+      .with_format("{:.6g}");
+  t.real("liquid_volume_m3", "m3", "liquid volume of the particle", reals_of(s, [](const S& r) { return r.vol_l; }))
+      .with_format("{:.6g}");
+  t.real("weight", "1", "statistical weight (particles per sample)", reals_of(s, [](const S& r) { return r.w; }))
+      .with_format("{:g}");
+  std::vector<std::string> phases;
+  for (int k = 0; k < 3; ++k) phases.emplace_back(acoustics::phase_name(static_cast<acoustics::Phase>(k)));
+  t.flag("phase", "phase of the particle", phases, ints_of(s, [](const S& r) { return static_cast<int>(r.phase); }));
+  return t;
+}
+
+double rel_change(double a, double b) { return a > 0 ? b / a - 1 : 0.0; }
+}  // namespace
+
+nlohmann::json acoustic_summary(const AcousticObservations& o) {
+  const auto& last = o.efficiency.back();
+  const auto &c0 = o.initial, &c1 = o.final;
+  return {{"fine_efficiency", last.fine_efficiency},
+          {"pure_droplet_fraction", last.pure_droplet_fraction},
+          {"last_time_with_pure_droplets_s", o.last_time_with_pure_droplets},
+          {"n_solid_initial_cm3", c0.n_phase[0] * kPerCm3},
+          {"n_solid_final_cm3", c1.n_phase[0] * kPerCm3},
+          {"n_total_initial_cm3", c0.n_total * kPerCm3},
+          {"n_total_final_cm3", c1.n_total * kPerCm3},
+          {"samples", o.samples},
+          {"steps", o.steps},
+          {"u_amp_m_s", o.u_amp},
+          {"solid_volume_rel_change", rel_change(c0.solid_volume, c1.solid_volume)},
+          {"liquid_volume_rel_change", rel_change(c0.liquid_volume, c1.liquid_volume)},
+          {o.selection == acoustics::Selection::binned ? "binned" : "nanbu", stats_json(o.stats, o.selection)},
+          {"wall_time_s", o.wall_time_s}};
+}
+
+std::vector<io::Table> acoustic_tables(const AcousticObservations& o) {
+  std::vector<io::Table> t;
+  t.push_back(efficiency_table(o));
+  t.push_back(psd_table(o));
+  t.push_back(snapshot_table(o));
+  return t;
+}
+
+void write_acoustic(const OutputDir& out, const AcousticObservations& o, bool tables) {
+  if (tables)
+    for (const auto& t : acoustic_tables(o)) io::write_csv(out, t);
+  out.write_text("run.log", o.log);
+  if (tables) out.write_json("summary.json", acoustic_summary(o));
+}
+
+io::Dataset acoustic_dataset(const AcousticObservations& o) {
+  io::Dataset d;
+  for (const auto& t : acoustic_tables(o)) t.add_to(d);
+  if (!o.efficiency.empty()) io::add_scalars(d, acoustic_summary(o));  // the series' last values are already there
+  return d;
+}
+
+}  // namespace agglo::writers
