@@ -1,4 +1,4 @@
-// Contact sub-models by name: the per-category names, the mapping of the config fields to names, the
+// Contact sub-models by name: the per-category names, the defaults and the declared compatibility, the
 // errors for unknown names, and a model added from this file with one registration line that is then
 // selectable by name and used (docs/contributing.md).
 #include <gtest/gtest.h>
