@@ -4,9 +4,10 @@
 Usage: check_config_keys.py AGGLO_EXECUTABLE SOURCE_DIR
 
 1. Every key printed by `agglo config --list` must appear as a C++ string literal exactly once in
-   src/ (its declaration in src/agglo/core/settings_*.hpp). A key whose name is also a quoted value
-   in the listing (the top-level key "seed" and the contact model "seed") cannot be told apart
-   from that value: it must appear at least once.
+   src/ (its declaration in src/agglo/core/settings_*.hpp, or in the tables the engines declare beside
+   the models they name: src/agglo/dem/contact/settings.*, src/agglo/acoustics/kernels/keys.*). A key
+   whose name is also a quoted value in the listing (the top-level key "seed" and the deprecated contact
+   model name "seed") cannot be told apart from that value: it must appear at least once.
 2. No string literal in src/ or apps/ outside the settings tables may contain a dotted key
    ("time.motion_dt" in a message, "projectile.speed=..." in an override): messages name keys
    through the setting objects (Setting::dotted()).
@@ -24,7 +25,7 @@ import sys
 
 LITERAL = re.compile(r'"((?:[^"\\\n]|\\.)*)"')
 READER_CALL = re.compile(r'\.(number|integer|boolean|string|choice|numbers|vec3|section|tables|has)\(\s*"')
-TABLES = re.compile(r"src/agglo/core/settings_[a-z]+\.hpp$")
+TABLES = re.compile(r"src/agglo/(core/settings_[a-z]+\.hpp|dem/contact/settings\.[ch]pp|acoustics/kernels/keys\.[ch]pp)$")
 
 
 def listed_keys(agglo):

@@ -50,8 +50,8 @@ agglo::cli::Registration reg([](CLI::App& app) {
   sub->add_option("-v,--values", a->values, "Comma-separated values for the matching --param, e.g. 10e-6,20e-6")
       ->required()
       ->take_all();
-  sub->add_option("-c,--command", a->command, "Command run for each case (collide, vcrit, breakup, electrostatics, "
-                                              "acoustic)")
+  sub->add_option("-c,--command", a->command,
+                  fmt::format("Command run for each case ({})", fmt::join(agglo::run::command_names(), ", ")))
       ->capture_default_str();
   sub->add_option("--seeds", a->seeds,
                   "Run every point with N seeds (derived from the case's seed and the member index; member 0 is "

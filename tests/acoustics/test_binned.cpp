@@ -242,7 +242,7 @@ TEST(Binned, ThreadCountDoesNotChangeARun) {
 // Every mechanism's bound over two groups dominates its kernel for every pair of the groups. The groups are
 // the even and odd samples of a run that has moved for a while (velocities spread by the wave).
 TEST(Binned, GroupPairBoundsDominateEveryMechanism) {
-  const char* kernels[] = {"", "brownian_form = \"fuchs\"", "model = \"brownian_fuchs\"", "model = \"brownian_partmc\"",
+  const char* kernels[] = {"", "brownian = \"brownian_fuchs\"", "model = \"brownian_fuchs\"", "model = \"brownian_partmc\"",
                            "model = \"additive\"\nadditive_coefficient = 1000.0",
                            "model = \"constant\"\nconstant_coefficient = 1e-12"};
   for (const char* k : kernels) {

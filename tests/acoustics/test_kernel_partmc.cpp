@@ -60,7 +60,7 @@ TEST(KernelPartmc, MechanismSelectedByNameAndBounded) {
   const Gas gas = Gas::air(298.0, 101325.0, false);
   const Sound snd = Sound::make(gas, false, 140.0, 2000.0);
   KernelSettings ks;
-  ks.model = kernel_model_from_name("brownian_partmc");
+  ks.model = "brownian_partmc";
   EXPECT_EQ(mechanism_names(ks), std::vector<std::string>{"brownian_partmc"});
   const Kernel K(ks, gas, snd);
   ASSERT_TRUE(K.needs_thermal_speed());

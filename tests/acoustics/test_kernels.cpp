@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "agglo/acoustics/kernels.hpp"
+#include "agglo/acoustics/kernels/keys.hpp"
 #include "agglo/acoustics/nanbu.hpp"
+#include "agglo/core/config.hpp"
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
 
@@ -52,12 +54,13 @@ TEST(Kernels, CellBoundIsAMajorant) {
   const Sound snd = Sound::make(gas, true, 140.0, 2000.0);
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(0, 1);
-  for (KernelModel m : {KernelModel::acoustic, KernelModel::additive, KernelModel::brownian_fuchs}) {
+  for (const std::string& m : kernel_model_names()) {
     KernelSettings ks;
     ks.model = m;
     ks.additive_coefficient = 1.0;
-    for (auto form : {BrownianForm::continuum_slip, BrownianForm::fuchs}) {
-      ks.brownian_form = form;
+    ks.constant_coefficient = 1e-12;
+    for (const std::string& brownian : brownian_term_names()) {
+      ks.brownian = brownian;
       Kernel K(ks, gas, snd);
       SampleSet p;
       for (int i = 0; i < 60; ++i) {
@@ -81,7 +84,7 @@ TEST(Kernels, CellBoundIsAMajorant) {
           if (i == j) continue;
           const double r = std::sqrt(std::pow(p.x[i] - p.x[j], 2) + std::pow(p.y[i] - p.y[j], 2) +
                                      std::pow(p.z[i] - p.z[j], 2));
-          ASSERT_LE(K.beta(p, i, j, r), bi * (1 + 1e-12)) << "model " << kernel_model_name(m) << " pair " << i << "," << j;
+          ASSERT_LE(K.beta(p, i, j, r), bi * (1 + 1e-12)) << "model " << m << " brownian " << brownian << " pair " << i << "," << j;
         }
       }
     }
@@ -101,12 +104,21 @@ TEST(Kernels, MechanismsAreSelectedByNameInSummationOrder) {
   EXPECT_EQ(on[2], "brownian");
   EXPECT_TRUE(K.needs_distance());
   EXPECT_FALSE(K.needs_thermal_speed());
-  ks.model = KernelModel::additive;
+  ks.model = "additive";
   const Kernel A(ks, gas, snd);
   ASSERT_EQ(A.mechanisms().size(), 1u);
   EXPECT_EQ(A.mechanisms()[0], "additive");
   EXPECT_TRUE(A.needs_volume());
   EXPECT_FALSE(A.needs_distance());
+  ks.model = "acoustic";
+  ks.brownian = "brownian_fuchs";  // the Fuchs form as the acoustic sum's Brownian term, in its place
+  const Kernel F(ks, gas, snd);
+  EXPECT_EQ(F.mechanisms().back(), "brownian_fuchs");
+  EXPECT_TRUE(F.needs_thermal_speed());
+  // The names each key accepts are those the mechanisms declare.
+  EXPECT_EQ(kernel_model_names(),
+            (std::vector<std::string>{"acoustic", "brownian_fuchs", "constant", "additive", "brownian_partmc"}));
+  EXPECT_EQ(brownian_term_names(), (std::vector<std::string>{"none", "brownian", "brownian_fuchs"}));
   // Every name mechanism_names() can produce is registered, and an unknown one is refused.
   EXPECT_THROW(KernelMechanisms({"orthokinetic", "no_such_mechanism"}, ks, gas, snd), agglo::ConfigError);
 }
@@ -133,4 +145,24 @@ TEST(Kernels, SumOfMechanismsInOrder) {
                                     p.slip_l[1], p.cphi[0] * p.cphi[1] + p.sphi[0] * p.sphi[1]);
   expect += beta_brownian_slip(gas, p.d[0], p.d[1], p.cc[0], p.cc[1]);
   EXPECT_EQ(K.beta(p, 0, 1, r), expect);
+}
+
+// [kernels] of a case: names as the mechanisms declare them, the former boolean kernels.brownian, and
+// the deprecated kernels.brownian_form ("fuchs" = the brownian_fuchs term) with one warning.
+TEST(Kernels, KeysReadNamesAndFormerSpellings) {
+  auto read = [](agglo::Config& cfg) { return read_kernels(kernel_keys().t.open(cfg.root())); };
+  auto cfg = agglo::Config::from_string("[kernels]\nbrownian = false\n", "case.toml");
+  EXPECT_EQ(read(cfg).brownian, "none");
+  EXPECT_EQ(mechanism_names(read(cfg)), (std::vector<std::string>{"orthokinetic", "acoustic_wake", "radiation_pressure"}));
+  cfg = agglo::Config::from_string("[kernels]\nbrownian_form = \"fuchs\"\n", "case.toml");
+  EXPECT_EQ(read(cfg).brownian, "brownian_fuchs");
+  const auto warnings = cfg.take_warnings();
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("case.toml: key 'kernels.brownian_form' = \"fuchs\": deprecated"), std::string::npos)
+      << warnings[0];
+  cfg = agglo::Config::from_string("[kernels]\nbrownian = \"brownian_fuchs\"\n", "case.toml");
+  EXPECT_EQ(read(cfg).brownian, "brownian_fuchs");
+  EXPECT_TRUE(cfg.take_warnings().empty());
+  cfg = agglo::Config::from_string("[kernels]\nmodel = \"orthokinetic\"\n", "case.toml");  // not standalone
+  EXPECT_THROW(read(cfg), agglo::ConfigError);
 }

@@ -1,4 +1,4 @@
-// Sampling over cells at t = 0 ([sampling], sampling.hpp; docs/model.md §C.4): stratified placement
+// Sampling over cells at t = 0 ([sampling], initial_placement.hpp; docs/model.md §C.4): stratified placement
 // gives every cell floor(N/C) or ceil(N/C) samples of every population; cloning splits a population
 // with too few samples per cell into clones whose integer weights add up to the original weights
 // exactly and which carry the original per-particle state, so number, volume, mass and momentum are
@@ -14,7 +14,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "agglo/acoustics/sampling.hpp"
+#include "agglo/acoustics/initial_placement.hpp"
 #include "helpers.hpp"
 
 using namespace agglo::acoustics;

@@ -43,7 +43,7 @@ TEST(Config, UnknownKey) {
 
 TEST(Config, WrongType) {
   expect_has(error_of("[agglomerate]\nradius = \"big\"\n"), {"case.toml", "agglomerate.radius", "\"big\"", "number"});
-  expect_has(error_of("[contact]\nrolling = 1\n"), {"contact.rolling", "true or false"});
+  expect_has(error_of("[contact]\nrolling = 1\n"), {"contact.rolling", "expected one of \"marshall\", \"none\""});
   expect_has(error_of("material = 3\n"), {"'material'", "table"});
 }
 
@@ -55,6 +55,31 @@ TEST(Config, OutOfRangeAndNonFinite) {
   expect_has(error_of("[material]\ndensity = inf\n"), {"material.density", "inf", "finite"});
   expect_has(error_of("[contact]\nbreak_rule = \"sometimes\"\n"), {"contact.break_rule", "\"marshall\", \"lammps\""});
   expect_has(error_of("[vcrit]\nv_min = 0.5\nv_max = 0.1\n"), {"vcrit.v_max", "0.1"});
+}
+
+// The contact sub-models by name: the former booleans still read (true/false = the Marshall springs
+// or alpha damping / none), the deprecated "seed" reads as "ruan_li" with one warning, and a rolling
+// spring without a sliding spring is rejected on its key, as the rolling model declares.
+TEST(Config, ContactModelsByName) {
+  auto cfg = Config::from_string(
+      "[contact]\ntangential = \"marshall\"\nrolling = true\ntwisting = false\ndamping = false\n", "case.toml");
+  auto m = impact::parse_impact_case(cfg).dem.contact.models;
+  EXPECT_EQ(m.tangential, "marshall");
+  EXPECT_EQ(m.rolling, "marshall");
+  EXPECT_EQ(m.twisting, "none");
+  EXPECT_EQ(m.damping, "none");
+  EXPECT_TRUE(cfg.take_warnings().empty());
+  cfg = Config::from_string("[contact]\ntangential = \"seed\"\n", "case.toml");
+  m = impact::parse_impact_case(cfg).dem.contact.models;
+  EXPECT_EQ(m.tangential, "ruan_li");
+  EXPECT_EQ(m.damping, "alpha");
+  const auto warnings = cfg.take_warnings();
+  ASSERT_EQ(warnings.size(), 1u);
+  expect_has(warnings[0], {"case.toml", "contact.tangential", "\"seed\"", "deprecated", "\"ruan_li\""});
+  expect_has(error_of("[contact]\nrolling = \"marshall\"\n"),
+             {"contact.rolling", "needs a tangential model with a sliding spring (\"marshall\")", "\"ruan_li\""});
+  expect_has(error_of("[contact]\ntwisting = true\n"), {"contact.twisting", "sliding spring"});
+  expect_has(error_of("[contact]\nrolling = \"velcro\"\n"), {"contact.rolling", "\"marshall\", \"none\""});
 }
 
 TEST(Config, MissingRequiredKey) {
@@ -71,7 +96,7 @@ TEST(Config, OverridesApplyAndAreValidated) {
   auto c = impact::parse_impact_case(cfg);
   cfg.check_unknown_keys();
   EXPECT_DOUBLE_EQ(c.dem.contact.restitution, 0.8);
-  EXPECT_EQ(c.dem.contact.tangential, dem::TangentialModel::marshall);
+  EXPECT_EQ(c.dem.contact.models.tangential, "marshall");
   expect_has(error_of("", {"material.restitution=2"}), {"material.restitution", "2", "(0, 1]"});
   expect_has(error_of("", {"material.nope=2"}), {"material.nope", "unknown"});
   EXPECT_THROW(Config::from_string("").apply_override("novalue"), ConfigError);

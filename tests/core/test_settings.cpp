@@ -2,6 +2,7 @@
 // the resolved config and the --list / --markdown listings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -10,6 +11,7 @@
 #include "agglo/core/settings_catalogue.hpp"
 #include "agglo/core/settings_impact.hpp"
 #include "agglo/impact/impact_case.hpp"
+#include "agglo/run/commands.hpp"
 
 using namespace agglo;
 using namespace agglo::settings;
@@ -142,6 +144,26 @@ TEST(Settings, CatalogueKeysAreUniqueAndInTheirSection) {
       EXPECT_FALSE(s->info().meaning.empty()) << key;
     }
   EXPECT_GT(seen.size(), 100u);
+}
+
+// [contact] and [kernels] are declared beside the models they name and join the catalogue after
+// [material] and [domain]; their allowed values are the registered names, the former spellings noted.
+TEST(Settings, EngineTablesJoinTheCatalogue) {
+  (void)agglo::run::all_commands();  // builds the tables the engines declare
+  std::vector<std::string> names;
+  for (const auto* t : all_tables()) names.emplace_back(t->name());
+  const auto at = [&](const std::string& n) { return std::find(names.begin(), names.end(), n) - names.begin(); };
+  EXPECT_EQ(at("contact"), at("material") + 1);
+  EXPECT_EQ(at("kernels"), at("domain") + 1);
+  const std::string contact = list_text("contact");
+  EXPECT_NE(contact.find("\"marshall\", \"ruan_li\" (\"seed\": deprecated name of \"ruan_li\")"), std::string::npos)
+      << contact;
+  EXPECT_NE(contact.find("\"marshall\", \"none\" (also true = \"marshall\", false = \"none\")"), std::string::npos)
+      << contact;
+  const std::string kernels = list_text("kernels");
+  EXPECT_NE(kernels.find("\"acoustic\", \"brownian_fuchs\", \"constant\", \"additive\", \"brownian_partmc\""),
+            std::string::npos)
+      << kernels;
 }
 
 TEST(Settings, ListOneSection) {

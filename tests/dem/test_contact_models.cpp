@@ -1,5 +1,5 @@
 // Each contact sub-model alone against its formula (docs/model.md §A.2): the JKR normal model's break
-// rules, the alpha(e) damping (and that it dissipates energy), the seed friction's two regimes, the
+// rules, the alpha(e) damping (and that it dissipates energy), the Ruan & Li friction's two regimes, the
 // Marshall sliding spring and its Coulomb cap, the twisting spring and its cap, the rolling spring and
 // its moment threshold.
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 #include "agglo/dem/contact/marshall_rolling.hpp"
 #include "agglo/dem/contact/marshall_sliding.hpp"
 #include "agglo/dem/contact/marshall_twisting.hpp"
-#include "agglo/dem/contact/seed_friction.hpp"
+#include "agglo/dem/contact/ruan_li_friction.hpp"
 #include "agglo/dem/contact/tangent_plane.hpp"
 #include "agglo/dem/dem_system.hpp"
 
@@ -70,7 +70,7 @@ TEST(ContactModels, CoefficientsAreChecked) {
   EXPECT_THROW(AlphaDamping bad(p), ConfigError);
   p = params();
   p.friction = -0.1;
-  EXPECT_THROW(SeedFriction bad(p), ConfigError);
+  EXPECT_THROW(RuanLiFriction bad(p), ConfigError);
   EXPECT_THROW(MarshallSliding bad(p), ConfigError);
   EXPECT_THROW(MarshallTwisting bad(p), ConfigError);
   p = params();
@@ -134,10 +134,10 @@ TEST(ContactModels, AlphaDampingDecaysOscillation) {
   EXPECT_LT(late_peak_over_early_peak("alpha"), 0.1);
 }
 
-TEST(ContactModels, SeedFrictionRegimes) {
+TEST(ContactModels, RuanLiFrictionRegimes) {
   auto p = params();
   const auto jkr = pair_of(p);
-  const SeedFriction f(p);
+  const RuanLiFriction f(p);
   ContactPoint c = point_at_equilibrium(jkr);
   c.f_n = 2e-6;
   c.eta_n = 1e-4;

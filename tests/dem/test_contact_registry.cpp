@@ -1,4 +1,4 @@
-// Contact sub-models by name: the per-category names, the mapping of the config fields to names, the
+// Contact sub-models by name: the per-category names, the defaults and the declared compatibility, the
 // errors for unknown names, and a model added from this file with one registration line that is then
 // selectable by name and used (docs/contributing.md).
 #include <gtest/gtest.h>
@@ -53,28 +53,33 @@ TEST(ContactRegistry, NamesPerCategory) {
   EXPECT_TRUE(has(names(Category::normal), "jkr"));
   EXPECT_TRUE(has(names(Category::normal), "linear_spring"));
   EXPECT_EQ(names(Category::damping), (std::vector<std::string>{"alpha", "none"}));
-  EXPECT_EQ(names(Category::tangential), (std::vector<std::string>{"marshall", "seed"}));
+  EXPECT_EQ(names(Category::tangential), (std::vector<std::string>{"marshall", "ruan_li"}));
   EXPECT_EQ(names(Category::rolling), (std::vector<std::string>{"constant", "marshall", "none"}));
   EXPECT_EQ(names(Category::twisting), (std::vector<std::string>{"marshall", "none"}));
   EXPECT_THROW(register_model<ConstantRolling>(), std::logic_error);  // a name is registered once
 }
 
-TEST(ContactRegistry, ConfigFieldsNameTheModels) {
-  ContactParams p;
-  auto m = model_names(p);
+// The defaults are the models of DefaultModels; what a model declares decides what it combines with.
+TEST(ContactRegistry, DefaultsAndDeclaredCompatibility) {
+  const ModelNames m;
   EXPECT_EQ(m.normal, "jkr");
   EXPECT_EQ(m.damping, "alpha");
-  EXPECT_EQ(m.tangential, "seed");
+  EXPECT_EQ(m.tangential, "ruan_li");
   EXPECT_EQ(m.rolling, "none");
   EXPECT_EQ(m.twisting, "none");
-  p.tangential = TangentialModel::marshall;
-  p.rolling = p.twisting = true;
-  p.damping = false;
-  m = model_names(p);
-  EXPECT_EQ(m[Category::damping], "none");
-  EXPECT_EQ(m[Category::tangential], "marshall");
-  EXPECT_EQ(m[Category::rolling], "marshall");
-  EXPECT_EQ(m[Category::twisting], "marshall");
+  EXPECT_EQ(ContactParams{}.models[Category::tangential], "ruan_li");
+  ModelNames springs;
+  springs.rolling = "marshall";
+  ASSERT_TRUE(conflict(springs));
+  EXPECT_EQ(conflict(springs)->category, Category::rolling);
+  EXPECT_THROW(ContactLaw(ContactParams{}, springs), ConfigError);
+  springs.tangential = "marshall";
+  springs.twisting = "marshall";
+  EXPECT_FALSE(conflict(springs));
+  springs.rolling = "constant";  // registered here; declares no need
+  springs.tangential = "ruan_li";
+  springs.twisting = "none";
+  EXPECT_FALSE(conflict(springs));
 }
 
 TEST(ContactRegistry, UnknownNamesAndUncombinableModels) {
@@ -87,7 +92,7 @@ TEST(ContactRegistry, UnknownNamesAndUncombinableModels) {
     const std::string what = e.what();
     EXPECT_NE(what.find("tangential"), std::string::npos) << what;
     EXPECT_NE(what.find("\"velcro\""), std::string::npos) << what;
-    EXPECT_NE(what.find("\"marshall\", \"seed\""), std::string::npos) << what;
+    EXPECT_NE(what.find("\"marshall\", \"ruan_li\""), std::string::npos) << what;
   }
   m = ModelNames{};
   m.normal = "linear_spring";
@@ -133,7 +138,7 @@ TEST(ContactRegistry, RegisteredRollingModelIsUsed) {
   ContactState s;
   const PairForce f = law.evaluate_pair(jkr, k, s, 1e-9);
   ASSERT_TRUE(s.active);
-  // The spin also makes the contact slide (seed friction, lever torque along z): subtract the same
+  // The spin also makes the contact slide (Ruan & Li friction, lever torque along z): subtract the same
   // evaluation without rolling resistance.
   ContactState s_base;
   const PairForce base = ContactLaw(p).evaluate_pair(jkr, k, s_base, 1e-9);

@@ -10,6 +10,7 @@
 
 #include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/experiment.hpp"
+#include "agglo/dem/contact/builtin_models.hpp"
 #include "agglo/dem/dem_system.hpp"
 
 using namespace agglo;
@@ -27,7 +28,7 @@ DemParams params_for(const Material& m, double e, bool damping) {
   p.contact.poisson_ratio = m.nu;
   p.contact.surface_energy = m.gamma;
   p.contact.restitution = e;
-  p.contact.damping = damping;
+  p.contact.models.damping = damping ? contact::AlphaDamping::name : contact::NoDamping::name;
   p.contact.friction = 0.0;
   p.steps_per_period = 1600;  // resolve the contact well: the reference values are for the continuous ODE
   return p;
@@ -108,17 +109,21 @@ TEST(DemDynamics, PairAtEquilibriumStaysAtRest) {
   }
 }
 
-impact::ImpactCase tetra_case(dem::TangentialModel tm) {
+// Ruan & Li friction alone, or Marshall's sliding, rolling and twisting springs together.
+impact::ImpactCase tetra_case(bool marshall) {
   impact::ImpactCase c;
-  c.dem.contact.tangential = tm;
-  c.dem.contact.rolling = c.dem.contact.twisting = (tm == dem::TangentialModel::marshall);
+  if (marshall) {
+    c.dem.contact.models.tangential = contact::MarshallSliding::name;
+    c.dem.contact.models.rolling = contact::MarshallRolling::name;
+    c.dem.contact.models.twisting = contact::MarshallTwisting::name;
+  }
   return c;
 }
 
 // Momentum and angular momentum are conserved to round-off in an isolated, violent run with
 // friction and rotation (the projectile hits off-centre, so everything spins).
-void check_conservation(dem::TangentialModel tm) {
-  auto c = tetra_case(tm);
+void check_conservation(bool marshall) {
+  auto c = tetra_case(marshall);
   c.projectile.offset_radii = 0.7;
   auto p = impact::build_agglomerate(c);
   impact::add_projectile(p, c, 0.5);
@@ -139,8 +144,8 @@ void check_conservation(dem::TangentialModel tm) {
   EXPECT_LT(norm(dL) / lscale, 1e-12);
 }
 
-TEST(DemDynamics, ConservationSeedFriction) { check_conservation(dem::TangentialModel::seed); }
-TEST(DemDynamics, ConservationMarshallFull) { check_conservation(dem::TangentialModel::marshall); }
+TEST(DemDynamics, ConservationRuanLiFriction) { check_conservation(false); }
+TEST(DemDynamics, ConservationMarshallFull) { check_conservation(true); }
 
 TEST(DemDynamics, BreakRules) {
   // Pull a bonded pair apart slowly and record the overlap at which the contact breaks.

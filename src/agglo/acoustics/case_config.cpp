@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "agglo/acoustics/kernels/keys.hpp"
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_acoustic.hpp"
@@ -211,20 +212,10 @@ void parse_sampling(const ConfigSection& root, AcousticCase& c) {
 }
 
 void parse_kernels(const ConfigSection& root, EngineSettings& e) {
-  const auto& k = keys().kernels;
+  const auto& k = kernel_keys();
   ConfigSection s = k.t.open(root);
-  KernelSettings& ks = e.kernel;
-  ks.model = kernel_model_from_name(k.model.read(s));
-  ks.orthokinetic = k.orthokinetic.read(s);
-  ks.acoustic_wake = k.acoustic_wake.read(s);
-  ks.radiation_pressure = k.radiation_pressure.read(s);
-  ks.brownian = k.brownian.read(s);
-  ks.brownian_form = k.brownian_form.read(s) == "fuchs" ? BrownianForm::fuchs : BrownianForm::continuum_slip;
+  e.kernel = read_kernels(s);
   e.motion.inertia_correction = k.inertia_correction.read(s);
-  ks.collision_efficiency = k.collision_efficiency.read(s);
-  ks.exclude_same_population = k.exclude_same_population.read(s);
-  if (ks.model == KernelModel::constant) ks.constant_coefficient = k.constant_coefficient.read(s);
-  if (ks.model == KernelModel::additive) ks.additive_coefficient = k.additive_coefficient.read(s);
 }
 
 void parse_outcomes(const ConfigSection& root, OutcomeParams& oc) {

@@ -5,7 +5,7 @@
 // The contact normal of a rebound is drawn for a hard-sphere encounter (uniform impact parameter
 // over the collision disk). Samples whose weight drops to 0 are refilled by splitting the heaviest
 // sample of the cell (decision), and split-merge energy debts are given back at later rebounds
-// (seed eq. 30). Every sample whose state changed is listed in touched() until clear_touched().
+// (Zhao et al. 2023, eq. 30). Every sample whose state changed is listed in touched() until clear_touched().
 #include <cstdint>
 #include <vector>
 

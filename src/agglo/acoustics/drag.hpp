@@ -1,5 +1,5 @@
 #pragma once
-// Particle motion in the sound field (docs/model.md §C.2; seed eqs. 3-5):
+// Particle motion in the sound field (docs/model.md §C.2; Zhao et al. 2023, eqs. 3-5):
 //   m dv/dt = 3 pi mu_g d (u_g - v) C_I / C_c + (rho - rho_g) pi d^3 g / 6
 // i.e. dv/dt = (u_g - v)/tau_e + a,  tau_e = tau / C_I,  a = -g (rho - rho_g)/rho e_z.
 // Integrators over a step h:
@@ -7,7 +7,7 @@
 //    sinusoidal forcing is then solved in closed form (velocity and position), so h may be much
 //    larger than tau (default). Where C_I - 1 > 1e-3 (droplets) C_I is taken at the mid-step
 //    slip predicted with the start-of-step C_I (second order in h); elsewhere at the start.
-//  - explicit: the seed's explicit scheme (forward Euler for v, then x += h v_new); stable only
+//  - explicit: Zhao et al.'s explicit scheme (forward Euler for v, then x += h v_new); stable only
 //    for h < 2 tau_e (the engine checks this).
 //  - none: particles keep their positions and velocities (test kernels).
 #include <cstddef>

@@ -15,7 +15,7 @@
 #include "agglo/acoustics/outcomes.hpp"
 #include "agglo/acoustics/samples.hpp"
 #include "agglo/acoustics/populations.hpp"
-#include "agglo/acoustics/sampling.hpp"
+#include "agglo/acoustics/initial_placement.hpp"
 
 namespace agglo::acoustics {
 
@@ -26,7 +26,7 @@ struct EngineSettings {
   KernelSettings kernel;
   OutcomeParams outcomes;
   std::vector<PopulationSpec> populations;
-  SamplingSettings sampling;          // placement over the cells and cloning at t = 0 (sampling.hpp)
+  SamplingSettings sampling;          // placement over the cells and cloning at t = 0 (initial_placement.hpp)
   double t_end = 4.0;                 // [s]
   double collision_dt = 1e-5;         // dt_c [s]
   double motion_dt = 1e-5;            // [s]; collision_dt / motion_dt substeps per collision step

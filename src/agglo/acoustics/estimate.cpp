@@ -1,5 +1,5 @@
 #include "agglo/acoustics/estimate.hpp"
-#include "agglo/acoustics/sampling.hpp"
+#include "agglo/acoustics/initial_placement.hpp"
 
 #include <algorithm>
 #include <cmath>

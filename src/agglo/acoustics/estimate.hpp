@@ -1,5 +1,5 @@
 #pragma once
-// Cost of an acoustic DSMC run, estimated from the validated case before the samples are drawn
+// Cost estimate of an acoustic DSMC run, from the validated case before the samples are drawn
 // (core/estimate.hpp, docs/limits.md). With S = the sum of population.samples (constant during a
 // run: merged samples are refilled, never appended), n_c = round(time.end / time.collision_dt)
 // collision steps and m = collision_dt / motion_dt motion sub-steps (0 with integrator "none"):

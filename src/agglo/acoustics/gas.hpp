@@ -1,5 +1,5 @@
 #pragma once
-// Carrier gas (air) properties from temperature and pressure (docs/model.md §C.1; seed 002 section 2.1).
+// Carrier gas (air) properties from temperature and pressure (docs/model.md §C.1; Zhao et al. 2023, section 2.1).
 //   rho_g = P M / (R T)                          ideal gas                         [kg/m^3]
 //   c     = sqrt(1.4 R T / M)                    speed of sound                    [m/s]
 //   mu_g  = 1.716e-5 (T/273.15)^1.5 (273.15+110.4)/(T+110.4)   Sutherland          [Pa s]
@@ -53,9 +53,9 @@ struct Gas {
   static Gas air(double T, double P, bool gravity_on, std::optional<double> mu_override = std::nullopt,
                  std::optional<double> lambda_override = std::nullopt);
 
-  // Cunningham slip correction (seed eq. 5): C_c = 1 + Kn [1.257 + 0.400 exp(-1.100/Kn)], Kn = 2 lambda/d.
+  // Cunningham slip correction (Zhao et al. 2023, eq. 5): C_c = 1 + Kn [1.257 + 0.400 exp(-1.100/Kn)], Kn = 2 lambda/d.
   double slip_correction(double d) const;
-  // Inertia (Schiller-Naumann) correction (seed eq. 4): C_I = 1 + 0.15 Re^0.687.
+  // Inertia (Schiller-Naumann) correction (Zhao et al. 2023, eq. 4): C_I = 1 + 0.15 Re^0.687.
   static double inertia_correction(double reynolds);
   // Same with Re^0.687 = exp(0.687 ln Re) from short polynomials (ln m = 2 atanh((m-1)/(m+1)) on the
   // mantissa, exp by 2^n e^r with |r| <= ln2/2): relative error of C_I - 1 ~1e-12 (tested < 1e-6

@@ -1,5 +1,5 @@
 #pragma once
-// Weighted collision processing between two samples (docs/model.md §C.5; seed section 2.5).
+// Weighted collision processing between two samples (docs/model.md §C.5; Zhao et al. 2023, section 2.5).
 // Coalescence conserves volume, mass and momentum (eqs. 15-17); solid and liquid volumes add
 // separately. Weights (eqs. 18-21):
 //   w_i = w_j even -> both w/2, both merged;   w_i = w_j odd -> (w+1)/2 and (w-1)/2, both merged;

@@ -1,5 +1,5 @@
 #pragma once
-// Modified Nanbu collision step of one cell (docs/model.md §C.4; seed eqs. 6, 12; Tsuji et al. 1998).
+// Modified Nanbu collision step of one cell (docs/model.md §C.4; Zhao et al. 2023, eqs. 6, 12; Tsuji et al. 1998).
 // For each sample i of a cell with N live samples: R uniform in [0,1), candidate j = int(R N),
 // collide iff R > (j+1)/N - P_ij. This gives probability exactly P_ij per partner only while
 // P_ij <= 1/N.
@@ -7,7 +7,7 @@
 // weighted rules (eqs. 18-28), which consume min(w_i, w_j) real pairs per event, and the pair is
 // tested from both sides, so
 //     P_ij = beta_ij max(w_i, w_j) dt_c / (2 V_c)
-// makes the expected rate of real collisions beta_ij w_i w_j / V_c (the seed's literal
+// makes the expected rate of real collisions beta_ij w_i w_j / V_c (Zhao et al.'s literal
 // beta w_j dt/V_c counts equal-weight pairs twice).
 // Guard: before each trial, a majorant B_i >= beta_ij over the cell (CellBounds) gives
 // P_ij <= B_i w_max h / (2 V_c); the trial interval h of sample i is sub-cycled (h = dt_c / n_i)

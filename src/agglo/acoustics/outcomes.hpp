@@ -1,5 +1,5 @@
 #pragma once
-// Collision outcomes (docs/model.md §C.5; seed section 2.4, eqs. 13-14, 22-24).
+// Collision outcomes (docs/model.md §C.5; Zhao et al. 2023, section 2.4, eqs. 13-14, 22-24).
 //  - any pair with a pure droplet: coalescence;
 //  - solid-solid ("dry"): coalesce iff |G.n| <= v_cr,dry (Sgrott & Sommerfeld 2019, eq. 13)
 //      v_cr,dry = A sqrt(1-e^2) / (pi d_min z0^2 e^2 sqrt(6 p_c rho_min (1 + d_min/d_max)));
@@ -28,7 +28,7 @@ struct OutcomeParams {
   double liquid_viscosity = outcome_keys().liquid_viscosity.def(); // mu_l [Pa s]
   double film_ratio = outcome_keys().film_roughness_ratio.def();   // delta / h_a
   double solid_density = outcome_keys().solid_density.def();       // rho_s in eqs. 14, 24 [kg/m^3]
-  bool energy_compensation = outcome_keys().energy_compensation.def();  // seed eq. 30
+  bool energy_compensation = outcome_keys().energy_compensation.def();  // Zhao et al. 2023, eq. 30
 };
 
 double critical_velocity_dry(const OutcomeParams& o, double di, double dj, double rhoi, double rhoj);

@@ -6,19 +6,19 @@
 //    range so that sum w = N_tot V); diameters at stratified quantiles of the lognormal within the bin.
 //  - monodisperse (d), exponential in volume (n(v) = N0/v0 e^(-v/v0); stratified quantiles, equal
 //    weights), table (listed diameters with number fractions; equal samples per entry).
-// Weights are rounded to integers >= 1 (seed eqs. 18-21 act on integer weights): "nearest" rounds
+// Weights are rounded to integers >= 1 (Zhao et al. 2023, eqs. 18-21 act on integer weights): "nearest" rounds
 // each sample's real number (default; the total can be off by up to 0.5 per sample, e.g. -7.5 % for
 // 3200 samples of 5.41 droplets each), "conserving" rounds the running sum so that the weights add
 // up to N_tot V within 0.5 (samples then differ by one in weight).
 // The samples are then split into clones and placed over the cells as set by [sampling]
-// (sampling.hpp: stratified or uniform in the box; counter-based RNG keyed by population and sample).
+// (initial_placement.hpp: stratified or uniform in the box; counter-based RNG keyed by population and sample).
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "agglo/acoustics/drag.hpp"
 #include "agglo/acoustics/samples.hpp"
-#include "agglo/acoustics/sampling.hpp"
+#include "agglo/acoustics/initial_placement.hpp"
 #include "agglo/core/settings_acoustic.hpp"
 
 namespace agglo::acoustics {
@@ -51,7 +51,7 @@ struct PopulationSpec {
 struct SampledPopulation {
   std::size_t first = 0, count = 0;  // samples [first, first + count) of the SampleSet, clones included
   std::size_t requested = 0;         // population.samples (before cloning)
-  std::int64_t clone_factor = 1;     // k of sampling.hpp
+  std::int64_t clone_factor = 1;     // k of initial_placement.hpp
   double real_number = 0.0;    // N_tot V requested
   double weight_sum = 0.0;     // after integer rounding
 };

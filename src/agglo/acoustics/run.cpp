@@ -67,7 +67,7 @@ std::string parameters_log(const AcousticCase& c, const Engine& eng) {
   log += fmt::format("time: end={:g} s collision_dt={:g} s motion_dt={:g} s ({} motion sub-steps) integrator={} "
                      "kernel={}\n",
                      S.t_end, S.collision_dt, S.motion_dt, eng.motion_substeps(), integrator_name(M.integrator),
-                     kernel_model_name(S.kernel.model));
+                     S.kernel.model);
   return log;
 }
 
@@ -86,7 +86,7 @@ std::string step_warning(const EngineSettings& S) {
       S.motion_dt, per, 1.0 / (M.sound.frequency * std::max(2.0, even)));
 }
 
-// Samples per cell and clone factor of population k ([sampling], sampling.hpp).
+// Samples per cell and clone factor of population k ([sampling], initial_placement.hpp).
 std::string placement_log(std::size_t k, const SampledPopulation& sp, const EngineSettings& S) {
   const auto cells = static_cast<std::size_t>(S.motion.domain.num_cells());
   const bool strat = S.sampling.placement == Placement::stratified;

@@ -1,7 +1,7 @@
 #pragma once
 // Weighted samples of the DSMC (structure of arrays; DEM particles are dem/particles.hpp). Sample i
 // stands for w_i real particles (integer-valued weight stored as double) that share position,
-// velocity, solid volume, liquid volume and mass. Diameter and density follow from them (seed eqs. 15-16):
+// velocity, solid volume, liquid volume and mass. Diameter and density follow from them (Zhao et al. 2023, eqs. 15-16):
 //   d = (6 (V_s + V_l) / pi)^(1/3),  rho = m / (V_s + V_l).
 // Phase (docs/model.md §C.5): solid (V_l = 0), liquid (V_s = 0), mixed (both > 0).
 // Derived per-sample quantities used by motion and kernels are cached and refreshed by
@@ -24,8 +24,8 @@ struct SampleSet {
   std::vector<double> vol_s, vol_l;   // solid / liquid volume of one real particle [m^3]
   std::vector<double> mass;           // mass of one real particle [kg]
   std::vector<double> w;              // number weight (integer valued)
-  std::vector<double> debt;           // kinetic energy owed by split-merge (seed eq. 29) [J]
-  std::vector<double> debt_ref;       // w m of the particle that incurred the debt [kg] (seed eq. 30)
+  std::vector<double> debt;           // kinetic energy owed by split-merge (Zhao et al. 2023, eq. 29) [J]
+  std::vector<double> debt_ref;       // w m of the particle that incurred the debt [kg] (Zhao et al. 2023, eq. 30)
   std::vector<int> pop;               // population of origin (largest volume wins on merging)
   std::vector<std::uint64_t> id;      // stable id
   // Derived caches.

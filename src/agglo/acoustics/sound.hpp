@@ -1,5 +1,5 @@
 #pragma once
-// Plane travelling sound wave along x (docs/model.md §C.1; seed eqs. 1-2):
+// Plane travelling sound wave along x (docs/model.md §C.1; Zhao et al. 2023, eqs. 1-2):
 //   u_g(x, t) = u_amp sin(omega t - k x),  omega = 2 pi f,  k = omega / c,
 //   u_amp = sqrt(2) P_r 10^(L/20) / (c rho_g),  P_r = 2e-5 Pa.
 #include "agglo/acoustics/gas.hpp"

@@ -75,7 +75,10 @@ std::string Range::describe() const {
 }
 
 // ---------------------------------------------------------------------------------------------
-Config::Config() : tbl_(std::make_unique<toml::table>()), used_(std::make_unique<std::vector<std::string>>()) {}
+Config::Config()
+    : tbl_(std::make_unique<toml::table>()),
+      used_(std::make_unique<std::vector<std::string>>()),
+      warnings_(std::make_unique<std::vector<std::string>>()) {}
 Config::~Config() = default;
 Config::Config(Config&&) noexcept = default;
 Config& Config::operator=(Config&&) noexcept = default;
@@ -245,6 +248,27 @@ void ConfigSection::fail(std::string_view key, std::string_view what) const {
 void ConfigSection::fail_value(std::string_view key, std::string_view what) const {
   auto* n = lookup(key);
   throw ConfigError(fmt::format("{}: key '{}' = {}: {}", cfg_->file_, key_path(key), n ? repr(*n) : "<missing>", what));
+}
+
+void ConfigSection::warn(std::string_view key, std::string_view what) const {
+  auto* n = lookup(key);
+  std::string w = fmt::format("{}: key '{}' = {}: {}", cfg_->file_, key_path(key), n ? repr(*n) : "<missing>", what);
+  auto& all = *cfg_->warnings_;
+  if (std::find(all.begin(), all.end(), w) == all.end()) all.push_back(std::move(w));
+}
+
+std::optional<bool> ConfigSection::boolean_if_set(std::string_view key) const {
+  mark(key);
+  auto* n = lookup(key);
+  if (auto b = n ? n->as_boolean() : nullptr) return b->get();
+  return std::nullopt;
+}
+
+std::optional<std::string> ConfigSection::string_if_set(std::string_view key) const {
+  mark(key);
+  auto* n = lookup(key);
+  if (auto s = n ? n->as_string() : nullptr) return s->get();
+  return std::nullopt;
 }
 
 double ConfigSection::number(std::string_view key, std::optional<double> def, const Range& range) const {

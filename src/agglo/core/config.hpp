@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "agglo/core/vec3.hpp"
@@ -62,6 +63,9 @@ class ConfigSection {
   Vec3 vec3(std::string_view key, std::optional<Vec3> def, const Range& component_range) const;
   std::vector<double> numbers(std::string_view key, std::optional<std::vector<double>> def,
                               const Range& range) const;
+  // The value if it is set and has that type (the key counts as read), else nullopt.
+  std::optional<bool> boolean_if_set(std::string_view key) const;
+  std::optional<std::string> string_if_set(std::string_view key) const;
 
   // Sub-table (created if absent so defaults land in the resolved config).
   ConfigSection section(std::string_view key) const;
@@ -71,6 +75,8 @@ class ConfigSection {
   // Build the one-line error for this key.
   [[noreturn]] void fail(std::string_view key, std::string_view what) const;
   [[noreturn]] void fail_value(std::string_view key, std::string_view what) const;
+  // A one-line warning "<file>: key '<dotted.key>' = <value>: <what>" kept by the Config (warnings()).
+  void warn(std::string_view key, std::string_view what) const;
 
  private:
   friend class Config;
@@ -112,11 +118,16 @@ class Config {
   // A deep copy (for runs that modify a key, e.g. sweeps and bisection).
   Config clone() const;
 
+  // Warnings of the reads since the last call (e.g. a deprecated value), each once, in order; the run
+  // pipeline (run::plan) passes them to its Reporter.
+  std::vector<std::string> take_warnings() { return std::exchange(*warnings_, {}); }
+
  private:
   friend class ConfigSection;
   std::unique_ptr<toml::table> tbl_;
   std::string file_;
   std::unique_ptr<std::vector<std::string>> used_;  // dotted keys that were read
+  std::unique_ptr<std::vector<std::string>> warnings_;
 };
 
 }  // namespace agglo

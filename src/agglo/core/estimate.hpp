@@ -1,6 +1,7 @@
 #pragma once
-// What a run will cost, estimated from the validated case before anything large is allocated
-// (docs/limits.md). Three quantities, each with the config keys that drive it:
+// Cost estimate ("estimate" in agglo always means the cost of a run, never a physical estimate): what a
+// run will cost, estimated from the validated case before anything large is allocated (docs/limits.md).
+// Three quantities, each with the config keys that drive it:
 //   steps   particle-steps: time steps x particles, summed over every run a command makes (DEM);
 //           collision steps x samples x (1 + motion sub-steps) (DSMC); spheres (a static solve)
 //   memory  peak resident bytes of the process (the arrays the engine and the recorders allocate)

@@ -114,17 +114,39 @@ std::string Text::read(const ConfigSection& s) const {
 std::string Text::default_text() const { return note_or(def_ ? fmt::format("\"{}\"", *def_) : "required"); }
 
 Choice::Choice(Table& t, const Info& i, std::optional<std::string_view> def, std::vector<std::string_view> allowed)
-    : Setting(t, i, Type::choice), def_(def), allowed_(std::move(allowed)) {}
+    : Setting(t, i, Type::choice), def_(def), fixed_(std::move(allowed)) {}
+
+Choice::Choice(Table& t, const Info& i, std::optional<std::string_view> def, NameSource names, Legacy legacy)
+    : Setting(t, i, Type::choice), def_(def), source_(names), legacy_(std::move(legacy)) {}
+
+std::vector<std::string> Choice::allowed() const {
+  if (source_) return source_();
+  return {fixed_.begin(), fixed_.end()};
+}
 
 std::string Choice::read(const ConfigSection& s) const {
-  return s.choice(leaf(), def_ ? std::optional<std::string>(std::string(*def_)) : std::nullopt, allowed_);
+  if (!legacy_.if_true.empty())
+    if (const auto b = s.boolean_if_set(leaf())) return std::string(*b ? legacy_.if_true : legacy_.if_false);
+  if (const auto v = s.string_if_set(leaf()))
+    for (const auto& [old_name, new_name] : legacy_.renamed)
+      if (*v == old_name) {
+        s.warn(leaf(), fmt::format("\"{}\" is deprecated, read as \"{}\" (its new name)", old_name, new_name));
+        return std::string(new_name);
+      }
+  const std::vector<std::string> names = allowed();
+  const std::vector<std::string_view> views(names.begin(), names.end());
+  return s.choice(leaf(), def_ ? std::optional<std::string>(std::string(*def_)) : std::nullopt, views);
 }
 
 std::string Choice::default_text() const { return note_or(def_ ? fmt::format("\"{}\"", *def_) : "required"); }
 
 std::string Choice::range_text() const {
   std::string s;
-  for (auto a : allowed_) s += (s.empty() ? "\"" : ", \"") + std::string(a) + "\"";
+  for (const auto& a : allowed()) s += (s.empty() ? "\"" : ", \"") + a + "\"";
+  if (!legacy_.if_true.empty())
+    s += fmt::format(" (also true = \"{}\", false = \"{}\")", legacy_.if_true, legacy_.if_false);
+  for (const auto& [old_name, new_name] : legacy_.renamed)
+    s += fmt::format(" (\"{}\": deprecated name of \"{}\")", old_name, new_name);
   return s;
 }
 

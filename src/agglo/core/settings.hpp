@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "agglo/core/config.hpp"
@@ -147,18 +148,33 @@ class Text : public Setting {
   std::optional<std::string_view> def_;
 };
 
+// The allowed values of a Choice computed when they are needed: the names a registry of sub-models
+// holds (dem/contact/registry.hpp, acoustics/kernels/registry.hpp), so that they are declared once.
+using NameSource = std::vector<std::string> (*)();
+
+// Former values a Choice still accepts. `if_true`/`if_false`: a boolean, from the time the key was a
+// switch, means that name (no warning). `renamed`: a deprecated value, read as its new name with a
+// one-line warning (Config::take_warnings()).
+struct Legacy {
+  std::string_view if_true = {}, if_false = {};
+  std::vector<std::pair<std::string_view, std::string_view>> renamed = {};  // old value -> new value
+};
+
 class Choice : public Setting {
  public:
   Choice(Table& t, const Info& i, std::optional<std::string_view> def, std::vector<std::string_view> allowed);
+  Choice(Table& t, const Info& i, std::optional<std::string_view> def, NameSource names, Legacy legacy = {});
   std::string read(const ConfigSection& s) const;
   std::string_view def() const { return *def_; }
-  const std::vector<std::string_view>& allowed() const { return allowed_; }
+  std::vector<std::string> allowed() const;
   std::string default_text() const override;
   std::string range_text() const override;
 
  private:
   std::optional<std::string_view> def_;
-  std::vector<std::string_view> allowed_;
+  std::vector<std::string_view> fixed_;
+  NameSource source_ = nullptr;
+  Legacy legacy_;
 };
 
 class Reals : public Setting {

@@ -43,7 +43,8 @@ struct AcousticSettings {
     Choice integrator{t, {"time.integrator", "", "particle motion integrator"}, "exact", {"exact", "explicit", "none"}};
     Choice initial_velocity{t, {"time.initial_velocity", "", "initial particle velocity"}, "steady",
                             {"steady", "gas", "rest"}};
-    Choice selection{t, {"time.selection", "", "collision-pair selection: binned majorants, or the seed's modified Nanbu"},
+    Choice selection{t,
+                     {"time.selection", "", "collision-pair selection: binned majorants, or Zhao et al.'s modified Nanbu"},
                      "nanbu", {"nanbu", "binned"}};
     Choice nanbu_guard{t, {"time.nanbu_guard", "", "when P_ij > 1/N: sub-cycle the cell, or stop"}, "subcycle",
                        {"subcycle", "strict"}};
@@ -89,11 +90,11 @@ struct AcousticSettings {
     Table t{"sampling", kAcousticCommands, "how the samples are spread over the cells at t = 0"};
     Choice placement{t, {"sampling.placement", "",
                          "stratified: every population's samples spread evenly over the cells; random: uniform "
-                         "in the box (the seed's method)"},
+                         "in the box (Zhao et al.'s method)"},
                      "stratified", {"stratified", "random"}};
     Integer min_samples_per_cell{t, {"sampling.min_samples_per_cell", "",
                                      "a population with fewer samples per cell is split into clones of lower "
-                                     "weight at t = 0 (0 = never; the seed's method)"},
+                                     "weight at t = 0 (0 = never; Zhao et al.'s method)"},
                                  16, 0, 1000000};
   } sampling;
 
@@ -110,26 +111,7 @@ struct AcousticSettings {
                                      1, 100000000};
   } domain;
 
-  struct Kernels {
-    Table t{"kernels", kAcousticCommands, "collision kernels"};
-    Choice model{t, {"kernels.model", "", "kernel model"}, "acoustic",
-                 {"acoustic", "constant", "additive", "brownian_fuchs", "brownian_partmc"}};
-    Bool orthokinetic{t, {"kernels.orthokinetic", "", "orthokinetic (relative acoustic motion) collisions"}, true};
-    Bool acoustic_wake{t, {"kernels.acoustic_wake", "", "acoustic wake effect"}, true};
-    Bool radiation_pressure{t, {"kernels.radiation_pressure", "", "mutual radiation pressure"}, true};
-    Bool brownian{t, {"kernels.brownian", "", "Brownian collisions"}, true};
-    Choice brownian_form{t, {"kernels.brownian_form", "", "Brownian kernel form"}, "continuum_slip",
-                         {"continuum_slip", "fuchs"}};
-    Bool inertia_correction{t, {"kernels.inertia_correction", "", "particle inertia correction of the motion"}, true};
-    Real collision_efficiency{t, {"kernels.collision_efficiency", "", "collision efficiency factor"}, 1.0,
-                              Range::closed(0.0, 1.0)};
-    Bool exclude_same_population{t, {"kernels.exclude_same_population", "", "no collisions within a population"},
-                                 false};
-    Real constant_coefficient{t, {"kernels.constant_coefficient", "m^3/s", "model constant: kernel value"},
-                              std::nullopt, Range::positive()};
-    Real additive_coefficient{t, {"kernels.additive_coefficient", "1/s", "model additive: kernel per volume"},
-                              std::nullopt, Range::positive()};
-  } kernels;
+  // [kernels] (the mechanisms by name) is declared beside them: acoustics/kernels/keys.hpp.
 
   struct Outcomes {
     Table t{"outcomes", kAcousticCommands, "collision outcomes (coalescence or rebound)"};

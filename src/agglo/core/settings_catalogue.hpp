@@ -9,8 +9,14 @@
 
 namespace agglo::settings {
 
-// Every table, in documentation order (impact, electrostatics, acoustic, calibrate).
+// Every table, in documentation order (impact, electrostatics, acoustic, calibrate). The tables
+// declared in this folder are always listed; a table declared by an engine next to the models it
+// names (dem/contact/settings.hpp [contact], acoustics/kernels/settings.hpp [kernels]) is listed once
+// its owner has built it, which run::all_commands() makes sure of.
 std::vector<const Table*> all_tables();
+
+// Lists an engine's table right after `after`; returns true.
+bool add_table(const Table& table, const Table& after);
 
 // One line per key: key, type, unit, default, range, meaning (tab-separated), under a header line
 // "[section] (commands): title" per table. `section` selects tables by name ("" = all; "top" = the

@@ -34,17 +34,7 @@ struct ImpactSettings {
                              0.0, Range::closed(0.0, 1e13)};
   } material;
 
-  struct Contact {
-    Table t{"contact", kImpactCommands, "contact force model"};
-    Choice tangential{t, {"contact.tangential", "", "tangential (sliding) force model"}, "seed", {"seed", "marshall"}};
-    Bool rolling{t, {"contact.rolling", "", "rolling resistance (needs the marshall tangential model)"}, false};
-    Bool twisting{t, {"contact.twisting", "", "twisting resistance (needs the marshall tangential model)"}, false};
-    Real rolling_angle{t, {"contact.rolling_angle", "rad", "critical rolling angle theta_crit"}, 0.01,
-                       Range::positive()};
-    Choice break_rule{t, {"contact.break_rule", "", "when a stretched adhesive contact breaks"}, "marshall",
-                      {"marshall", "lammps"}};
-    Bool damping{t, {"contact.damping", "", "viscous damping of the normal contact force"}, true};
-  } contact;
+  // [contact] (the sub-models by name) is declared beside them: dem/contact/settings.hpp.
 
   struct Time {
     Table t{"time", kImpactCommands, "time stepping and run length"};

@@ -4,7 +4,7 @@
 
 namespace agglo::dem {
 
-ContactLaw::ContactLaw(const ContactParams& p) : ContactLaw(p, contact::model_names(p)) {}
+ContactLaw::ContactLaw(const ContactParams& p) : ContactLaw(p, p.models) {}
 
 ContactLaw::ContactLaw(const ContactParams& p, const contact::ModelNames& names)
     : names_(names), kernel_(contact::make_kernel(names, p)) {}

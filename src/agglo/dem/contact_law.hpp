@@ -13,7 +13,7 @@ namespace agglo::dem {
 
 class ContactLaw {
  public:
-  // The models the config fields of `p` name (contact::model_names).
+  // The models p.models names.
   explicit ContactLaw(const ContactParams& p);
   // Explicit names; throws ConfigError for unknown names or coefficients a model rejects.
   ContactLaw(const ContactParams& p, const contact::ModelNames& names);

@@ -4,6 +4,11 @@ namespace agglo::dem {
 
 double ContactParams::estar() const { return youngs_modulus / (2.0 * (1.0 - poisson_ratio * poisson_ratio)); }
 
+double ContactParams::value(const contact::Coefficient& c) const {
+  const auto it = declared.find(c.key);
+  return it == declared.end() ? c.def : it->second;
+}
+
 double ContactParams::gstar() const {
   double G = youngs_modulus / (2.0 * (1.0 + poisson_ratio));
   return G / (2.0 * (2.0 - poisson_ratio));

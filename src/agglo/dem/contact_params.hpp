@@ -1,11 +1,16 @@
 #pragma once
 // Material and contact settings of the adhesive DEM (docs/model.md §A.2), as read from the config.
 // The contact law itself is assembled from named sub-models (normal, damping, tangential, rolling,
-// twisting; src/agglo/dem/contact/); contact::model_names() maps the fields below to those names.
+// twisting; src/agglo/dem/contact/), named by `models`; the other fields are their coefficients.
+#include <map>
+#include <string>
+
+#include "agglo/dem/contact/coefficient.hpp"
+#include "agglo/dem/contact/model_names.hpp"
+
 namespace agglo::dem {
 
 enum class BreakRule { marshall, lammps };
-enum class TangentialModel { seed, marshall };
 
 struct ContactParams {
   double youngs_modulus = 1.0e9;   // E [Pa]
@@ -13,12 +18,13 @@ struct ContactParams {
   double surface_energy = 0.01;    // gamma [J/m^2]
   double restitution = 0.7;        // e in (0, 1]; alpha(e) damping
   double friction = 0.3;           // mu_F [-]
-  TangentialModel tangential = TangentialModel::seed;
-  bool rolling = false;            // Marshall rolling resistance
-  bool twisting = false;           // Marshall twisting resistance
+  contact::ModelNames models;      // the sub-model of each category ([contact] keys)
   double rolling_angle = 0.01;     // critical rolling angle theta_crit [rad]
   BreakRule break_rule = BreakRule::marshall;
-  bool damping = true;             // switch normal/tangential damping off (analytic checks)
+  std::map<std::string, double, std::less<>> declared;  // coefficients sub-models declare, by key
+
+  // The value of a declared coefficient: as read from the case, else its default.
+  double value(const contact::Coefficient& c) const;
 
   double estar() const;  // like materials: E / (2 (1 - nu^2))
   double gstar() const;  // like materials: G / (2 (2 - nu)), G = E / (2 (1 + nu))

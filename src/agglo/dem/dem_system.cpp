@@ -29,7 +29,7 @@ double reference_period(const Particles& p, const ContactParams& c) {
 }
 
 DemSystem::DemSystem(Particles particles, DemParams params)
-    : DemSystem(std::move(particles), params, contact::model_names(params.contact)) {}
+    : DemSystem(std::move(particles), params, params.contact.models) {}
 
 DemSystem::DemSystem(Particles particles, DemParams params, const contact::ModelNames& models)
     : p_(std::move(particles)), params_(params), law_(params_.contact, models) {

@@ -36,7 +36,7 @@ struct DemParams {
 
 class DemSystem {
  public:
-  // Contact sub-models as named by params.contact (contact::model_names) or explicitly by `models`.
+  // Contact sub-models as named by params.contact.models, or explicitly by `models`.
   DemSystem(Particles particles, DemParams params);
   DemSystem(Particles particles, DemParams params, const contact::ModelNames& models);
 

@@ -1,6 +1,6 @@
 #pragma once
-// Memory and output of an electrostatic solve, estimated from the sphere list before the solver
-// allocates anything (core/estimate.hpp, docs/limits.md). Close estimates built from the arrays each
+// Cost estimate: memory, output and steps of an electrostatic solve, from the sphere list before the
+// solver allocates anything (core/estimate.hpp, docs/limits.md). Close estimates built from the arrays each
 // solver holds (N spheres, P = patches_per_sphere):
 //   coulomb   O(N): the spheres and the result
 //   spectral  one pair record per sphere pair, N (N - 1) / 2, each with the Wigner rotation of its

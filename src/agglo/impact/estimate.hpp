@@ -1,5 +1,5 @@
 #pragma once
-// Cost of the impact commands (collide, vcrit, breakup), estimated from the validated case before any
+// Cost estimate of the impact commands (collide, vcrit, breakup), from the validated case before any
 // run (core/estimate.hpp, docs/limits.md). Upper bounds from the run logic of experiment.cpp:
 //   dt          time.dt, or T0 / time.steps_per_period with T0 the contact period of the agglomerate
 //               (dem::reference_period, as DemSystem chooses it)

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/dem/contact/settings.hpp"
 #include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/orientation.hpp"
 
@@ -15,7 +16,7 @@ namespace {
 // [material] and [contact]; returns the real Young's modulus (0 = same as the model's).
 double parse_material_contact(const ConfigSection& root, ImpactCase& c) {
   const auto& km = impact_keys().material;
-  const auto& kc = impact_keys().contact;
+  const auto& kc = dem::contact::contact_settings();
   auto mat = km.t.open(root);
   c.agglomerate.density = km.density.read(mat);
   auto& cp = c.dem.contact;
@@ -27,15 +28,10 @@ double parse_material_contact(const ConfigSection& root, ImpactCase& c) {
   const double real_modulus = km.real_youngs_modulus.read(mat);
 
   auto con = kc.t.open(root);
-  cp.tangential = kc.tangential.read(con) == "seed" ? dem::TangentialModel::seed : dem::TangentialModel::marshall;
-  cp.rolling = kc.rolling.read(con);
-  cp.twisting = kc.twisting.read(con);
+  cp.models = dem::contact::read_models(con);
+  cp.declared = kc.read_declared(con);
   cp.rolling_angle = kc.rolling_angle.read(con);
   cp.break_rule = kc.break_rule.read(con) == "marshall" ? dem::BreakRule::marshall : dem::BreakRule::lammps;
-  cp.damping = kc.damping.read(con);
-  if ((cp.rolling || cp.twisting) && cp.tangential != dem::TangentialModel::marshall)
-    (cp.rolling ? kc.rolling : kc.twisting)
-        .reject(con, fmt::format("rolling/twisting resistance needs {} = \"marshall\"", kc.tangential.leaf()));
   return real_modulus;
 }
 

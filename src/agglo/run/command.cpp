@@ -65,6 +65,7 @@ std::size_t case_parses() { return g_case_parses.load(); }
 Estimate plan(const Command& cmd, Config& cfg, const RunContext& ctx) {
   check_budgets(cmd.lower_bound(cfg), budgets_of(ctx), cfg.file());
   parse_case(cmd, cfg);
+  for (const auto& w : cfg.take_warnings()) ctx.report().warning(w);
   Estimate e = cmd.estimate(cfg, ctx);
   e.memory.value += kProcessBaseBytes;
   if (ctx.formats.netcdf) e.memory.value += e.output.value;  // the results.nc arrays, at most as large

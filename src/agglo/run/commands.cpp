@@ -1,8 +1,14 @@
 #include "agglo/run/commands.hpp"
 
+#include "agglo/acoustics/kernels/keys.hpp"
+#include "agglo/dem/contact/settings.hpp"
+
 namespace agglo::run {
 
 const std::vector<const Command*>& all_commands() {
+  // The settings tables the engines declare beside their models join the catalogue (agglo config).
+  static const bool tables = (dem::contact::contact_settings(), acoustics::kernel_keys(), true);
+  (void)tables;
   static const std::vector<const Command*> list = {&collide_command(), &vcrit_command(), &breakup_command(),
                                                    &electrostatics_command(), &acoustic_command(),
                                                    &sectional_command(), &calibrate_command()};

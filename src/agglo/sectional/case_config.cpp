@@ -2,12 +2,12 @@
 
 #include <fmt/format.h>
 
+#include "agglo/acoustics/kernels/keys.hpp"
 #include "agglo/core/settings_acoustic.hpp"
 
 namespace agglo::sectional {
 
 namespace {
-using acoustics::KernelModel;
 const settings::AcousticSettings& keys() { return settings::acoustic_settings(); }
 
 SectionalSettings parse_grid(const ConfigSection& root) {
@@ -25,14 +25,12 @@ SectionalSettings parse_grid(const ConfigSection& root) {
 // The limits of the solver (header), each reported against its key.
 void check_supported(const ConfigSection& root, const acoustics::EngineSettings& e) {
   const auto& K = keys();
-  const ConfigSection kern = K.kernels.t.open(root);
-  const KernelModel m = e.kernel.model;
-  if (m != KernelModel::constant && m != KernelModel::additive && m != KernelModel::brownian_fuchs &&
-      m != KernelModel::brownian_partmc)
-    K.kernels.model.reject(kern, "the sectional solver needs a kernel of the sizes only: \"constant\", \"additive\", "
-                                 "\"brownian_fuchs\" or \"brownian_partmc\"");
+  const auto& KK = acoustics::kernel_keys();
+  const ConfigSection kern = KK.t.open(root);
+  if (e.kernel.model == acoustics::kAcousticModel)
+    KK.model.reject(kern, "the sectional solver needs a kernel of the sizes only: one mechanism alone");
   if (e.kernel.exclude_same_population)
-    K.kernels.exclude_same_population.reject(kern, "the sectional solver has one component: must be false");
+    KK.exclude_same_population.reject(kern, "the sectional solver has one component: must be false");
   if (!e.outcomes.always_coalesce)
     K.outcomes.always_coalesce.reject(K.outcomes.t.open(root), "the sectional solver merges on every collision: "
                                                                "must be true");

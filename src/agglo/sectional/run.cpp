@@ -42,7 +42,7 @@ std::string parameters_log(const SectionalCase& c, const SectionalSolver& s) {
   std::string log = fmt::format("agglo sectional: case {}\n", c.base.file);
   log += fmt::format("gas: T={:g} K P={:g} Pa mu_g={:.6g} Pa s lambda_g={:.6g} m; kernel={}\n", e.motion.gas.temperature,
                      e.motion.gas.pressure, e.motion.gas.viscosity, e.motion.gas.mean_free_path,
-                     acoustics::kernel_model_name(e.kernel.model));
+                     e.kernel.model);
   log += fmt::format("grid: {} pivots, d = {:.6g} .. {:.6g} m, {} per decade (volume ratio {:.6g}); tolerance {:g}\n",
                      s.grid().size(), s.grid().d.front(), s.grid().d.back(), c.grid.bins_per_decade,
                      std::pow(s.grid().ratio_d, 3), c.grid.tolerance);

@@ -11,6 +11,7 @@ namespace agglo::acoustics {
 
 struct AdditiveKernel {
   static constexpr std::string_view name = "additive";
+  static constexpr bool standalone = true;
   double b;  // B [1/s]
 
   AdditiveKernel(const KernelSettings& s, const Gas&, const Sound&) : b(s.additive_coefficient) {}

@@ -31,6 +31,8 @@ void fuchs_prepare(const Gas& gas, CellBounds& cb);
 
 struct BrownianFuchs {
   static constexpr std::string_view name = "brownian_fuchs";
+  static constexpr bool standalone = true;
+  static constexpr bool brownian_term = true;
   Gas gas;
 
   BrownianFuchs(const KernelSettings&, const Gas& g, const Sound&) : gas(g) {}

@@ -38,6 +38,7 @@ void partmc_prepare(const PartmcGas& gas, CellBounds& cb);
 
 struct BrownianPartmc {
   static constexpr std::string_view name = "brownian_partmc";
+  static constexpr bool standalone = true;
   Gas gas;
   PartmcGas pgas;
   double speed_ratio;

@@ -11,6 +11,7 @@ namespace agglo::acoustics {
 
 struct ConstantKernel {
   static constexpr std::string_view name = "constant";
+  static constexpr bool standalone = true;
   double k0;  // K0 [m^3/s]
 
   ConstantKernel(const KernelSettings& s, const Gas&, const Sound&) : k0(s.constant_coefficient) {}

@@ -12,6 +12,9 @@
 //   double bound_cell(const CellBounds&) const;                                    // >= bound(i) for i in the cell
 //   double bound_pair(const CellBounds& a, const CellBounds& b) const;             // >= beta(i, j), i in a, j in b
 //   optional: void prepare(CellBounds&) const;  // derived fields bound_pair reads, after the group's includes
+//   optional: static constexpr bool standalone = true;     // selectable alone: kernels.model = name
+//   optional: static constexpr bool brownian_term = true;  // the acoustic sum's Brownian term: kernels.brownian = name
+// The acoustic terms orthokinetic, acoustic_wake and radiation_pressure have a switch key each.
 // The binned selection (binned.hpp) draws candidates of each mechanism separately: beta_of(k, ...) and
 // bound_pair_of(k, ...) address the k-th switched-on mechanism.
 #include <array>
@@ -31,11 +34,32 @@ namespace agglo::acoustics {
 // Throws ConfigError naming the registered mechanisms (kernels.cpp).
 [[noreturn]] void throw_unknown_mechanism(const std::string& name, const std::vector<std::string_view>& known);
 
+template <class M>
+constexpr bool declares_standalone() {
+  if constexpr (requires { M::standalone; }) return M::standalone;
+  return false;
+}
+template <class M>
+constexpr bool declares_brownian_term() {
+  if constexpr (requires { M::brownian_term; }) return M::brownian_term;
+  return false;
+}
+
 template <class... M>
 class MechanismSet {
  public:
   static constexpr std::size_t size = sizeof...(M);
   static std::vector<std::string_view> registered_names() { return {M::name...}; }
+  static std::vector<std::string_view> standalone_names() {
+    std::vector<std::string_view> v;
+    ((declares_standalone<M>() ? v.push_back(M::name) : void()), ...);
+    return v;
+  }
+  static std::vector<std::string_view> brownian_term_names() {
+    std::vector<std::string_view> v;
+    ((declares_brownian_term<M>() ? v.push_back(M::name) : void()), ...);
+    return v;
+  }
 
   MechanismSet(const std::vector<std::string>& names, const KernelSettings& s, const Gas& gas, const Sound& sound)
       : m_(M(s, gas, sound)...) {

@@ -1,37 +1,31 @@
 #include "agglo/acoustics/kernels/settings.hpp"
 
-#include "agglo/core/error.hpp"
+#include "agglo/acoustics/kernels/registry.hpp"
 
 namespace agglo::acoustics {
 
-KernelModel kernel_model_from_name(const std::string& n) {
-  if (n == "acoustic") return KernelModel::acoustic;
-  if (n == "constant") return KernelModel::constant;
-  if (n == "additive") return KernelModel::additive;
-  if (n == "brownian_fuchs") return KernelModel::brownian_fuchs;
-  if (n == "brownian_partmc") return KernelModel::brownian_partmc;
-  throw ConfigError("unknown kernel model '" + n + "' (acoustic, constant, additive, brownian_fuchs, brownian_partmc)");
-}
-
-const char* kernel_model_name(KernelModel m) {
-  switch (m) {
-    case KernelModel::acoustic: return "acoustic";
-    case KernelModel::constant: return "constant";
-    case KernelModel::additive: return "additive";
-    case KernelModel::brownian_fuchs: return "brownian_fuchs";
-    case KernelModel::brownian_partmc: return "brownian_partmc";
-  }
-  return "?";
-}
+std::string default_brownian_term() { return std::string(Brownian::name); }
 
 std::vector<std::string> mechanism_names(const KernelSettings& s) {
-  if (s.model != KernelModel::acoustic) return {kernel_model_name(s.model)};
+  if (s.model != kAcousticModel) return {s.model};
   std::vector<std::string> names;
-  if (s.orthokinetic) names.emplace_back("orthokinetic");
-  if (s.acoustic_wake) names.emplace_back("acoustic_wake");
-  if (s.radiation_pressure) names.emplace_back("radiation_pressure");
-  if (s.brownian) names.emplace_back("brownian");
+  if (s.orthokinetic) names.emplace_back(Orthokinetic::name);
+  if (s.acoustic_wake) names.emplace_back(AcousticWake::name);
+  if (s.radiation_pressure) names.emplace_back(RadiationPressure::name);
+  if (s.brownian != kNoMechanism) names.push_back(s.brownian);
   return names;
+}
+
+std::vector<std::string> kernel_model_names() {
+  std::vector<std::string> out{std::string(kAcousticModel)};
+  for (auto n : KernelMechanisms::standalone_names()) out.emplace_back(n);
+  return out;
+}
+
+std::vector<std::string> brownian_term_names() {
+  std::vector<std::string> out{std::string(kNoMechanism)};
+  for (auto n : KernelMechanisms::brownian_term_names()) out.emplace_back(n);
+  return out;
 }
 
 }  // namespace agglo::acoustics

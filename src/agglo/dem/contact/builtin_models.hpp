@@ -7,16 +7,19 @@
 #include "agglo/dem/contact/marshall_sliding.hpp"
 #include "agglo/dem/contact/marshall_twisting.hpp"
 #include "agglo/dem/contact/no_resistance.hpp"
-#include "agglo/dem/contact/seed_friction.hpp"
+#include "agglo/dem/contact/ruan_li_friction.hpp"
 #include "agglo/dem/contact/type_list.hpp"
 
 namespace agglo::dem::contact {
 
 using BuiltinModels = TypeList<
-    JkrNormal,                      // normal "jkr"
-    AlphaDamping, NoDamping,        // damping "alpha", "none"
-    SeedFriction, MarshallSliding,  // tangential "seed", "marshall"
-    NoRolling, MarshallRolling,     // rolling "none", "marshall"
-    NoTwisting, MarshallTwisting>;  // twisting "none", "marshall"
+    JkrNormal,                         // normal
+    AlphaDamping, NoDamping,           // damping
+    RuanLiFriction, MarshallSliding,   // tangential
+    NoRolling, MarshallRolling,        // rolling
+    NoTwisting, MarshallTwisting>;     // twisting
+
+// The model of each category when a case names none (the default of its [contact] key).
+using DefaultModels = TypeList<JkrNormal, AlphaDamping, RuanLiFriction, NoRolling, NoTwisting>;
 
 }  // namespace agglo::dem::contact

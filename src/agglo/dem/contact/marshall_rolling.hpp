@@ -15,6 +15,7 @@ class MarshallRolling {
  public:
   static constexpr Category category = Category::rolling;
   static constexpr const char* name = "marshall";
+  static constexpr bool needs_sliding_spring = true;  // Marshall's springs go together
 
   explicit MarshallRolling(const ContactParams& p);  // checks theta_crit > 0
 

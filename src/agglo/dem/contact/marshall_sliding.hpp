@@ -13,6 +13,7 @@ class MarshallSliding {
  public:
   static constexpr Category category = Category::tangential;
   static constexpr const char* name = "marshall";
+  static constexpr bool sliding_spring = true;
 
   explicit MarshallSliding(const ContactParams& p);  // checks mu_F >= 0
 

@@ -14,6 +14,7 @@ class MarshallTwisting {
  public:
   static constexpr Category category = Category::twisting;
   static constexpr const char* name = "marshall";
+  static constexpr bool needs_sliding_spring = true;  // Marshall's springs go together
 
   explicit MarshallTwisting(const ContactParams& p);  // checks mu_F >= 0
 

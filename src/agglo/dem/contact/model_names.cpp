@@ -26,13 +26,4 @@ std::string& ModelNames::operator[](Category c) {
 
 const std::string& ModelNames::operator[](Category c) const { return const_cast<ModelNames&>(*this)[c]; }
 
-ModelNames model_names(const ContactParams& p) {
-  ModelNames m;
-  m.damping = p.damping ? "alpha" : "none";
-  m.tangential = p.tangential == TangentialModel::seed ? "seed" : "marshall";
-  m.rolling = p.rolling ? "marshall" : "none";
-  m.twisting = p.twisting ? "marshall" : "none";
-  return m;
-}
-
 }  // namespace agglo::dem::contact

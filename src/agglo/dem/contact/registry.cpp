@@ -13,12 +13,23 @@ namespace agglo::dem::contact {
 
 namespace {
 
-// name -> maker; a null maker marks a built-in model (made by make_kernel_with<void>).
-using Table = std::map<std::string, KernelMaker, std::less<>>;
+// name -> maker and traits; a null maker marks a built-in model (made by make_kernel_with<void>).
+struct Entry {
+  KernelMaker maker;
+  Traits traits;
+};
+using Table = std::map<std::string, Entry, std::less<>>;
 
 template <class... Ts>
 void add_builtins(std::array<Table, kCategories>& tables, TypeList<Ts...>) {
-  (tables[static_cast<std::size_t>(Ts::category)].emplace(Ts::name, nullptr), ...);
+  (tables[static_cast<std::size_t>(Ts::category)].emplace(Ts::name, Entry{nullptr, traits_of<Ts>()}), ...);
+}
+
+template <class... Ts>
+const char* default_of(Category c, TypeList<Ts...>) {
+  const char* name = "?";
+  (void)((Ts::category == c && (name = Ts::name, true)) || ...);
+  return name;
 }
 
 struct Registry {
@@ -35,7 +46,34 @@ Registry& registry() {
 constexpr std::array<Category, kCategories> kAll{Category::normal, Category::damping, Category::tangential,
                                                  Category::rolling, Category::twisting};
 
+// The traits of the model named for `c`, if registered (the caller holds the lock).
+std::optional<Traits> traits(const Registry& r, const ModelNames& m, Category c) {
+  const Table& t = r.tables[static_cast<std::size_t>(c)];
+  auto it = t.find(m[c]);
+  if (it == t.end()) return std::nullopt;
+  return it->second.traits;
+}
+
 }  // namespace
+
+const char* default_model(Category c) { return default_of(c, DefaultModels{}); }
+
+std::optional<Conflict> conflict(const ModelNames& m) {
+  auto& r = registry();
+  std::lock_guard lock(r.mutex);
+  const auto tangential = traits(r, m, Category::tangential);
+  if (!tangential || tangential->sliding_spring) return std::nullopt;
+  for (Category c : {Category::rolling, Category::twisting}) {
+    const auto need = traits(r, m, c);
+    if (!need || !need->needs_sliding_spring) continue;
+    std::string with;
+    for (const auto& [name, entry] : r.tables[static_cast<std::size_t>(Category::tangential)])
+      if (entry.traits.sliding_spring) with += (with.empty() ? "\"" : ", \"") + name + "\"";
+    return Conflict{c, fmt::format("the {} model \"{}\" needs a tangential model with a sliding spring ({}), not "
+                                   "\"{}\"", category_name(c), m[c], with, m.tangential)};
+  }
+  return std::nullopt;
+}
 
 std::vector<std::string> names(Category c) {
   auto& r = registry();
@@ -45,10 +83,10 @@ std::vector<std::string> names(Category c) {
   return out;
 }
 
-bool add_model(Category c, const std::string& name, KernelMaker maker) {
+bool add_model(Category c, const std::string& name, KernelMaker maker, Traits traits) {
   auto& r = registry();
   std::lock_guard lock(r.mutex);
-  if (!r.tables[static_cast<std::size_t>(c)].emplace(name, maker).second)
+  if (!r.tables[static_cast<std::size_t>(c)].emplace(name, Entry{maker, traits}).second)
     throw std::logic_error(fmt::format("contact {} model \"{}\" is registered twice", category_name(c), name));
   return true;
 }
@@ -68,15 +106,16 @@ KernelPtr make_kernel(const ModelNames& chosen, const ContactParams& p) {
         throw ConfigError(fmt::format("unknown contact {} model \"{}\" (known: {})", category_name(c), chosen[c],
                                       known));
       }
-      if (!it->second) continue;
+      if (!it->second.maker) continue;
       if (owner)
         throw ConfigError(fmt::format("contact models \"{}\" ({}) and \"{}\" ({}) are both registered outside "
                                       "builtin_models.hpp and cannot be combined; list one of them there",
                                       chosen[*owner], category_name(*owner), chosen[c], category_name(c)));
-      maker = it->second;
+      maker = it->second.maker;
       owner = c;
     }
   }
+  if (const auto c = conflict(chosen)) throw ConfigError(c->rule);
   return maker(chosen, p);
 }
 

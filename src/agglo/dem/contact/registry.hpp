@@ -13,6 +13,7 @@
 
 #include "agglo/dem/contact/builtin_models.hpp"
 #include "agglo/dem/contact/pair_kernel.hpp"
+#include "agglo/dem/contact/settings.hpp"
 
 namespace agglo::dem::contact {
 
@@ -20,11 +21,26 @@ using KernelPtr = std::shared_ptr<const ContactKernel>;
 using KernelMaker = KernelPtr (*)(const ModelNames&, const ContactParams&);
 
 // The pair loop for the named models. Throws ConfigError naming the category, the unknown name and
-// the registered ones, or the two non-built-in models that cannot be combined.
+// the registered ones, the conflict() of the combination, or the two non-built-in models that cannot
+// be combined.
 KernelPtr make_kernel(const ModelNames& names, const ContactParams& p);
 
+// What a model declares about the models it combines with (sub_model.hpp); absent members are false.
+struct Traits {
+  bool sliding_spring = false;        // tangential: keeps a sliding spring
+  bool needs_sliding_spring = false;  // rolling, twisting: only with a tangential model that keeps one
+};
+
+template <class M>
+constexpr Traits traits_of() {
+  Traits t;
+  if constexpr (requires { M::sliding_spring; }) t.sliding_spring = M::sliding_spring;
+  if constexpr (requires { M::needs_sliding_spring; }) t.needs_sliding_spring = M::needs_sliding_spring;
+  return t;
+}
+
 // Registers `maker` as (category, name); throws std::logic_error if the name is taken. Returns true.
-bool add_model(Category c, const std::string& name, KernelMaker maker);
+bool add_model(Category c, const std::string& name, KernelMaker maker, Traits traits);
 
 namespace detail {
 
@@ -67,7 +83,8 @@ KernelPtr make_kernel_with(const ModelNames& names, const ContactParams& p) {
 
 template <class Model>
 bool register_model() {
-  return add_model(Model::category, Model::name, &make_kernel_with<Model>);
+  declare_coefficients(coefficients_of<Model>());
+  return add_model(Model::category, Model::name, &make_kernel_with<Model>, traits_of<Model>());
 }
 
 }  // namespace agglo::dem::contact

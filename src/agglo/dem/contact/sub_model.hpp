@@ -11,7 +11,15 @@
 //   tangential  Vec3 force(const ContactPoint&, const JkrPair&, ContactState&) const;   [N] on i
 //   rolling,    Vec3 torque(const ContactPoint&, const JkrPair&, ContactState&) const; [N m] on i
 //   twisting    (j receives the opposite), or `static constexpr bool inactive = true;` to do nothing.
+// A model with coefficients of its own declares their [contact] keys (unit, default, range, meaning):
+//   static constexpr Coefficient coefficients[] = {...};   read with p.value(coefficients[k])
+// (coefficient.hpp); the settings table, the case parser and docs/config.md take them from there.
 // Springs keep their displacement in ContactState (xi_t, xi_r, xi_q), reset when a contact forms.
+// Compatibility is declared by the models themselves (as LAMMPS' granular sub-models declare
+// allow_cohesion), and checked by the registry when a combination is chosen:
+//   tangential  static constexpr bool sliding_spring = true;        it keeps a sliding spring xi_t
+//   rolling,    static constexpr bool needs_sliding_spring = true;  only with such a tangential model
+//   twisting
 #include "agglo/core/vec3.hpp"
 #include "agglo/dem/contact/coefficient_check.hpp"
 #include "agglo/dem/contact/contact_point.hpp"

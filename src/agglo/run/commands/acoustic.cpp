@@ -16,7 +16,7 @@ class Acoustic final : public Command {
   std::string_view name() const override { return "acoustic"; }
   bool restartable() const override { return true; }
   std::string_view help() const override {
-    return "DSMC acoustic agglomeration of fine particles with droplets (seed 002)";
+    return "DSMC acoustic agglomeration of fine particles with droplets (Zhao et al. 2023)";
   }
 
   void parse(Config& cfg) const override {

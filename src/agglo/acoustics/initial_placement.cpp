@@ -1,4 +1,4 @@
-#include "agglo/acoustics/sampling.hpp"
+#include "agglo/acoustics/initial_placement.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "agglo/dem/contact/seed_friction.hpp"
+#include "agglo/dem/contact/ruan_li_friction.hpp"
 
 namespace agglo::dem::contact {
 
-SeedFriction::SeedFriction(const ContactParams& p) : mu_(p.friction) {
+RuanLiFriction::RuanLiFriction(const ContactParams& p) : mu_(p.friction) {
   require(p.friction >= 0.0, "tangential", name, "friction coefficient mu", p.friction, ">= 0");
 }
 

@@ -12,14 +12,14 @@
 //    floor(N/C) or ceil(N/C) samples of every population, the seeded draw decides which cells get the
 //    extra one, and each cell gets one sample of every run of C consecutive sizes. Position uniform
 //    inside the cell (same Philox stream per sample as the random placement).
-//  - placement "random": uniform in the periodic box (the seed's method; the positions are those of
+//  - placement "random": uniform in the periodic box (Zhao et al.'s method; the positions are those of
 //    earlier versions for the same seed).
 //  - min_samples_per_cell M: a population with N < M C samples is split into clones, clone factor
 //    k = ceil(M C / N). A sample of integer weight w becomes min(k, w) clones of weights floor(w/k') or
 //    ceil(w/k') (k' = min(k, w); the larger ones first) that add up to w exactly, every clone carrying
 //    the sample's per-particle state (volumes, mass, velocity). Number, volume, mass and momentum are
 //    therefore conserved exactly. The clones are placed like the other samples.
-//  - the seed's method is placement = "random", min_samples_per_cell = 0.
+//  - Zhao et al.'s method is placement = "random", min_samples_per_cell = 0.
 #include <cstddef>
 #include <cstdint>
 

@@ -1,6 +1,6 @@
 #pragma once
-// Tangential sub-model "seed": sliding friction of Ruan & Li (2022, eq. 2b), regularised near zero
-// slip by a viscous branch (docs/model.md §A.2):
+// Tangential sub-model "ruan_li": sliding friction of Ruan & Li (2022, eq. 2b), regularised near zero
+// slip by a viscous branch (docs/model.md §A.2); contact.tangential = "seed" is its deprecated name:
 //   F_t = -min(mu_F |F_n|, eta_t |v_s|) v_s/|v_s|,   eta_t = eta_N   [N]
 // F_n includes the normal damping; no spring, no state, no torque of its own beyond the lever arm.
 #include <algorithm>
@@ -10,12 +10,12 @@
 
 namespace agglo::dem::contact {
 
-class SeedFriction {
+class RuanLiFriction {
  public:
   static constexpr Category category = Category::tangential;
-  static constexpr const char* name = "seed";
+  static constexpr const char* name = "ruan_li";
 
-  explicit SeedFriction(const ContactParams& p);  // checks mu_F >= 0
+  explicit RuanLiFriction(const ContactParams& p);  // checks mu_F >= 0
 
   Vec3 force(const ContactPoint& c, const JkrPair&, ContactState&) const {
     Vec3 ft;
