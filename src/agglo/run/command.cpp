@@ -138,6 +138,7 @@ CommandResult execute(const Command& cmd, Config& cfg, const std::filesystem::pa
   };
   CommandResult res;
   try {
+    const CancelScope cancel_scope(ctx.cancel);  // the engines poll it (core/cancel.hpp)
     res = cmd.run(cfg, out, ctx);
   } catch (const ConfigError& e) {  // input found invalid only by the engine: leave no new folder behind
     if (!existed) std::filesystem::remove_all(folder, ec);
