@@ -1,4 +1,5 @@
-// agglo command-line front end. Exit codes: 0 ok, 1 internal error, 2 bad input, 3 numerical failure,
+// agglo command-line front end. Exit codes: 0 ok, 1 internal error, 2 bad input, 3 numerical failure or
+// invalid run,
 // 130 interrupted by SIGINT (Ctrl-C), 143 by SIGTERM.
 #include <cstdio>
 #include <algorithm>
@@ -60,6 +61,9 @@ int run_cli(int argc, char** argv) {
   } catch (const agglo::ConfigError& e) {
     report("agglo: error: %s\n", agglo::one_line(e.what()).c_str());
     return 2;
+  } catch (const agglo::InvalidRunError& e) {  // before its base class
+    report("agglo: invalid run: %s\n", agglo::one_line(e.what()).c_str());
+    return 3;
   } catch (const agglo::NumericalError& e) {
     report("agglo: numerical failure: %s\n", agglo::one_line(e.what()).c_str());
     return 3;

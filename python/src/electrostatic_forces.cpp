@@ -1,6 +1,7 @@
 // agglo.electrostatic_forces: one static solve of charged dielectric spheres given as NumPy arrays
 // (docs/model.md Part B; the library call behind the CLI's `agglo electrostatics`). The arguments are
-// checked and converted by electrostatic_input.hpp; the solve runs without the GIL on OpenMP threads;
+// checked and converted by electrostatic_input.hpp; the solve runs on a worker thread (runner.hpp) while
+// the calling thread waits without the GIL and checks for Ctrl-C every 50 ms, which cancels the solve;
 // forces, torques and surface samples are returned as NumPy views of the solver's own vectors.
 #include <omp.h>
 
@@ -18,6 +19,7 @@
 #include "agglo/writers/electrostatics.hpp"
 #include "bindings.hpp"
 #include "electrostatic_input.hpp"
+#include "runner.hpp"
 
 namespace py = pybind11;
 
@@ -108,12 +110,16 @@ ElectrostaticResult electrostatic_forces(py::object positions, py::object radii,
                                     std::move(options)});
   std::unique_ptr<es::Solver> solver;
   es::Solution sol;
-  {
-    py::gil_scoped_release release;
-    ThreadScope scope(in.threads);
-    solver = es::make_solver(in.options);
-    sol = solver->solve(in.problem);
-  }
+  // On the worker of run_released: Ctrl-C sets the run's cancel token, which the solver polls
+  // (core/cancel.hpp), and raises agglo.InterruptedError within a fraction of a second.
+  (void)run_released(
+      [&](const run::RunContext&) {
+        const ThreadScope scope(in.threads);
+        solver = es::make_solver(in.options);
+        sol = solver->solve(in.problem);
+        return run::CommandResult{};
+      },
+      run::RunContext{}, py::none());
   nlohmann::json stats = writers::solve_stats(*solver, in.problem, sol);
   stats["min_gap"] = in.min_gap ? nlohmann::json(*in.min_gap) : nlohmann::json(nullptr);
   ElectrostaticResult r;
@@ -163,7 +169,8 @@ surface : bool
     Also return the surface charge samples (result.surface).
 threads : int or None
     OpenMP threads of the solve (0 = all cores; None = the OpenMP default, e.g. OMP_NUM_THREADS).
-    The GIL is released while solving, so other Python threads run meanwhile.
+    The GIL is released while solving, so other Python threads run meanwhile; Ctrl-C stops the solve
+    within a fraction of a second and raises agglo.InterruptedError (a KeyboardInterrupt).
 **options
     Solver settings, named and range-checked as the [electrostatics] keys of a case file
     (docs/config.md):
@@ -193,6 +200,8 @@ ConfigError
     outside its range, touching or overlapping spheres.
 NumericalError
     The solver did not converge (GMRES reached max_iterations).
+InterruptedError
+    Ctrl-C during the solve.
 
 Example
 -------

@@ -3,7 +3,7 @@
 //   agglo.Error             base class (an Exception)
 //   agglo.ConfigError       bad input: key, value, file (also a ValueError)         CLI exit 2
 //   agglo.LimitError        a valid case beyond a run budget (steps, memory, output) CLI exit 2
-//   agglo.NumericalError    blow-up during a run (also an ArithmeticError)           CLI exit 3
+//   agglo.NumericalError    blow-up or invalid run (also an ArithmeticError)         CLI exit 3
 //   agglo.InterruptedError  run cancelled by Ctrl-C (also a KeyboardInterrupt)       CLI exit 130
 #include <iterator>
 
@@ -33,8 +33,9 @@ constexpr ExceptionClass kClasses[] = {
      "A valid case whose estimated steps, memory or output exceed a run budget (docs/limits.md; raise it with the "
      "environment variables AGGLO_MAX_STEPS, AGGLO_MAX_MEMORY, AGGLO_MAX_OUTPUT)."},
     {"NumericalError", "ArithmeticError",
-     "A numerical blow-up detected during a run (NaN, energy explosion; the CLI's exit code 3). Also an "
-     "ArithmeticError."},
+     "A numerical blow-up detected during a run (NaN, energy explosion), or a run that cannot observe its experiment "
+     "(the target not one agglomerate, torn apart before the launch, or never hit by the projectile); the CLI's exit "
+     "code 3. Also an ArithmeticError."},
     {"InterruptedError", "KeyboardInterrupt",
      "The run was cancelled (Ctrl-C while it ran; the CLI's exit code 130). Also a KeyboardInterrupt, so `except "
      "KeyboardInterrupt` stops a script as usual; an output folder (out=) keeps what was written, marked incomplete "

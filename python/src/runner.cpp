@@ -93,6 +93,7 @@ Released run_released(const std::function<run::CommandResult(const run::RunConte
   Worker w;
   w.thread = std::thread([&] {
     if (ctx.threads > 0) omp_set_num_threads(ctx.threads);  // per thread: applies to this worker's runs
+    const CancelScope cancel_scope(ctx.cancel);  // the engines poll it (core/cancel.hpp)
     try {
       w.result = job(ctx);
     } catch (...) {

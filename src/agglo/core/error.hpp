@@ -1,6 +1,7 @@
 #pragma once
 // Error types. ConfigError -> exit code 2 (bad input); NumericalError -> exit code 3
-// (blow-up detected during a run: NaN, energy explosion, violated probability bound);
+// (blow-up detected during a run: NaN, energy explosion, violated probability bound); InvalidRunError
+// (a NumericalError) -> exit code 3 (a run whose result would not observe the experiment of the case);
 // LimitError (a ConfigError) -> exit code 2 (a valid case beyond a run budget, run/budget.hpp);
 // InterruptedError -> exit code 130 (the run was cancelled, e.g. by Ctrl-C; finished jobs of an
 // ensemble are kept in its journal and `--resume` continues).
@@ -23,6 +24,13 @@ struct LimitError : ConfigError {
 
 struct NumericalError : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// A run that cannot give a valid observation of its experiment, found while it runs: the target is not
+// one agglomerate at launch, its contacts changed during the relaxation (e.g. torn apart by a field), or
+// the projectile never touched it. Reported as an error (exit 3, naming the cause), never as an outcome.
+struct InvalidRunError : NumericalError {
+  using NumericalError::NumericalError;
 };
 
 struct InterruptedError : std::runtime_error {

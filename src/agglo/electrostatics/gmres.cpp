@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "agglo/core/cancel.hpp"
+
 namespace agglo::es {
 
 namespace {
@@ -120,6 +122,7 @@ GmresResult gmres(const LinearOperator& A, std::span<const double> b, std::span<
     const std::span<double> r = K.V(0);
     A(x, r);
     ++res.matvecs;
+    poll_cancel();  // every operator application: a cancelled run stops here (core/cancel.hpp)
     for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
     const double beta = std::sqrt(dot(weights, r, r));
     res.residual = beta / bnorm;
@@ -138,6 +141,7 @@ GmresResult gmres(const LinearOperator& A, std::span<const double> b, std::span<
     for (; k < m && res.iterations < max_iterations; ++k) {
       const double hn = arnoldi_step(A, weights, K, k);
       ++res.matvecs;
+      poll_cancel();
       ++res.iterations;
       if (estimate_small(std::abs(g[k + 1])) || hn == 0.0) {
         estimate_converged = true;

@@ -7,6 +7,8 @@
 // the Euclidean product. Stopping rule: ||b - A x|| <= tol ||b|| in that norm. A cycle ends when the
 // Givens residual estimate meets it; with `recheck_true_residual` the residual is then recomputed
 // explicitly (one extra operator application) and GMRES restarts if that is still above tol.
+// After every operator application the calling thread's cancel token is polled (core/cancel.hpp):
+// InterruptedError when it is set.
 #include <functional>
 #include <span>
 #include <vector>

@@ -2,14 +2,41 @@
 
 #include "agglo/impact/experiment.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 
+#include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_electrostatics.hpp"
 
 namespace agglo::impact {
+
+namespace {
+
+// What to change when the particles of a step overlap beyond the electrostatic regularisation. The
+// applied field is named when it dominates: its force scale on a particle, |q| E plus the attraction of
+// the dipoles it induces in touching spheres (~ 4 pi eps0 kappa_0 r^2 E^2), exceeds the largest Coulomb
+// force between two of the charges at contact, q_i q_k / (4 pi eps0 kappa_0 (r_i + r_k)^2).
+std::string overlap_advice(const dem::Particles& p, const es::EsConfig& es) {
+  const auto& keys = settings::electrostatics_settings().solver;
+  const double E = norm(es.external_field);
+  const double k = 4.0 * constants::pi * constants::eps0 * es.medium_permittivity;
+  double field = 0.0, charges = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    field = std::max(field, std::abs(p.q[i]) * E + k * p.r[i] * p.r[i] * E * E);
+    for (std::size_t j = i + 1; j < p.size(); ++j)
+      charges = std::max(charges, std::abs(p.q[i] * p.q[j]) / (k * (p.r[i] + p.r[j]) * (p.r[i] + p.r[j])));
+  }
+  if (E > 0.0 && field > charges)
+    return fmt::format("the applied field {} (|E| = {:.3g} V/m) dominates: its force on a particle, up to {:.3g} N, "
+                       "exceeds the largest force between the charges, {:.3g} N; lower the field, or raise {}",
+                       keys.external_field.dotted(), E, field, charges, keys.min_gap.dotted());
+  return fmt::format("raise {} or lower the impact speed", keys.min_gap.dotted());
+}
+
+}  // namespace
 
 ElectrostaticForce::ElectrostaticForce(const CouplingSettings& s) : s_(s), solver_(es::make_solver(s.es.options)) {}
 
@@ -51,9 +78,8 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
   try {
     prob = es::make_problem(s_.es, x, radius, q, kappa);
   } catch (const NumericalError& e) {
-    throw NumericalError(fmt::format("step {}: {} (particle numbers among the charged/dielectric ones; raise "
-                                     "{} or lower the impact speed)",
-                                     step, e.what(), settings::electrostatics_settings().solver.min_gap.dotted()));
+    throw NumericalError(fmt::format("step {}: {} (particle numbers among the charged/dielectric ones; {})", step,
+                                     e.what(), overlap_advice(p, s_.es)));
   }
   auto t0 = std::chrono::steady_clock::now();
   bool uniform = true;

@@ -83,7 +83,10 @@ void add_steps(EstimateItem& item, double value, std::vector<Term> terms, const 
   add_to(item, 0.0, dt_keys(c));
   if (induced) {
     const auto& es = es::es_keys();
-    add_to(item, 0.0, {std::string(es.solver.dotted()), std::string(impact_keys().agglomerate.permittivity.dotted())});
+    const std::string_view kappa = c.agglomerate.shape == "list"
+                                       ? settings::electrostatics_settings().particles.permittivity.dotted()
+                                       : impact_keys().agglomerate.permittivity.dotted();
+    add_to(item, 0.0, {std::string(es.solver.dotted()), std::string(kappa)});
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numeric>
 
 #include <fmt/format.h>
@@ -9,7 +10,10 @@
 #include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/electrostatic_coupling.hpp"
 #include "agglo/impact/impact_run.hpp"
+#include "agglo/core/cancel.hpp"
 #include "agglo/core/constants.hpp"
+#include "agglo/core/error.hpp"
+#include "agglo/core/settings_electrostatics.hpp"
 
 namespace agglo::impact {
 
@@ -57,7 +61,45 @@ std::vector<std::vector<int>> components(const dem::DemSystem& sys) {
   return groups;
 }
 
-dem::Particles relax(const ImpactCase& c) {
+// The active contacts (i < j) of the first n particles, sorted.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> contact_edges(const dem::DemSystem& sys, std::size_t n) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> e;
+  for (const auto& pr : sys.pairs())
+    if (pr.state.active && pr.i < n && pr.j < n) e.emplace_back(std::min(pr.i, pr.j), std::max(pr.i, pr.j));
+  std::sort(e.begin(), e.end());
+  return e;
+}
+
+std::string edge_list(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& e) {
+  std::string s;
+  for (std::size_t k = 0; k < e.size() && k < 3; ++k) s += fmt::format("{}{}-{}", k ? ", " : "", e[k].first, e[k].second);
+  return e.size() > 3 ? s + ", ..." : s;
+}
+
+// The relaxation must leave the contact graph of the agglomerate as it was built: a field or charges
+// that break or make contacts before the launch change the target the impact is meant to probe.
+void check_relaxed_contacts(const dem::DemSystem& sys, const ImpactCase& c,
+                            const std::vector<std::pair<std::uint32_t, std::uint32_t>>& before, double rg0) {
+  const auto after = contact_edges(sys, sys.particles().size());
+  if (after == before) return;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> broken, made;
+  std::set_difference(before.begin(), before.end(), after.begin(), after.end(), std::back_inserter(broken));
+  std::set_difference(after.begin(), after.end(), before.begin(), before.end(), std::back_inserter(made));
+  const auto& es = settings::electrostatics_settings().solver;
+  const Vec3 e = c.coupling.es.external_field;
+  const std::string cause =
+      norm(e) > 0.0 ? fmt::format("the applied field {} = [{:g}, {:g}, {:g}] V/m (lower it)", es.external_field.dotted(),
+                                  e.x, e.y, e.z)
+                    : std::string("the particle charges (their repulsion exceeds the adhesion)");
+  throw InvalidRunError(fmt::format(
+      "the agglomerate's contact graph changed during the relaxation before the launch ({} of {} contacts broken{}{}, "
+      "{} made{}{}; radius of gyration {:.3g} m -> {:.3g} m at t = {:.3g} s): the target is no longer the agglomerate "
+      "of the case; likely cause: {}",
+      broken.size(), before.size(), broken.empty() ? "" : ": ", edge_list(broken), made.size(),
+      made.empty() ? "" : ": ", edge_list(made), rg0, radius_of_gyration(sys.particles()), sys.time(), cause));
+}
+
+dem::Particles relax(const ImpactCase& c, const ProgressFn& progress) {
   dem::DemSystem sys(build_agglomerate(c), c.dem);
   if (!c.electrostatics || c.time.relax_time <= 0.0) return sys.particles();
   auto es = make_electrostatic_force(c);
@@ -65,11 +107,18 @@ dem::Particles relax(const ImpactCase& c) {
   auto jkr = sys.jkr_for(0, 1);
   const double ke_tol = c.time.relax_energy * jkr.Fc * jkr.deltaC;
   const long max_steps = static_cast<long>(c.time.relax_time / sys.dt());
+  sys.compute_forces();  // the first step's forces: contacts as built (the step reuses them)
+  check_one_agglomerate(sys, sys.particles().size(), "as built, before the relaxation");
+  const auto built = contact_edges(sys, sys.particles().size());
+  const double rg0 = radius_of_gyration(sys.particles());
   for (long s = 0; s < max_steps; ++s) {
+    poll_cancel();  // a step may hold a long electrostatic solve; the solvers poll too (core/cancel.hpp)
     sys.step();
+    if (progress && s % 50 == 0) progress(static_cast<double>(s) / static_cast<double>(max_steps), sys.time());
     if (s > 100 && s % 50 == 0 && sys.kinetic_energy() < ke_tol) break;
   }
   sys.check_state();
+  check_relaxed_contacts(sys, c, built, rg0);
   dem::Particles p = sys.particles();
   for (auto& v : p.v) v = {};
   for (auto& w : p.w) w = {};
@@ -123,9 +172,26 @@ ImpactOutcome classify(const dem::DemSystem& sys, std::size_t n_agg, double kapp
   return out;
 }
 
-dem::Particles relaxed_agglomerate(const ImpactCase& c) {
+void check_one_agglomerate(const dem::DemSystem& sys, std::size_t n_agg, std::string_view when) {
+  std::vector<std::vector<int>> parts;
+  for (auto& g : components(sys))
+    if (static_cast<std::size_t>(g.front()) < n_agg) parts.push_back(std::move(g));  // sorted: front() is the least
+  if (parts.size() <= 1) return;
+  std::sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  std::string members;
+  for (std::size_t k = 0; k < parts.front().size() && k < 5; ++k) members += fmt::format("{}{}", k ? ", " : "", parts.front()[k]);
+  if (parts.front().size() > 5) members += ", ...";
+  const auto& particles = settings::electrostatics_settings().particles.t;
+  throw InvalidRunError(fmt::format(
+      "the target is not one agglomerate ({}): its contact graph has {} separate parts, the smallest of {} "
+      "particle(s) (index {}) touching no other part; every particle must touch the rest (centre distance at most "
+      "r_i + r_k; for a list agglomerate check the [[{}]] positions)",
+      when, parts.size(), parts.front().size(), members, particles.name()));
+}
+
+dem::Particles relaxed_agglomerate(const ImpactCase& c, const ProgressFn& progress) {
   try {
-    return relax(c);
+    return relax(c, progress);
   } catch (const dem::DemInstability& e) {
     rethrow_with_cause(e);
   }

@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "agglo/dem/dem_system.hpp"
@@ -18,7 +19,7 @@ struct TimeseriesRow {
   double t = 0.0;          // time since launch [s]
   double kinetic = 0.0;    // [J]
   double electrostatic = 0.0;  // [J]
-  double u_over_u0 = 0.0;  // electrostatic energy / U0, U0 = 2 pi r_p^3 sigma_f^2 / eps0
+  double u_over_u0 = 0.0;  // electrostatic energy / U0, U0 = 2 pi r_p^3 sigma_f^2 / eps0; NaN (undefined) for a list agglomerate
   double rg = 0.0;         // radius of gyration of all particles [m]
   double rg_agglomerate = 0.0;  // radius of gyration of the original agglomerate particles [m]
   int contacts = 0;
@@ -63,7 +64,15 @@ ImpactOutcome run_impact(const ImpactCase& c, double speed, Recorder* rec = null
                                const ProgressFn& progress = {}, const dem::Particles* relaxed = nullptr);
 
 // The agglomerate alone, relaxed under electrostatics (as built when there is none), at rest.
-dem::Particles relaxed_agglomerate(const ImpactCase& c);
+// `progress(fraction of relax_time, simulated time)` every 50 steps (may be empty). The calling thread's
+// cancel token is polled every step (core/cancel.hpp). InvalidRunError when the agglomerate as built is
+// not one connected contact graph, or when the relaxation changed its contacts (e.g. a field tore it
+// apart): the target would not be the agglomerate of the case.
+dem::Particles relaxed_agglomerate(const ImpactCase& c, const ProgressFn& progress = {});
+
+// InvalidRunError (naming `when` and the smallest detached part) unless the active contacts join the
+// first `n_agg` particles of `sys` into one component.
+void check_one_agglomerate(const dem::DemSystem& sys, std::size_t n_agg, std::string_view when);
 
 // Radius of gyration [(1/N) sum |x_i - x_c|^2]^(1/2) of the first `n` particles (all if n = 0).
 double radius_of_gyration(const dem::Particles& p, std::size_t n = 0);

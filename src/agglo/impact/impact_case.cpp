@@ -84,6 +84,17 @@ void parse_bodies(const ConfigSection& root, ImpactCase& c) {
   a.charged = ka.charged.read(ag);
   a.charge_density = ka.charge_density.read(ag);
   a.permittivity = ka.permittivity.read(ag);
+  if (a.shape == "list") {  // the entries carry their own charges and permittivities; a value other than
+    // the default (which config.resolved.toml lists) would be ignored
+    const settings::Setting* ignored = nullptr;
+    if (a.permittivity != ka.permittivity.def()) ignored = &ka.permittivity;
+    if (a.charge_density != ka.charge_density.def()) ignored = &ka.charge_density;
+    if (a.charged != ka.charged.def()) ignored = &ka.charged;
+    if (ignored)
+      ignored->reject(ag, fmt::format("applies to the built-in shapes only; with {} = \"list\" each [[{}]] entry "
+                                      "sets its own charge and permittivity",
+                                      ka.shape.dotted(), particles.name()));
+  }
   a.orientation = original_orientation(a.shape);
   if (ka.orientation.present(ag)) {  // read only when set, so the resolved config stays unchanged
     a.orientation = ka.orientation.read(ag);

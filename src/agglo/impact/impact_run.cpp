@@ -3,12 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
 #include "agglo/core/constants.hpp"
+#include "agglo/core/error.hpp"
 #include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/electrostatic_coupling.hpp"
+#include "agglo/impact/experiment.hpp"
 
 namespace agglo::impact {
 
@@ -53,7 +56,9 @@ ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double spe
   }
   const double rp = c.agglomerate.radius;
   const double sigma = c.agglomerate.charge_density;
-  u0_ = 2.0 * constants::pi * rp * rp * rp * sigma * sigma / constants::eps0;
+  // U0 is the seed's scale of the built-in shapes; a list agglomerate has no sigma_f of its own: NaN.
+  u0_ = c.agglomerate.shape == "list" ? std::numeric_limits<double>::quiet_NaN()
+                                      : 2.0 * constants::pi * rp * rp * rp * sigma * sigma / constants::eps0;
   kappa0_ = es_ ? c.medium_permittivity : 1.0;
   const double gap = c.projectile.gap_radii * rp;
   max_approach_ = c.time.max_approach > 0.0 ? c.time.max_approach : 5.0 * (gap + rp) / std::max(speed, 1e-3) + 1e-4;
@@ -81,6 +86,7 @@ ImpactOutcome ImpactRun::run(const BoundaryFn& boundary) {
 
 void ImpactRun::launch() {
   sys_.compute_forces();  // contacts and electrostatic energy of the launch state
+  check_one_agglomerate(sys_, n_agg_, "at the launch of the projectile");
   arm_watchdog();
   record();
   at_.phase = ImpactPhase::approach;
@@ -104,10 +110,7 @@ void ImpactRun::end_approach(bool touched) {
   guard();
   at_.contact = touched;
   at_.t_contact = since_launch();
-  if (!touched) {
-    at_.phase = ImpactPhase::done;
-    return;
-  }
+  if (!touched) missed();
   at_.phase = ImpactPhase::contact;
   at_.extensions = 0;
   at_.t_from = sys_.time();
@@ -139,6 +142,32 @@ void ImpactRun::end_segment(bool early) {
   ++at_.extensions;
   at_.t_from = sys_.time();
   at_.t_stop += c_.time.extension;
+}
+
+// No contact by the end of the approach: no impact happened, so there is nothing to classify.
+void ImpactRun::missed() const {
+  const auto& p = sys_.particles();
+  const auto& k = impact_keys();
+  Vec3 c;
+  for (std::size_t q = 0; q < n_agg_; ++q) c += p.x[q] / static_cast<double>(n_agg_);
+  double reach = 0.0;  // largest distance from the launch line at which the projectile still touches
+  for (std::size_t q = 0; q < n_agg_; ++q)
+    reach = std::max(reach, std::hypot(p.x[q].y - c.y, p.x[q].z - c.z) + p.r[q] + p.r[n_agg_]);
+  const double lateral = std::abs(c_.projectile.offset_radii) * c_.agglomerate.radius;
+  std::string cause;
+  if (lateral > reach)
+    cause = fmt::format("the offset {} = {:g} r_p = {:.3g} m passes beside the agglomerate (it reaches {:.3g} m from "
+                        "its centroid across the flight path)",
+                        k.projectile.offset_radii.dotted(), c_.projectile.offset_radii, lateral, reach);
+  else if (es_)
+    cause = "the electrostatic forces (charges or applied field) deflected or stopped the projectile, or moved the "
+            "agglomerate away";
+  else
+    cause = fmt::format("{} is too short for the approach", k.time.max_approach.dotted());
+  throw InvalidRunError(fmt::format("the projectile never touched the agglomerate within the approach limit {:.3g} s "
+                                    "({} = {:g}, 0 = 5x the ballistic time): no impact happened, so there is no "
+                                    "outcome; likely cause: {}",
+                                    max_approach_, k.time.max_approach.dotted(), c_.time.max_approach, cause));
 }
 
 ImpactOutcome ImpactRun::outcome() const {
@@ -216,7 +245,8 @@ void ImpactRun::record() {
   if (row_due || snap_due) guard();
   if (row_due) {
     const double ues = sys_.external_energy();
-    rec_->rows.push_back({t, sys_.kinetic_energy(), ues, u0_ > 0 ? ues / u0_ : 0.0,
+    const double u_rel = std::isnan(u0_) ? u0_ : (u0_ > 0 ? ues / u0_ : 0.0);
+    rec_->rows.push_back({t, sys_.kinetic_energy(), ues, u_rel,
                           radius_of_gyration(sys_.particles()), radius_of_gyration(sys_.particles(), n_agg_),
                           sys_.active_contacts()});
     at_.next_row += c_.output.timeseries_interval;

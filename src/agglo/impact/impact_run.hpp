@@ -4,6 +4,8 @@
 // undecided), classification. run_impact() (experiment.hpp) runs one to the end; a restartable
 // caller (agglo collide --checkpoint) asks for state() at step boundaries and restores a saved one
 // into a fresh run of the same case before run(). Every step is recorded on the output clock.
+// A run that cannot observe the experiment throws InvalidRunError (core/error.hpp): the agglomerate is
+// not one connected contact graph at the launch, or the projectile never touches it.
 #include <functional>
 #include <memory>
 
@@ -38,6 +40,7 @@ class ImpactRun {
   void advance();
   void approach_step();
   void end_approach(bool touched);
+  [[noreturn]] void missed() const;
   void contact_step();
   void end_segment(bool early);
   ImpactOutcome outcome() const;
@@ -56,7 +59,7 @@ class ImpactRun {
   Recorder* rec_;
   ProgressFn progress_;
   std::unique_ptr<dem::ExternalForce> es_;
-  double u0_ = 0.0;      // U0 = 2 pi r_p^3 sigma_f^2 / eps0 [J]
+  double u0_ = 0.0;      // U0 = 2 pi r_p^3 sigma_f^2 / eps0 [J]; NaN for a list agglomerate
   double kappa0_ = 1.0;  // medium permittivity of the point-charge binding
   double max_approach_ = 0.0;  // longest approach [s]
   ImpactProgress at_;  // phase, segment, output clocks, watchdog

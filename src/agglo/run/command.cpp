@@ -177,6 +177,7 @@ CommandResult execute_planned(const Command& cmd, Config& cfg, const Estimate& p
   };
   CommandResult res;
   try {
+    const CancelScope cancel_scope(ctx.cancel);  // the engines poll it (core/cancel.hpp)
     res = cmd.run(cfg, out, ctx);
   } catch (const ConfigError& e) {  // input found invalid only by the engine: leave no new folder behind
     if (!existed) std::filesystem::remove_all(folder, ec);

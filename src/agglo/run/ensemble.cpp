@@ -47,6 +47,7 @@ std::vector<std::size_t> pending_jobs(const std::vector<Job>& jobs, const Journa
 void run_one(const Job& job, std::size_t index, int threads, const EnsembleOptions& opt, JobOutcome& out) {
   const auto start = std::chrono::steady_clock::now();
   try {
+    const CancelScope cancel_scope(opt.cancel);  // the engines of the job poll it (core/cancel.hpp)
     throw_if_cancelled(opt.cancel);
     out.result = job.run(JobContext{index, threads, opt.cancel});
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -97,6 +98,8 @@ template <class E>
   } catch (const InterruptedError& e) {
     throw_with(e, prefix + e.what());
   } catch (const ConfigError& e) {
+    throw_with(e, prefix + e.what());
+  } catch (const InvalidRunError& e) {  // before its base class
     throw_with(e, prefix + e.what());
   } catch (const NumericalError& e) {
     throw_with(e, prefix + e.what());

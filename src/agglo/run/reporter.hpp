@@ -3,10 +3,11 @@
 // print: they call a Reporter, and each front end directs it (the CLI to the terminal, a Python
 // module to a callback, an MPI rank to rank 0). Calls may come from any thread; implementations
 // serialise them.
-#include <atomic>
 #include <mutex>
 #include <string>
 #include <string_view>
+
+#include "agglo/core/cancel.hpp"
 
 namespace agglo::run {
 
@@ -48,17 +49,9 @@ class TerminalReporter final : public Reporter {
   std::size_t width_ = 0;
 };
 
-// Cooperative cancellation: set from a signal handler or another thread, polled by runs between steps
-// and by the ensemble runner between jobs. Lock-free, so setting it is async-signal-safe.
-class CancelToken {
- public:
-  void cancel() noexcept { flag_.store(true, std::memory_order_relaxed); }
-  bool cancelled() const noexcept { return flag_.load(std::memory_order_relaxed); }
-  void reset() noexcept { flag_.store(false, std::memory_order_relaxed); }
-
- private:
-  std::atomic<bool> flag_{false};
-};
+// Cooperative cancellation (core/cancel.hpp): set from a signal handler or another thread, polled by runs
+// between steps, by the ensemble runner between jobs and, through a CancelScope, by the engines.
+using CancelToken = agglo::CancelToken;
 
 // Throws InterruptedError when `token` is set (no-op for a null token).
 void throw_if_cancelled(const CancelToken* token);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "agglo/core/cancel.hpp"
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/electrostatics/bem/bem_operator.hpp"
@@ -172,6 +173,7 @@ Solution BemSolver::solve(const Problem& prob) {
   const bem::PatchSet ps = bem::make_patch_set(prob, unit_);
   const std::size_t N = ps.n;
   bem::BemOperator A(ps, opt_);
+  poll_cancel();  // after the set-up (patches, FMM tree); GMRES polls after every matvec
   // rhs = P (b - A sigma0)
   std::vector<double> rhs = right_hand_side(prob, ps);
   const std::vector<double> sigma0 = uniform_bound_charge(prob, ps);
@@ -191,7 +193,10 @@ Solution BemSolver::solve(const Problem& prob) {
   std::vector<Vec3> e_b;
   A.fields(q, &phi_b, &e_b);
   double energy = 0.0;
-  for (std::size_t b = 0; b < nb; ++b) energy += body_force(prob, ps, b, sigma_b, q, phi_b, e_b, sol);
+  for (std::size_t b = 0; b < nb; ++b) {
+    poll_cancel();
+    energy += body_force(prob, ps, b, sigma_b, q, phi_b, e_b, sol);
+  }
   sol.energy = energy;
 
   surface_.resize(N);

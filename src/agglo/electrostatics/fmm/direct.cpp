@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agglo/core/cancel.hpp"
+
 namespace agglo::es::fmm {
 
 Points::Points(std::span<const Vec3> p) : x(p.size()), y(p.size()), z(p.size()) {
@@ -23,12 +25,15 @@ void direct_sum(std::span<const Vec3> targets, std::span<const Vec3> sources,
   std::vector<double> phi(nt, 0.0), ex(nt, 0.0), ey(nt, 0.0), ez(nt, 0.0);
   constexpr std::size_t block = 64;
   const std::size_t nblocks = (nt + block - 1) / block;
+  const CancelToken* cancel = current_cancel_token();  // OpenMP threads have none of their own
 #pragma omp parallel for schedule(dynamic, 4)
   for (std::size_t b = 0; b < nblocks; ++b) {
+    if (cancel && cancel->cancelled()) continue;  // cancelled: skip the rest, thrown below
     const std::size_t i0 = b * block, n = std::min(block, nt - i0);
     p2p_accumulate(&t.x[i0], &t.y[i0], &t.z[i0], n, s.x.data(), s.y.data(), s.z.data(),
                    charges.data(), s.size(), &phi[i0], field ? &ex[i0] : nullptr, &ey[i0], &ez[i0]);
   }
+  poll_cancel();
   if (potential) *potential = std::move(phi);
   if (field) {
     field->resize(nt);
@@ -45,8 +50,10 @@ void direct_normal_field(const Points& pts, const Points& normals, std::span<con
   // Every row is summed whole, over j in a fixed order, by one thread: the result does not depend on the
   // thread count or the schedule (a symmetric evaluation with per-thread accumulators, half the
   // arithmetic, gave last-bit differences between runs on more than one thread). j = i gives r = 0: skipped.
+  const CancelToken* cancel = current_cancel_token();  // OpenMP threads have none of their own
 #pragma omp parallel for schedule(dynamic, 16)
   for (std::size_t i = 0; i < n; ++i) {
+    if (cancel && cancel->cancelled()) continue;  // cancelled: skip the rest, thrown below
     const double xi = X[i], yi = Y[i], zi = Z[i], nxi = NX[i], nyi = NY[i], nzi = NZ[i];
     double acc = 0.0;
 #pragma omp simd reduction(+ : acc)
@@ -59,6 +66,7 @@ void direct_normal_field(const Points& pts, const Points& normals, std::span<con
     }
     y[i] = acc;
   }
+  poll_cancel();
 }
 
 }  // namespace agglo::es::fmm

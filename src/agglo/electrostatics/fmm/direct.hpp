@@ -48,7 +48,8 @@ inline void p2p_accumulate(const double* tx, const double* ty, const double* tz,
   }
 }
 
-// Potential and/or field at targets from charged sources (OpenMP over targets).
+// Potential and/or field at targets from charged sources (OpenMP over targets). Both sums stop early
+// and throw InterruptedError when the calling thread's cancel token is set (core/cancel.hpp).
 void direct_sum(std::span<const Vec3> targets, std::span<const Vec3> sources,
                 std::span<const double> charges, std::vector<double>* potential,
                 std::vector<Vec3>* field);

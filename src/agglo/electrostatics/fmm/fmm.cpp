@@ -4,11 +4,16 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "agglo/core/cancel.hpp"
 #include "agglo/electrostatics/fmm/operators.hpp"
 
 namespace agglo::es::fmm {
 
 namespace {
+
+// The cancel token of the calling thread, read inside the OpenMP regions below (their threads have
+// none of their own): a cancelled run skips the rest of a pass, and evaluate() throws after it.
+bool cancelled(const CancelToken* token) { return token && token->cancelled(); }
 
 void check_options(const FmmOptions& o) {
   if (o.order < 1 || o.order > 40) throw std::invalid_argument("fmm: order must be in [1, 40]");
@@ -20,12 +25,14 @@ void check_options(const FmmOptions& o) {
 std::vector<cplx> upward_pass(const Octree& S, const std::vector<double>& q, int p) {
   const int ts = tri_size(p);
   std::vector<cplx> M(S.cells.size() * ts, cplx(0.0, 0.0));
+  const CancelToken* cancel = current_cancel_token();  // OpenMP threads have none of their own
   for (int lev = S.levels() - 1; lev >= 0; --lev) {
 #pragma omp parallel
     {
       OperatorScratch scratch(p);
 #pragma omp for schedule(dynamic, 4)
       for (int c = S.level_begin[lev]; c < S.level_begin[lev + 1]; ++c) {
+        if (cancelled(cancel)) continue;  // skip the rest; evaluate() throws after the pass
         const Cell& cell = S.cells[c];
         cplx* Mc = &M[c * ts];
         if (cell.leaf()) {
@@ -53,12 +60,14 @@ std::vector<cplx> m2l_pass(const Octree& T, const Octree& S, const InteractionLi
 
   const std::size_t ntc = T.cells.size();
   std::vector<cplx> L(ntc * ts, cplx(0.0, 0.0));
+  const CancelToken* cancel = current_cancel_token();
 #pragma omp parallel
   {
     OperatorScratch scratch(p);
 #pragma omp for schedule(dynamic, 2)
     for (std::size_t c = 0; c < ntc; ++c)
       for (int b : lists.m2l[c])
+        if (!cancelled(cancel))
         m2l(&Mre[b * fs], &Mim[b * fs], T.cells[c].center - S.cells[b].center, p, &L[c * ts], scratch);
   }
   return L;
@@ -91,13 +100,14 @@ void leaf_pass(const Octree& T, const Octree& S, const InteractionLists& lists, 
                const std::vector<double>& q, int p, bool want_field, LeafSums& out) {
   const int ts = tri_size(p);
   const Points& tp = T.sorted;
+  const CancelToken* cancel = current_cancel_token();
 #pragma omp parallel
   {
     OperatorScratch scratch(p);
 #pragma omp for schedule(dynamic, 2)
     for (std::size_t c = 0; c < T.cells.size(); ++c) {
       const Cell& cell = T.cells[c];
-      if (!cell.leaf()) continue;
+      if (!cell.leaf() || cancelled(cancel)) continue;
       for (int i = cell.begin; i < cell.end; ++i) {
         Vec3 e;
         out.phi[i] += l2p(&L[c * ts], Vec3{tp.x[i], tp.y[i], tp.z[i]} - cell.center, p, want_field ? &e : nullptr,
@@ -155,11 +165,16 @@ void LaplaceFmm::evaluate(std::span<const double> charges, std::vector<double>* 
   std::vector<double> q(ns);
   for (std::size_t k = 0; k < ns; ++k) q[k] = charges[S.order[k]];
 
+  // A cancelled run skips the rest of a pass and stops after it (core/cancel.hpp).
   const std::vector<cplx> M = upward_pass(S, q, p);
+  poll_cancel();
   std::vector<cplx> L = m2l_pass(T, S, lists_, M, p);
+  poll_cancel();
   downward_pass(T, p, L);
+  poll_cancel();
   LeafSums out(nt);
   leaf_pass(T, S, lists_, L, q, p, field != nullptr, out);
+  poll_cancel();
 
   // ---- back to input order ----
   if (potential) {

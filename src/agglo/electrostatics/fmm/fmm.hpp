@@ -10,7 +10,9 @@
 // Accuracy is set by the expansion order p and the opening angle theta (MAC
 // r_T + r_S < theta |c_T - c_S|); measured errors vs p are in docs/bem_fmm.md.
 // The tree and interaction lists are built once in the constructor and reused by every
-// evaluate() call (the BEM calls evaluate once per GMRES iteration on a fixed geometry).
+// evaluate() call (the BEM calls evaluate once per GMRES iteration on a fixed geometry). When the
+// calling thread's cancel token is set (core/cancel.hpp), a pass skips its remaining cells and
+// evaluate() throws InterruptedError after it.
 #include <span>
 #include <vector>
 

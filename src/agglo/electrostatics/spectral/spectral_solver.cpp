@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "agglo/core/cancel.hpp"
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_electrostatics.hpp"
@@ -111,6 +112,7 @@ int SpectralSolver::choose_degree(const Problem& p, double& est_err) {
 void SpectralSolver::matvec_M(const double* beta, double* alpha) {
   std::fill(alpha, alpha + std::size_t(N_) * nc_, 0.0);
   for (auto& pr : pairs_) {
+    poll_cancel();  // O(L^3) per pair: a cancelled run stops within one pair (core/cancel.hpp)
     const int Lp = pr.L;
     const int np = sh::ncoef(Lp);
     const double* b_i = beta + std::size_t(pr.i) * nc_;
@@ -134,6 +136,7 @@ void SpectralSolver::build_pairs(const Problem& p) {
   std::size_t q = 0;
   for (int i = 0; i < N; ++i)
     for (int k = i + 1; k < N; ++k, ++q) {
+      poll_cancel();
       auto& pr = pairs_[q];
       const auto& a = p.spheres[i];
       const auto& b = p.spheres[k];

@@ -1,4 +1,6 @@
 // agglo acoustic: DSMC acoustic agglomeration of fine particles with droplets (docs/model.md Part C).
+#include <fmt/format.h>
+
 #include "agglo/acoustics/estimate.hpp"
 #include "agglo/acoustics/run.hpp"
 #include "agglo/core/error.hpp"
@@ -59,6 +61,11 @@ class Acoustic final : public Command {
     r.seed = static_cast<long long>(c.engine.seed);
     r.data = std::make_shared<const io::Dataset>(writers::acoustic_dataset(obs));
     if (c.output.plots) r.plot_script = "plot_acoustic.py";
+    const auto& last = obs.efficiency.back();
+    ctx.report().info(fmt::format("{}: t = {:.6g} s, {} samples -> fine-particle removal efficiency {:.4g}, "
+                                  "pure-droplet fraction {:.4g}; outputs in {}",
+                                  std::filesystem::path(cfg.file()).stem().string(), last.t, obs.samples,
+                                  last.fine_efficiency, last.pure_droplet_fraction, out.path().string()));
     return r;
   }
 };

@@ -30,7 +30,7 @@ class Breakup final : public ImpactCommand {
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const auto c = impact_case(cfg);
-    const auto relaxed = impact::relaxed_agglomerate(c);  // independent of the projectile offset
+    const auto relaxed = relaxed_target(c, ctx);  // independent of the projectile offset
     Journal journal(out.file("journal.jsonl"), impact_context(name(), cfg), ctx.resume);
     const EnsembleOptions opt{ctx.threads, &journal, ctx.cancel, &ctx.report(), "breakup"};
     const auto res = impact::breakup_probability(c.breakup, c.projectile.offset_radii, impact_batch(c, relaxed, opt));

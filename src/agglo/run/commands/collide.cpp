@@ -39,7 +39,7 @@ class Collide final : public ImpactCommand {
     impact::ImpactOutcome res;
     try {
       // A resumed run replaces the launch state, so the (possibly long) relaxation is skipped.
-      impact::ImpactRun run(c, resumed ? impact::build_agglomerate(c) : impact::relaxed_agglomerate(c),
+      impact::ImpactRun run(c, resumed ? impact::build_agglomerate(c) : relaxed_target(c, ctx),
                             c.projectile.speed, &rec, progress);
       if (resumed) run.restore(*resumed);
       res = run.run([&](const impact::ImpactRun& r) { checkpoints.at_boundary(r); });

@@ -39,7 +39,7 @@ class Vcrit final : public ImpactCommand {
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const auto c = impact_case(cfg);
     warn_idle_slots(c.vcrit.points_per_round, ctx);
-    const auto relaxed = impact::relaxed_agglomerate(c);  // one relaxation for every speed
+    const auto relaxed = relaxed_target(c, ctx);  // one relaxation for every speed
     Journal journal(out.file("journal.jsonl"), impact_context(name(), cfg), ctx.resume);
     const EnsembleOptions opt{ctx.threads, &journal, ctx.cancel, nullptr, "vcrit"};
     const auto res = impact::find_vcrit(c.vcrit, speed_batch(c, relaxed, opt),

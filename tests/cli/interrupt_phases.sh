@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# SIGTERM and SIGINT stop a run in every phase within 2 s (issue 23 item 1; docs/limits.md,
+# "Interruption"): the pre-impact relaxation of a charged list agglomerate (30 polydisperse spheres,
+# kappa_p = 3.8) with the spectral and the BEM solver, and the static solve of `agglo electrostatics`
+# (spectral set-up and GMRES, BEM with the FMM and with the direct matvec). Each run is signalled once
+# it has been inside its engine for about a second; it must end within 2 s of the signal with exit 143
+# (SIGTERM) or 130 (SIGINT), one line on stderr, run.json "incomplete" and no temporary file. Before
+# the engines polled the cancel token these runs went on for minutes.
+source "$(dirname "$0")/lib.sh"
+LIMIT_MS=2000
+
+cluster() {  # cluster SOLVER [extra [electrostatics] lines]: the 30-sphere list (an electrostatics case)
+  printf '[electrostatics]\nsolver = "%s"\n%s\n\n' "$1" "${2:-}"
+  /usr/bin/python3 "$SRC/tests/cli/list_cluster.py" 30 3.8
+}
+target() {  # target SOLVER: the same spheres as a list agglomerate (an impact case)
+  printf 'name = "esp30"\n[agglomerate]\nshape = "list"\nradius = 10e-6\n'
+  cluster "$1"
+}
+target spectral > "$T/spectral.toml"
+target bem > "$T/bem.toml"
+cluster spectral > "$T/es_spectral.toml"
+cluster bem > "$T/es_bem.toml"
+cluster bem 'matvec = "direct"
+patches_per_sphere = 400' > "$T/es_direct.toml"
+
+now_ms() { date +%s%3N; }
+
+# interrupt NAME SIGNAL EXPECTED_CODE COMMAND CASE [ARGS...]: runs the command, waits until run.json
+# says "running" and then one more second, sends SIGNAL and checks the end.
+interrupt() {
+  local name=$1 sig=$2 code=$3 cmd=$4 case=$5
+  shift 5
+  local out="$T/$name"
+  "$A" -q "$cmd" "$case" --out "$out" --threads 2 --no-plots "$@" > /dev/null 2> "$T/$name.err" &
+  local pid=$!
+  for _ in $(seq 600); do
+    grep -q '"running"' "$out/run.json" 2> /dev/null && break
+    kill -0 $pid 2> /dev/null || break
+    sleep 0.05
+  done
+  sleep 1
+  kill -0 $pid 2> /dev/null || fail "$name: the run ended before the signal (exit $(wait $pid; echo $?)): $(cat "$T/$name.err")"
+  local t0
+  t0=$(now_ms)
+  kill -"$sig" $pid
+  wait $pid
+  local rc=$? dt=$(($(now_ms) - t0))
+  [ $rc -eq "$code" ] || fail "$name: SIG$sig gave exit $rc, expected $code: $(cat "$T/$name.err")"
+  [ $dt -le $LIMIT_MS ] || fail "$name: SIG$sig took $dt ms to stop the run (limit $LIMIT_MS ms)"
+  [ "$(wc -l < "$T/$name.err")" -eq 1 ] || fail "$name: message not one line: $(cat "$T/$name.err")"
+  grep -q '"status": *"incomplete"' "$out/run.json" || fail "$name: run.json not incomplete: $(cat "$out/run.json")"
+  ! find "$out" -name '*tmp-*' | grep -q . || fail "$name: temporary files left: $(find "$out" -name '*tmp-*')"
+  echo "ok   $name: SIG$sig -> exit $rc after $dt ms"
+}
+
+# During the relaxation (before the launch): the time series holds no row yet.
+interrupt relax_spectral TERM 143 collide "$T/spectral.toml"
+[ "$(wc -l < "$T/relax_spectral/timeseries.csv")" -eq 1 ] || fail "relax_spectral: not stopped in the relaxation"
+interrupt relax_bem INT 130 collide "$T/bem.toml"
+[ "$(wc -l < "$T/relax_bem/timeseries.csv")" -eq 1 ] || fail "relax_bem: not stopped in the relaxation"
+# During a static solve: no result file is written.
+interrupt solve_spectral INT 130 electrostatics "$T/es_spectral.toml"
+interrupt solve_bem TERM 143 electrostatics "$T/es_bem.toml"
+interrupt solve_direct INT 130 electrostatics "$T/es_direct.toml"
+for d in solve_spectral solve_bem solve_direct; do
+  [ ! -e "$T/$d/forces.csv" ] || fail "$d: forces.csv written by an interrupted solve"
+done
+echo "PASS interrupt_phases"
