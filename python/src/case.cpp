@@ -16,6 +16,8 @@ namespace agglo::python {
 
 namespace {
 
+constexpr int kMaxDepth = 64;  // nesting levels of a dict or value (docs/limits.md)
+
 std::string toml_string(const std::string& s) {
   std::string q = "\"";
   for (const char ch : s) {
@@ -49,19 +51,23 @@ bool is_table_list(py::handle v) {
 
 // `d` as the body of a TOML table called `path` ("" = the document): plain keys first, then sub-tables
 // ([path.key]) and arrays of tables ([[path.key]]).
-void emit_table(std::string& out, const std::string& path, const py::dict& d) {
+// `depth`: the tables above it (kMaxDepth at most: a dict that contains itself ends there).
+void emit_table(std::string& out, const std::string& path, const py::dict& d, int depth) {
+  if (depth > kMaxDepth)
+    throw ConfigError(fmt::format("Case(dict): '{}' is nested deeper than {} levels (a dict or list that contains "
+                                  "itself?)", path.substr(0, path.find('.')), kMaxDepth));
   for (auto [k, v] : d)
     if (!py::isinstance<py::dict>(v) && !is_table_list(v))
-      out += toml_key(py::str(k)) + " = " + toml_value(v) + "\n";
+      out += toml_key(py::str(k)) + " = " + toml_value(v, depth + 1) + "\n";
   for (auto [k, v] : d) {
     const std::string sub = (path.empty() ? "" : path + ".") + toml_key(py::str(k));
     if (py::isinstance<py::dict>(v)) {
       out += "\n[" + sub + "]\n";
-      emit_table(out, sub, py::reinterpret_borrow<py::dict>(v));
+      emit_table(out, sub, py::reinterpret_borrow<py::dict>(v), depth + 1);
     } else if (is_table_list(v)) {
       for (auto item : py::reinterpret_borrow<py::sequence>(v)) {
         out += "\n[[" + sub + "]]\n";
-        emit_table(out, sub, py::reinterpret_borrow<py::dict>(item));
+        emit_table(out, sub, py::reinterpret_borrow<py::dict>(item), depth + 1);
       }
     }
   }
@@ -97,26 +103,32 @@ std::string toml_of(const Case& c, const std::optional<std::string>& command) {
 
 Config from_dict(const py::dict& d) {
   std::string text;
-  emit_table(text, "", d);
+  emit_table(text, "", d, 0);
   return Config::from_string(text, "<dict>");
 }
 
 }  // namespace
 
-std::string toml_value(py::handle v) {
+std::string toml_value(py::handle v, int depth) {
+  if (depth > kMaxDepth)
+    throw ConfigError(fmt::format("a value nested deeper than {} levels (a list or dict that contains itself?)",
+                                  kMaxDepth));
   if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "true" : "false";
   if (py::isinstance<py::str>(v)) return toml_string(v.cast<std::string>());
   if (py::isinstance<py::dict>(v)) {
     std::string s;
     for (auto [k, x] : py::reinterpret_borrow<py::dict>(v))
-      s += (s.empty() ? "" : ", ") + toml_key(py::str(k)) + " = " + toml_value(x);
+      s += (s.empty() ? "" : ", ") + toml_key(py::str(k)) + " = " + toml_value(x, depth + 1);
     return "{" + s + "}";
   }
+  // NumPy arrays, 0-d arrays and scalars: the Python values they hold (tolist keeps float as float; an
+  // array stays a list even of size 1, so it is never taken for a scalar and truncated by __index__).
+  if (py::hasattr(v, "ndim") && py::hasattr(v, "tolist")) return toml_value(v.attr("tolist")(), depth + 1);
   if (py::hasattr(v, "__index__")) return py::str(py::int_(py::reinterpret_borrow<py::object>(v)));
   if (py::hasattr(v, "__float__")) return toml_real(v.cast<double>());
   if (py::isinstance<py::iterable>(v) && !py::isinstance<py::bytes>(v)) {
     std::string s;
-    for (auto x : py::reinterpret_borrow<py::iterable>(v)) s += (s.empty() ? "" : ", ") + toml_value(x);
+    for (auto x : py::reinterpret_borrow<py::iterable>(v)) s += (s.empty() ? "" : ", ") + toml_value(x, depth + 1);
     return "[" + s + "]";
   }
   throw py::type_error(fmt::format("cannot write a {} as a TOML value", std::string(py::str(v.get_type()))));

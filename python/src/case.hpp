@@ -15,8 +15,10 @@ struct Case {
 };
 
 // A Python value as a TOML value: bool, int, float (always with '.', 'e', inf or nan), str (a quoted
-// string), list/tuple/NumPy array (an array), dict (an inline table). TypeError for anything else.
-std::string toml_value(pybind11::handle value);
+// string), list/tuple/NumPy array (an array, of any size), NumPy scalar or 0-d array (its Python value),
+// dict (an inline table). TypeError for anything else; ConfigError nested deeper than 64 levels (`depth`:
+// the levels above `value`).
+std::string toml_value(pybind11::handle value, int depth = 0);
 
 // A copy of the case `c` (the functions never change the caller's case).
 Config copy_of(const Case& c);

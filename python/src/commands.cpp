@@ -2,6 +2,7 @@
 // Each copies the case, applies its shortcuts (collide: speed), runs run::execute on a worker thread
 // (runner.hpp) into `out` or a temporary folder, and returns an agglo.Result.
 #include <deque>
+#include <limits>
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
@@ -64,10 +65,12 @@ const char* kept(std::string text) {
 }
 
 // The docstring of a command's function.
-const char* doc_of(const run::Command& cmd, const std::string& shortcuts) {
-  return kept(fmt::format("{}.\n\n  case       agglo.Case (not changed: the run uses a copy)\n{}{}\n\n"
+const char* doc_of(const run::Command& cmd, const std::string& call, const std::string& shortcuts) {
+  return kept(fmt::format("{}({}out=None, threads=0, progress=None, format=\"csv,netcdf\", checkpoint=None, "
+                          "resume=False, overwrite=False, max_steps=None, max_memory=None, max_output=None)\n\n"
+                          "{}.\n\n  case       agglo.Case (not changed: the run uses a copy)\n{}{}\n\n"
                           "Returns an agglo.Result (summary, seed, out, NumPy arrays).",
-                          cmd.help(), shortcuts, kOptionsDoc));
+                          cmd.name(), call, cmd.help(), shortcuts, kOptionsDoc));
 }
 
 // "-v,--speed" -> "speed" (the argument name of a shortcut).
@@ -77,61 +80,50 @@ std::string long_flag(const std::string& flags) {
   return flags.substr(at + 2);
 }
 
+// The function of `cmd`: positional (case, and the shortcut's keyword when the command has one), the
+// common keywords (options_of) and seeds for a command with a seed key.
+py::object call_command(const run::Command& cmd, const py::args& args, const py::kwargs& kwargs) {
+  const auto shortcuts = cmd.shortcuts();
+  std::vector<std::string> positional{"case"};
+  if (!shortcuts.empty()) positional.push_back(long_flag(shortcuts[0].flags));
+  Arguments a(fmt::format("agglo.{}", cmd.name()), args, kwargs, positional);
+  const Case& c = case_of(a);
+  std::vector<std::string> overrides;
+  if (!shortcuts.empty())
+    if (const auto value = a.real(positional[1]))
+      overrides.push_back(fmt::format("{}={}", shortcuts[0].key->dotted(), toml_value(py::float_(*value))));
+  const long long seeds = cmd.seed_key() ? a.integer("seeds", 1, 1, kNoLimit) : 1;
+  const auto o = options_of(a, true);
+  a.finish();
+  return py::cast(seeds == 1 ? run_command(cmd, c, o, overrides) : run_seed_ensemble(cmd, c, o, seeds));
+}
+
 }  // namespace
 
 void bind_commands(py::module_& m) {
   for (const run::Command* cmd : run::all_commands()) {
-    const std::string name(cmd->name());
     const auto shortcuts = cmd->shortcuts();
     if (shortcuts.size() > 1) throw std::logic_error("python: only one shortcut per command is bound");
+    std::string doc, call = "case";
     if (shortcuts.size() == 1) {  // collide's speed: a keyword that sets its config key
       const run::Shortcut sc = shortcuts[0];
-      const char* arg = kept(long_flag(sc.flags));
-      const auto doc = fmt::format("  {:<10} {} [{}] (sets {}; None: the case's value)\n", arg, sc.key->info().meaning,
-                                   sc.key->info().unit, sc.key->dotted());
-      m.def(
-          name.c_str(),
-          [cmd, sc](const Case& c, std::optional<double> value, py::object out, int threads,
-                             py::object progress, py::object format, std::optional<double> checkpoint, bool resume,
-                             bool overwrite) {
-            std::vector<std::string> overrides;
-            if (value) overrides.push_back(fmt::format("{}={}", sc.key->dotted(), toml_value(py::float_(*value))));
-            return run_command(*cmd, c, options_of(out, threads, progress, format, checkpoint, resume, overwrite),
-                               overrides);
-          },
-          py::arg("case"), py::arg_v(arg, py::none(), "None"), py::kw_only(), py::arg("out") = py::none(),
-          py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("format") = "csv,netcdf",
-          py::arg("checkpoint") = py::none(), py::arg("resume") = false, py::arg("overwrite") = false,
-          doc_of(*cmd, doc));
-      continue;
+      const auto arg = long_flag(sc.flags);
+      call += ", " + arg + "=None";
+      doc = fmt::format("  {:<10} {} [{}] (sets {}; None: the case's value)\n", arg, sc.key->info().meaning,
+                        sc.key->info().unit, sc.key->dotted());
     }
+    call += ", *, ";
     if (cmd->seed_key()) {  // acoustic: seeds=N
-      const auto doc = fmt::format("  seeds      N >= 2: a seed ensemble of N members (seeds from {} and the member "
-                                   "index; docs/acoustics.md): the summary gives every scalar's mean, stderr and n, "
-                                   "the arrays the mean and stderr of every result; 1: the single run\n",
-                                   cmd->seed_key()->dotted());
-      m.def(
-          name.c_str(),
-          [cmd](const Case& c, long long seeds, py::object out, int threads, py::object progress, py::object format,
-                std::optional<double> checkpoint, bool resume, bool overwrite) {
-            const auto o = options_of(out, threads, progress, format, checkpoint, resume, overwrite);
-            return seeds == 1 ? run_command(*cmd, c, o, {}) : run_seed_ensemble(*cmd, c, o, seeds);
-          },
-          py::arg("case"), py::kw_only(), py::arg("seeds") = 1, py::arg("out") = py::none(), py::arg("threads") = 0,
-          py::arg("progress") = py::none(), py::arg("format") = "csv,netcdf", py::arg("checkpoint") = py::none(),
-          py::arg("resume") = false, py::arg("overwrite") = false, doc_of(*cmd, doc));
-      continue;
+      call += "seeds=1, ";
+      doc += fmt::format("  seeds      N >= 2: a seed ensemble of N members (seeds from {} and the member "
+                         "index; docs/acoustics.md): the summary gives every scalar's mean, stderr and n, "
+                         "the arrays the mean and stderr of every result; 1: the single run\n",
+                         cmd->seed_key()->dotted());
     }
     m.def(
-        name.c_str(),
-        [cmd](const Case& c, py::object out, int threads, py::object progress, py::object format,
-                       std::optional<double> checkpoint, bool resume, bool overwrite) {
-          return run_command(*cmd, c, options_of(out, threads, progress, format, checkpoint, resume, overwrite), {});
-        },
-        py::arg("case"), py::kw_only(), py::arg("out") = py::none(), py::arg("threads") = 0,
-        py::arg("progress") = py::none(), py::arg("format") = "csv,netcdf", py::arg("checkpoint") = py::none(),
-        py::arg("resume") = false, py::arg("overwrite") = false,
-        doc_of(*cmd, ""));
+        std::string(cmd->name()).c_str(),
+        [cmd](const py::args& args, const py::kwargs& kwargs) { return call_command(*cmd, args, kwargs); },
+        doc_of(*cmd, call, doc));
   }
   m.def("command_names", &run::command_names, "The names of the commands, each a function of this module.");
 }

@@ -6,6 +6,9 @@
 //   agglo.NumericalError    blow-up or invalid run (also an ArithmeticError)         CLI exit 3
 //   agglo.InterruptedError  run cancelled by Ctrl-C (also a KeyboardInterrupt)       CLI exit 130
 #include <iterator>
+#include <string>
+#include <string_view>
+#include <utility>
 
 #include <pybind11/pybind11.h>
 
@@ -31,7 +34,8 @@ constexpr ExceptionClass kClasses[] = {
      "line naming file, key, value and what is allowed. Also a ValueError."},
     {"LimitError", nullptr,
      "A valid case whose estimated steps, memory or output exceed a run budget (docs/limits.md; raise it with the "
-     "environment variables AGGLO_MAX_STEPS, AGGLO_MAX_MEMORY, AGGLO_MAX_OUTPUT)."},
+     "keyword arguments max_steps, max_memory, max_output of the command functions or the environment variables "
+     "AGGLO_MAX_STEPS, AGGLO_MAX_MEMORY, AGGLO_MAX_OUTPUT)."},
     {"NumericalError", "ArithmeticError",
      "A numerical blow-up detected during a run (NaN, energy explosion), or a run that cannot observe its experiment "
      "(the target not one agglomerate, torn apart before the launch, or never hit by the projectile); the CLI's exit "
@@ -41,6 +45,16 @@ constexpr ExceptionClass kClasses[] = {
      "KeyboardInterrupt` stops a script as usual; an output folder (out=) keeps what was written, marked incomplete "
      "in run.json."},
 };
+
+// A budget message in Python's words: the CLI options (--max-steps ...) become the keyword arguments of
+// the command functions (max_steps= ...), which every function that checks budgets takes.
+std::string python_words(std::string message) {
+  for (const auto& [cli, keyword] : {std::pair{"--max-steps", "max_steps="}, std::pair{"--max-memory", "max_memory="},
+                                     std::pair{"--max-output", "max_output="}})
+    for (auto at = message.find(cli); at != std::string::npos; at = message.find(cli, at))
+      message.replace(at, std::string_view(cli).size(), keyword);
+  return message;
+}
 
 py::handle new_exception(py::module_& m, const char* name, const char* doc, const py::tuple& bases) {
   const std::string qualified = std::string("agglo.") + name;
@@ -67,7 +81,7 @@ void bind_errors(py::module_& m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const LimitError& e) {  // before its base class ConfigError
-      PyErr_SetString(limit.ptr(), one_line(e.what()).c_str());
+      PyErr_SetString(limit.ptr(), python_words(one_line(e.what())).c_str());
     } catch (const ConfigError& e) {
       PyErr_SetString(config.ptr(), one_line(e.what()).c_str());
     } catch (const NumericalError& e) {

@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "agglo/core/error.hpp"
 
@@ -14,15 +15,107 @@ namespace agglo::python {
 
 namespace {
 
+// The value as the user wrote it, cut to 40 characters.
+std::string shown(const py::handle& v) {
+  std::string s = py::repr(v).cast<std::string>();
+  return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+}
+
 // "csv", "netcdf", "csv,netcdf" or a list of those names, read by run::parse_formats (as the CLI's --format).
 run::OutputFormats formats_of(const py::object& format) {
   if (py::isinstance<py::str>(format)) return run::parse_formats(format.cast<std::string>());
   std::string text;
-  for (const auto& n : format.cast<std::vector<std::string>>()) text += (text.empty() ? "" : ",") + n;
+  for (auto n : format) {
+    if (!py::isinstance<py::str>(n))
+      throw ConfigError(fmt::format("format: {} is not a format name (csv, netcdf)", shown(n)));
+    if (!text.empty()) text += ',';
+    text += n.cast<std::string>();
+  }
   return run::parse_formats(text);
 }
 
 }  // namespace
+
+Arguments::Arguments(std::string fn, const py::args& args, const py::kwargs& kwargs, std::vector<std::string> positional)
+    : fn_(std::move(fn)), args_(args), kwargs_(kwargs.attr("copy")()), positional_(std::move(positional)) {}
+
+py::object Arguments::take(const std::string& name) {
+  for (std::size_t k = 0; k < positional_.size(); ++k) {
+    if (positional_[k] != name || k >= args_.size()) continue;
+    if (kwargs_.contains(name)) throw ConfigError(fmt::format("{}: {} given twice (by position and keyword)", fn_, name));
+    return args_[k];
+  }
+  if (!kwargs_.contains(name)) return py::none();
+  py::object v = kwargs_[py::str(name)];
+  PyDict_DelItemString(kwargs_.ptr(), name.c_str());
+  return v;
+}
+
+void Arguments::fail(const std::string& name, const py::handle& value, const std::string& allowed) const {
+  throw ConfigError(fmt::format("{}: {} = {}: {}", fn_, name, shown(value), allowed));
+}
+
+long long Arguments::integer(const std::string& name, long long fallback, long long lo, long long hi) {
+  const py::object v = take(name);
+  if (v.is_none()) return fallback;
+  const auto allowed = hi == kNoLimit ? fmt::format("give an integer >= {}", lo)
+                                      : fmt::format("give an integer from {} to {}", lo, hi);
+  if (py::isinstance<py::bool_>(v) || !py::hasattr(v, "__index__")) fail(name, v, allowed);
+  PyObject* index = PyNumber_Index(v.ptr());
+  if (!index) {
+    PyErr_Clear();
+    fail(name, v, allowed);
+  }
+  int overflow = 0;
+  const long long n = PyLong_AsLongLongAndOverflow(index, &overflow);
+  Py_DECREF(index);
+  if (overflow != 0 || n < lo || n > hi) fail(name, v, allowed);
+  return n;
+}
+
+std::optional<double> Arguments::real(const std::string& name) {
+  const py::object v = take(name);
+  if (v.is_none()) return std::nullopt;
+  const double x = PyFloat_AsDouble(v.ptr());
+  if (py::isinstance<py::bool_>(v) || py::isinstance<py::str>(v) || (x == -1.0 && PyErr_Occurred())) {
+    PyErr_Clear();
+    fail(name, v, "give a real number");
+  }
+  return x;
+}
+
+bool Arguments::flag(const std::string& name, bool fallback) {
+  const py::object v = take(name);
+  if (v.is_none()) return fallback;
+  if (!py::isinstance<py::bool_>(v) && !py::isinstance(v, py::module_::import("numpy").attr("bool_")))
+    fail(name, v, "give True or False");
+  return v.cast<bool>();
+}
+
+std::optional<std::string> Arguments::text(const std::string& name) {
+  const py::object v = take(name);
+  if (v.is_none()) return std::nullopt;
+  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+  if (py::isinstance<py::bool_>(v) || !(py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)))
+    fail(name, v, "give a number or a str");
+  return py::str(v).cast<std::string>();
+}
+
+void Arguments::finish() const {
+  if (args_.size() > positional_.size())
+    throw ConfigError(fmt::format("{}: {} positional argument(s) given, at most {} ({}); the others are keywords",
+                                  fn_, args_.size(), positional_.size(), fmt::join(positional_, ", ")));
+  for (auto [k, v] : kwargs_)
+    throw ConfigError(fmt::format("{}: unknown keyword argument '{}' (help({}) lists them)", fn_,
+                                  py::str(k).cast<std::string>(), fn_));
+}
+
+const Case& case_of(Arguments& a) {
+  const py::object c = a.take("case");
+  if (c.is_none()) throw ConfigError(fmt::format("{}: case missing: give an agglo.Case", a.function()));
+  if (!py::isinstance<Case>(c)) a.fail("case", c, "give an agglo.Case");
+  return c.cast<const Case&>();
+}
 
 const char* const kOptionsDoc = R"(
 Keyword arguments (all commands):
@@ -34,22 +127,37 @@ Keyword arguments (all commands):
              An exception it raises cancels the run and propagates.
   format     result files in out: "csv", "netcdf" or "csv,netcdf" (default), or a list of those
   checkpoint simulated seconds between checkpoints in out (commands that write checkpoints only; None: none)
+  max_steps, max_memory, max_output
+             the run budgets (docs/limits.md): particle-steps (e.g. 2e12), bytes or a size text ("8G", "512M");
+             None (default): the environment's AGGLO_MAX_STEPS, AGGLO_MAX_MEMORY, AGGLO_MAX_OUTPUT, else the defaults
   resume     continue the run in out (ensembles: reuse the finished jobs of its journal; restartable runs:
              continue from the last checkpoint)
   overwrite  replace an earlier agglo run in out
 The GIL is released while the run goes on; Ctrl-C cancels it and raises agglo.InterruptedError.
+A wrong or unknown argument raises ConfigError naming it (one line).
 Raises ConfigError (bad case or option), LimitError (beyond a run budget), NumericalError, InterruptedError.)";
 
-RunOptions options_of(py::object out, int threads, py::object progress, py::object format,
-                      std::optional<double> checkpoint, bool resume, bool overwrite) {
+RunOptions options_of(Arguments& a, bool with_checkpoint) {
   RunOptions o;
-  o.out = std::move(out);
-  o.threads = threads;
-  o.progress = std::move(progress);
-  o.format = std::move(format);
-  o.checkpoint = checkpoint;
-  o.resume = resume;
-  o.overwrite = overwrite;
+  o.out = a.take("out");
+  if (!o.out.is_none() && !py::isinstance<py::str>(o.out) && !py::hasattr(o.out, "__fspath__"))
+    a.fail("out", o.out, "give a folder (str or os.PathLike) or None");
+  o.threads = static_cast<int>(a.integer("threads", 0, 0, kMaxThreads));
+  o.progress = a.take("progress");
+  if (!o.progress.is_none() && !PyCallable_Check(o.progress.ptr()))
+    a.fail("progress", o.progress, "give a callable progress(fraction, sim_time) or None");
+  o.format = a.take("format");
+  if (o.format.is_none()) o.format = py::str("csv,netcdf");
+  else if (!py::isinstance<py::str>(o.format) && !py::isinstance<py::list>(o.format) &&
+           !py::isinstance<py::tuple>(o.format))
+    a.fail("format", o.format, "give \"csv\", \"netcdf\", \"csv,netcdf\" or a list of those");
+  if (with_checkpoint) o.checkpoint = a.real("checkpoint");
+  o.resume = a.flag("resume", false);
+  o.overwrite = a.flag("overwrite", false);
+  o.budgets = run::resolve_budgets({});
+  if (const auto s = a.text("max_steps")) o.budgets.max_steps = run::parse_steps(*s, "max_steps");
+  if (const auto s = a.text("max_memory")) o.budgets.max_memory_bytes = run::parse_size(*s, "max_memory");
+  if (const auto s = a.text("max_output")) o.budgets.max_output_bytes = run::parse_size(*s, "max_output");
   return o;
 }
 
@@ -60,6 +168,7 @@ run::RunContext context_of(const run::Command& cmd, const RunOptions& o) {
   ctx.threads = o.threads;
   ctx.resume = o.resume;
   ctx.overwrite = o.overwrite;
+  ctx.budgets = &o.budgets;
   ctx.formats = o.out.is_none() ? run::OutputFormats{false, false} : formats_of(o.format);
   if (o.checkpoint) {
     if (!cmd.restartable())

@@ -81,15 +81,21 @@ Result sweep(const Case& c, const py::dict& params, const std::string& command, 
 void bind_sweep(py::module_& m) {
   m.def(
       "sweep",
-      [](const Case& c, const py::dict& params, const std::string& command, long long seeds, py::object out,
-         int threads, py::object progress, py::object format, bool resume, bool overwrite) {
-        return sweep(c, params, command, seeds,
-                     options_of(out, threads, progress, format, std::nullopt, resume, overwrite));
+      [](const py::args& args, const py::kwargs& kwargs) {
+        Arguments a("agglo.sweep", args, kwargs, {"case", "params"});
+        const Case& c = case_of(a);
+        const py::object params = a.take("params");
+        if (!py::isinstance<py::dict>(params)) a.fail("params", params, "give a dict {dotted key: list of values}");
+        const py::object command = a.take("command");
+        if (!command.is_none() && !py::isinstance<py::str>(command))
+          a.fail("command", command, "give a command name (agglo.command_names())");
+        const long long seeds = a.integer("seeds", 1, 1, kNoLimit);
+        const auto o = options_of(a, false);
+        a.finish();
+        return sweep(c, params.cast<py::dict>(), command.is_none() ? "acoustic" : command.cast<std::string>(), seeds, o);
       },
-      py::arg("case"), py::arg("params"), py::kw_only(), py::arg("command") = "acoustic", py::arg("seeds") = 1,
-      py::arg("out") = py::none(),
-      py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("format") = "csv,netcdf",
-      py::arg("resume") = false, py::arg("overwrite") = false,
+      R"(sweep(case, params, *, command="acoustic", seeds=1, out=None, threads=0, progress=None, format="csv,netcdf", resume=False, overwrite=False, max_steps=None, max_memory=None, max_output=None)
+
       R"(Runs `command` for every point of a grid of config values, cases in parallel (as `agglo sweep`).
 
   case     agglo.Case: the base case (not changed)
@@ -101,7 +107,8 @@ void bind_sweep(py::module_& m) {
            and sweep_ensemble.nc with each point's scalar means and standard errors, and per point a folder
            point_<index>_<values> with the mean and standard error of every result (ensemble_summary.csv,
            ensemble_timeseries.csv, results.nc; docs/outputs.md) (default 1: one run per point)
-  out, threads, progress, format, resume, overwrite: as for the command functions (no checkpoint);
+  out, threads, progress, format, resume, overwrite, max_steps, max_memory, max_output: as for the
+           command functions (no checkpoint);
   out gets sweep.csv and one folder per case.
 
 Returns an agglo.Result whose summary is {"command": ..., "cases": [{"index", "values": {key: value},

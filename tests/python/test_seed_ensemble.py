@@ -51,7 +51,7 @@ def test_seeds_one_is_the_single_run_and_bad_seeds_raise(agglo_module):
     assert {k: v for k, v in one.summary.items() if k != "wall_time_s"} == \
         {k: v for k, v in plain.summary.items() if k != "wall_time_s"}
     for bad in (0, -2):
-        with pytest.raises(agglo.ConfigError, match="--seeds"):
+        with pytest.raises(agglo.ConfigError, match=f"agglo.acoustic: seeds = {bad}: give an integer >= 1"):
             agglo.acoustic(_case(agglo), seeds=bad)
 
 
@@ -89,6 +89,6 @@ def test_sweep_with_seeds_equals_cli(agglo_module, tmp_path):
         last = series.splitlines()[-1].split(",")
         head = series.splitlines()[0].split(",")
         assert float(last[head.index("fine_efficiency_mean")]) == pytest.approx(eff["mean"], rel=1e-9)
-    with pytest.raises(agglo.ConfigError, match="--seeds"):
+    with pytest.raises(agglo.ConfigError, match="agglo.sweep: seeds = 0: give an integer >= 1"):
         agglo.sweep(agglo.Case.load(path), {"population.1.diameter": [20e-6]}, seeds=0, out=tmp_path / "bad")
     assert not (tmp_path / "bad").exists()

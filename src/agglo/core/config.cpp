@@ -149,6 +149,19 @@ std::unique_ptr<toml::node> override_value(std::string_view assignment, const st
   return std::unique_ptr<toml::node>(
       t.get("v")->visit([](auto& n) -> toml::node* { return new std::remove_cvref_t<decltype(n)>(n); }));
 }
+// Refuses an index into an array the case does not have ("particles.99.radius" in a case without
+// [[particles]]), before anything is changed; indices into existing arrays are checked by apply_override.
+void check_indices(const toml::table& root, std::string_view assignment, const std::vector<std::string>& parts) {
+  const toml::node* cur = &root;
+  for (std::size_t k = 1; k < parts.size() && cur; ++k) {
+    const toml::table* t = cur->as_table();
+    const toml::node* next = t ? t->get(parts[k - 1]) : nullptr;
+    if (!next && t && parts[k].find_first_not_of("0123456789") == std::string::npos)
+      throw ConfigError(fmt::format("--set '{}': '{}' is not a valid index (the case has no array '{}': 0 elements)",
+                                    assignment, parts[k], parts[k - 1]));
+    cur = next;
+  }
+}
 }  // namespace
 
 void Config::apply_override(std::string_view assignment) {
@@ -157,6 +170,7 @@ void Config::apply_override(std::string_view assignment) {
     throw ConfigError(fmt::format("--set '{}': expected KEY=VALUE, e.g. --set section.key=value", assignment));
   const std::vector<std::string> parts = override_key(assignment, std::string(assignment.substr(0, eq)));
   const std::unique_ptr<toml::node> parsed = override_value(assignment, std::string(assignment.substr(eq + 1)));
+  check_indices(*tbl_, assignment, parts);
   toml::node* cur = tbl_.get();
   for (std::size_t k = 0; k + 1 < parts.size(); ++k) {
     const auto& p = parts[k];
