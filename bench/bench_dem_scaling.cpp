@@ -21,6 +21,7 @@
 #include "agglo/impact/impact_case.hpp"
 #include "agglo/impact/experiment.hpp"
 #include "agglo/core/config.hpp"
+#include "agglo/dem/contact/marshall_sliding.hpp"
 #include "agglo/dem/dem_system.hpp"
 #include "agglo/dem/jkr.hpp"
 
@@ -36,7 +37,7 @@ dem::DemParams block_params() {
   p.contact.surface_energy = 0.01;
   p.contact.restitution = 0.9;
   p.contact.friction = 0.3;
-  p.contact.tangential = dem::TangentialModel::marshall;
+  p.contact.models.tangential = dem::contact::MarshallSliding::name;
   return p;
 }
 
