@@ -42,7 +42,9 @@ cache="$root/scripts/function_size.cache"
 /usr/bin/python3 "$root/scripts/function_size_keys.py" "$root" "$config" "${files[@]}" >"$logs/keys"
 all_files=("${files[@]}")
 if [ "$cache_mode" != off ] && [ -f "$cache" ]; then
-  mapfile -t files < <(awk 'NR == FNR { ok[$1] = 1; next } !($1 in ok) { print $2 }' "$cache" "$logs/keys")
+  mapfile -t files < <(awk -v cache="$cache" '
+    BEGIN { while ((getline line < cache) > 0) { split(line, kf, " "); ok[kf[1]] = 1 } }
+    !($1 in ok) { print $2 }' "$logs/keys")
 fi
 echo "check_function_size: ${#all_files[@]} files, $(( ${#all_files[@]} - ${#files[@]} )) unchanged since their last pass (scripts/function_size.cache), ${#files[@]} to analyse"
 export build logs config root
@@ -64,7 +66,9 @@ for rc in "$logs"/*.rc; do
 done
 # Each finding once (a header is reported by every file that includes it):
 #   file:line:col: function 'name' has N lines (limit 80)
-found=$(cat "$logs"/*.out | awk '
+shopt -s nullglob
+outs=("$logs"/*.out)
+found=$(cat /dev/null "${outs[@]}" | awk '
   /warning: function .* exceeds recommended size\/complexity thresholds \[readability-function-size\]/ {
     loc = $1; sub(/: *$/, "", loc); fn = $0; sub(/.*function /, "", fn); sub(/ exceeds.*/, "", fn); next }
   loc != "" && /note: [0-9]+ lines including whitespace and comments/ {
@@ -80,7 +84,9 @@ if [ $status -eq 0 ]; then
   echo "check_function_size: ${#all_files[@]} files, no function longer than 80 lines"
   if [ "$cache_mode" = update ]; then
     # entries of files not analysed in this run stay; those of files gone from src/ are dropped
-    { if [ -f "$cache" ]; then awk 'NR == FNR { mine[$2] = 1; next } !($2 in mine)' "$logs/keys" "$cache" \
+    { if [ -f "$cache" ]; then awk -v keys="$logs/keys" '
+          BEGIN { while ((getline line < keys) > 0) { split(line, kf, " "); mine[kf[2]] = 1 } }
+          !($2 in mine)' "$cache" \
         | while read -r k f; do if [ -f "$root/$f" ]; then echo "$k $f"; fi; done; fi
       cat "$logs/keys"; } | sort -k2 >"$cache.tmp-$$" && mv "$cache.tmp-$$" "$cache"
     echo "check_function_size: wrote $(wc -l <"$cache") keys to scripts/function_size.cache"

@@ -15,7 +15,7 @@ struct ConfigArgs {
   bool markdown = false;
 };
 
-agglo::cli::Registration reg([](CLI::App& app) {
+agglo::cli::Registration register_config([](CLI::App& app) {
   auto a = std::make_shared<ConfigArgs>();
   auto* sub = app.add_subcommand("config", "List the case-file settings: key, type, unit, default, range, meaning");
   sub->add_flag("--list", a->list, "Print the settings tables (all, or the SECTION given)");

@@ -70,7 +70,7 @@ void add_subcommand(CLI::App& app, const agglo::run::Command& cmd) {
   });
 }
 
-agglo::cli::Registration reg([](CLI::App& app) {
+agglo::cli::Registration register_run_commands([](CLI::App& app) {
   for (const auto* cmd : agglo::run::all_commands()) add_subcommand(app, *cmd);
 });
 

@@ -40,7 +40,7 @@ void run(const SweepArgs& a) {
   if (ctx.formats.csv) agglo::cli::run_plot_script("plot_sweep.py", plan.request.folder, plot_args);  // reads sweep.csv
 }
 
-agglo::cli::Registration reg([](CLI::App& app) {
+agglo::cli::Registration register_sweep([](CLI::App& app) {
   auto a = std::make_shared<SweepArgs>();
   auto* sub = app.add_subcommand("sweep", "Run any command over a grid of config values, cases in parallel");
   agglo::cli::add_common_options(*sub, a->common);
