@@ -13,13 +13,13 @@ using namespace agglo::es;
 
 namespace {
 
-constexpr double R = 10e-6;   // [m]
+constexpr double kRadius = 10e-6;   // [m]
 constexpr double Q0 = 1e-14;  // [C]
 
 Problem three_spheres(double shift) {
   Problem p;
-  p.spheres = {Sphere{{0, 0, 0}, R, Q0, 15}, Sphere{{2.2 * R + shift, 0, 0}, R, -Q0, 15},
-               Sphere{{R, 2.1 * R, shift}, R, Q0, 15}};
+  p.spheres = {Sphere{{0, 0, 0}, kRadius, Q0, 15}, Sphere{{2.2 * kRadius + shift, 0, 0}, kRadius, -Q0, 15},
+               Sphere{{kRadius, 2.1 * kRadius, shift}, kRadius, Q0, 15}};
   return p;
 }
 
@@ -37,7 +37,7 @@ void check(const SolverOptions& o) {
   auto second = make_solver(o);
   second->set_warm_start(w);
   auto cold = make_solver(o);
-  const Problem next = three_spheres(0.02 * R);
+  const Problem next = three_spheres(0.02 * kRadius);
   const Solution a = first->solve(next), b = second->solve(next), c = cold->solve(next);
   EXPECT_TRUE(bitwise_equal(a, b)) << o.solver << ": the restored warm start gives another solution";
   EXPECT_FALSE(bitwise_equal(a, c)) << o.solver << ": a cold start gives the same bits (test has no power)";

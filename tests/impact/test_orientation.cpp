@@ -21,10 +21,10 @@ namespace {
 
 const char* kOrientations[] = {"edge_across", "edge_along", "face", "vertex"};
 
-Config seed_case() { return Config::load(std::string(AGGLO_SOURCE_DIR) + "/cases/seed000_neutral_tetrahedron_e0p9.toml"); }  // no orientation key
+Config e0p9_case() { return Config::load(std::string(AGGLO_SOURCE_DIR) + "/cases/seed000_neutral_tetrahedron_e0p9.toml"); }  // no orientation key
 
 ImpactCase oriented_case(const std::string& shape, const std::string& orientation) {
-  Config cfg = seed_case();
+  Config cfg = e0p9_case();
   cfg.apply_override("agglomerate.shape=\"" + shape + "\"");
   cfg.apply_override("agglomerate.orientation=\"" + orientation + "\"");
   cfg.apply_override("agglomerate.charged=true");
@@ -64,7 +64,7 @@ TEST(Orientation, ContactsCentroidAndChargesKept) {
 TEST(Orientation, OriginalGeometryUntouched) {
   // The default (key absent) and the shape's original name give the positions built before the key
   // existed, bit for bit: tetrahedron edge 0-1 along z at x = -h, h = L/(2 sqrt 2).
-  Config cfg = seed_case();
+  Config cfg = e0p9_case();
   const ImpactCase c = parse_impact_case(cfg);
   EXPECT_EQ(c.agglomerate.orientation, "edge_across");
   const dem::Particles p = build_agglomerate(c);
@@ -128,11 +128,11 @@ TEST(Orientation, FaceAndVertexPositions) {
 }
 
 TEST(Orientation, KeyCheckedAndAbsentFromResolvedConfig) {
-  Config plain = seed_case();
+  Config plain = e0p9_case();
   (void)parse_impact_case(plain);
   EXPECT_EQ(plain.resolved_toml().find("orientation"), std::string::npos);
 
-  Config bad = seed_case();
+  Config bad = e0p9_case();
   bad.apply_override("agglomerate.orientation=\"corner\"");
   EXPECT_THROW(parse_impact_case(bad), ConfigError);
 
@@ -142,7 +142,7 @@ TEST(Orientation, KeyCheckedAndAbsentFromResolvedConfig) {
       "[[particles]]\nposition = [1.99e-5, 0.0, 0.0]\nradius = 1e-5\n");
   EXPECT_THROW(parse_impact_case(list), ConfigError);
 
-  Config field = seed_case();
+  Config field = e0p9_case();
   field.apply_override("breakup.orientations=4");
   field.apply_override("electrostatics.external_field=[0.0, 0.0, 1e5]");
   EXPECT_THROW(parse_impact_case(field), ConfigError);
