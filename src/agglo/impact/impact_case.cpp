@@ -109,9 +109,12 @@ void parse_bodies(const ConfigSection& root, ImpactCase& c) {
   auto plist = particles.elements(root);
   if (a.shape == "list") {
     const std::size_t least = c.wall_impact ? 1 : 2;  // a single sphere may hit a wall
-    if (plist.size() < least)
+    if (plist.size() < least) {
+      const std::string hint =
+          c.wall_impact ? "" : fmt::format(" (one with {} = true)", impact_keys().wall.impact.dotted());
       ka.shape.reject(ag, fmt::format("shape = \"list\" needs at least {} [[{}]] entries{}", least == 1 ? "one" : "two",
-                                      particles.name(), least == 1 ? "" : " (one with wall.impact = true)"));
+                                      particles.name(), hint));
+    }
     for (auto& ps : plist) a.particles.push_back(es::parse_particle(ps));
   } else if (!plist.empty()) {
     ka.shape.reject(ag, fmt::format("[[{}]] entries are only used with shape = \"list\"", particles.name()));
