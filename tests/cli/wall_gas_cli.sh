@@ -25,6 +25,7 @@ bad "wall.normal" 's/^normal = \[-1.0, 0.0, 0.0\]/normal = [1.0, 0.0, 0.0]/'  # 
 bad "unknown key 'wall.colour'" 's/^impact = true/impact = true\ncolour = "red"/'
 bad "gas.viscosity' = -1" 's/^\[time\]/[gas]\nviscosity = -1.0\n\n[time]/'
 bad "shape = \"list\" needs at least two" 's/^impact = true/impact = false/'
+bad "electrostatics.external_field" 's/^impact = true/impact = true\ngrounded = true/; s/^\[time\]/[electrostatics]\nexternal_field = [1e5, 0.0, 0.0]\n\n[time]/'
 
 # Below the sticking velocity (0.0499 m/s with e = 0.7, docs/dem.md) the sphere stays on the wall; above it,
 # it rebounds.
@@ -34,6 +35,13 @@ for v in 0.04 0.07; do
 done
 grep -q '"wall_contacts_at_end": 1' "$T/sw_0.04/result.json" || fail "sphere must stick at 0.04 m/s"
 grep -q '"wall_contacts_at_end": 0' "$T/sw_0.07/result.json" || fail "sphere must rebound at 0.07 m/s"
+# A charged sphere and a grounded wall: its image holds it at 0.07 m/s.
+$A -q --no-plots collide "$SRC/cases/sphere_wall_grounded.toml" --out "$T/swg" > /dev/null 2>&1 \
+  || fail "sphere_wall_grounded failed"
+grep -q '"wall_contacts_at_end": 1' "$T/swg/result.json" || fail "charged sphere must stick to the grounded wall"
+$A -q --no-plots collide "$SRC/cases/sphere_wall_grounded.toml" --set wall.grounded=false --out "$T/swn" \
+  > /dev/null 2>&1 || fail "sphere_wall_grounded without grounding failed"
+grep -q '"wall_contacts_at_end": 0' "$T/swn/result.json" || fail "without images the sphere must rebound at 0.07 m/s"
 # A case without [wall] has no such entry (its result.json is unchanged).
 $A -q --no-plots collide "$SRC/cases/seed000_neutral_tetrahedron.toml" --out "$T/nowall" --set time.after_contact=1e-4 \
   > /dev/null 2>&1 || fail "tetrahedron run failed"

@@ -142,6 +142,10 @@ struct ImpactSettings {
                 {"wall.impact", "",
                  "the agglomerate itself moves at projectile.speed along +x onto the wall; no projectile"},
                 false};
+    Bool grounded{t,
+                  {"wall.grounded", "",
+                   "grounded conducting wall: image charges of the charged and dielectric particles"},
+                  false};
   } wall;
 
   std::vector<const Table*> tables() const;

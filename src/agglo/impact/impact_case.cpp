@@ -144,6 +144,7 @@ void parse_wall(const ConfigSection& root, ImpactCase& c) {
   w.normal = n / norm(n);
   w.material = kw.material.read(ws) == "rigid" ? dem::WallMaterial::rigid : dem::WallMaterial::same;
   const bool impact = kw.impact.read(ws);
+  const bool grounded = kw.grounded.read(ws);
   if (!on) return;
   if (impact && !(w.normal.x < 0.0))
     kw.normal.reject(ws, fmt::format("with {} = true the agglomerate moves along +x: the wall must face it (a normal "
@@ -151,6 +152,7 @@ void parse_wall(const ConfigSection& root, ImpactCase& c) {
                                      kw.impact.dotted()));
   c.dem.walls.push_back(w);
   c.wall_impact = impact;
+  if (grounded) c.coupling.grounded.push_back(w);
 }
 
 // [gas] of an impact case (the keys of the acoustic cases' [gas], plus drag and flow): read only when
@@ -249,6 +251,10 @@ void parse_coupling(const ConfigSection& root, double real_modulus, ImpactCase& 
   }
   c.medium_permittivity = c.coupling.es.medium_permittivity;
   c.electrostatics = c.electrostatics || norm(c.coupling.es.external_field) > 0.0;
+  if (!c.coupling.grounded.empty() && norm(c.coupling.es.external_field) > 0.0)
+    ks.external_field.reject(ks.t.open(root), fmt::format("a grounded wall ({} = true) takes no applied field: the "
+                                                          "images are those of a plane at zero potential without one",
+                                                          impact_keys().wall.grounded.dotted()));
 }
 
 // Several orientations rotate one relaxed agglomerate rigidly (breakup.hpp), which is exact only when
