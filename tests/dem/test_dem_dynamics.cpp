@@ -12,27 +12,13 @@
 #include "agglo/impact/experiment.hpp"
 #include "agglo/dem/contact/builtin_models.hpp"
 #include "agglo/dem/dem_system.hpp"
+#include "sticking.hpp"
 
 using namespace agglo;
 using namespace agglo::dem;
+using namespace agglo::dem::testing;
 
 namespace {
-
-struct Material {
-  double r = 10e-6, rho = 2500, E = 1e9, nu = 0.33, gamma = 0.01;
-};
-
-DemParams params_for(const Material& m, double e, bool damping) {
-  DemParams p;
-  p.contact.youngs_modulus = m.E;
-  p.contact.poisson_ratio = m.nu;
-  p.contact.surface_energy = m.gamma;
-  p.contact.restitution = e;
-  p.contact.models.damping = damping ? contact::AlphaDamping::name : contact::NoDamping::name;
-  p.contact.friction = 0.0;
-  p.steps_per_period = 1600;  // resolve the contact well: the reference values are for the continuous ODE
-  return p;
-}
 
 // Head-on collision of two equal spheres at relative speed v: true if they stay bonded.
 bool sticks(const Material& m, const DemParams& prm, double v) {
@@ -55,13 +41,7 @@ bool sticks(const Material& m, const DemParams& prm, double v) {
 }
 
 double sticking_velocity(const Material& m, const DemParams& prm, double vlo, double vhi) {
-  EXPECT_TRUE(sticks(m, prm, vlo));
-  EXPECT_FALSE(sticks(m, prm, vhi));
-  while (vhi - vlo > 1e-4 * vhi) {
-    double mid = 0.5 * (vlo + vhi);
-    (sticks(m, prm, mid) ? vlo : vhi) = mid;
-  }
-  return 0.5 * (vlo + vhi);
+  return bisect([&](double v) { return sticks(m, prm, v); }, vlo, vhi);
 }
 
 double reference_vs0(const Material& m) {

@@ -175,3 +175,8 @@ TEST(ImpactCheckpoint, TruncatedPayloadIsRefused) {
   EXPECT_THROW(load(bytes.substr(0, bytes.size() - 3)), ConfigError);
   EXPECT_THROW(load(bytes + "x"), ConfigError);
 }
+
+TEST(ImpactCheckpoint, WallAndGasRestartIsExact) {
+  // The agglomerate flying onto a wall in air (wall contact states, drag, gravity).
+  check_case(load_case("agglomerate_wall_gas", {"time.after_contact=1e-4", "output.snapshot_interval=2e-5"}), false);
+}

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "agglo/core/constants.hpp"
+#include "agglo/core/gas_law.hpp"
 
 namespace agglo::acoustics {
 
@@ -13,18 +14,17 @@ Gas Gas::air(double T, double P, bool gravity_on, std::optional<double> mu_overr
   g.temperature = T;
   g.pressure = P;
   const double M = g.molar_mass;
-  g.density = P * M / (R_gas * T);
+  g.density = gas::density(T, P, M);
   g.sound_speed = std::sqrt(1.4 * R_gas * T / M);
-  g.viscosity = mu_override ? *mu_override : 1.716e-5 * std::pow(T / 273.15, 1.5) * (273.15 + 110.4) / (T + 110.4);
-  g.mean_speed = std::sqrt(8.0 * R_gas * T / (pi * M));
-  g.mean_free_path = lambda_override ? *lambda_override : 2.0 * g.viscosity / (g.density * g.mean_speed);
+  g.viscosity = mu_override ? *mu_override : gas::sutherland_viscosity(T);
+  g.mean_speed = gas::mean_speed(T, M);
+  g.mean_free_path = lambda_override ? *lambda_override : gas::mean_free_path(g.viscosity, g.density, g.mean_speed);
   g.gravity = gravity_on ? g0 : 0.0;
   return g;
 }
 
 double Gas::slip_correction(double d) const {
-  const double kn = 2.0 * mean_free_path / d;
-  return 1.0 + kn * (1.257 + 0.400 * std::exp(-1.100 / kn));
+  return gas::cunningham(d, mean_free_path);
 }
 
 double Gas::inertia_correction(double re) { return re > 0.0 ? 1.0 + 0.15 * std::pow(re, 0.687) : 1.0; }

@@ -16,7 +16,9 @@ struct AcousticSettings {
   } top;
 
   struct Gas {
-    Table t{"gas", kAcousticCommands, "carrier gas (air)"};
+    // Also read by the impact commands when an impact case has a [gas] section (drag on every
+    // particle, docs/dem.md "Gas and walls"); flow and drag are theirs only.
+    Table t{"gas", "acoustic, sectional, sweep, collide, vcrit, breakup", "carrier gas (air)"};
     Real temperature{t, {"gas.temperature", "K", "gas temperature"}, 298.15, Range::open_closed(0.0, 1e4)};
     Real pressure{t, {"gas.pressure", "Pa", "gas pressure"}, 101325.0, Range::open_closed(0.0, 1e9)};
     Bool gravity{t, {"gas.gravity", "", "gravitational settling"}, true};
@@ -24,6 +26,9 @@ struct AcousticSettings {
                    std::nullopt, Range::open_closed(0.0, 1.0)};
     Real mean_free_path{t, {"gas.mean_free_path", "m", "mean free path", "from viscosity, density and mean speed"},
                         std::nullopt, Range::open_closed(0.0, 1.0)};
+    Bool drag{t, {"gas.drag", "", "impact cases: slip-corrected Stokes drag on every particle"}, true};
+    Vector3 flow{t, {"gas.flow", "m/s", "impact cases: uniform gas velocity u of the drag"}, Vec3{0, 0, 0},
+                 Range::closed(-1e3, 1e3)};
   } gas;
 
   struct Sound {

@@ -126,6 +126,28 @@ struct ImpactSettings {
                          std::nullopt, 1, 10000};
   } breakup;
 
+  // [wall] (docs/dem.md "Gas and walls"; dem/wall.hpp). Read only when the section is present, so cases
+  // without it resolve as before. [gas] of impact cases is the acoustic table (settings_acoustic.hpp).
+  struct Wall {
+    Table t{"wall", kImpactCommands, "a flat wall (JKR contact with an infinite partner)"};
+    Bool enabled{t, {"wall.enabled", "", "the wall acts (false keeps the section but removes the wall)"}, true};
+    Vector3 position{t, {"wall.position", "m", "a point of the wall plane"}, std::nullopt, Range::closed(-1e3, 1e3)};
+    Vector3 normal{t, {"wall.normal", "", "normal of the wall, towards the particles (normalised)"}, Vec3{-1, 0, 0},
+                   Range::closed(-1e6, 1e6)};
+    Choice material{t,
+                    {"wall.material", "",
+                     "same = the particles' material, E* = E/(2(1-nu^2)); rigid = undeformable, E* = E/(1-nu^2)"},
+                    "same", {"same", "rigid"}};
+    Bool impact{t,
+                {"wall.impact", "",
+                 "the agglomerate itself moves at projectile.speed along +x onto the wall; no projectile"},
+                false};
+    Bool grounded{t,
+                  {"wall.grounded", "",
+                   "grounded conducting wall: image charges of the charged and dielectric particles"},
+                  false};
+  } wall;
+
   std::vector<const Table*> tables() const;
 };
 

@@ -27,6 +27,13 @@ class ContactLaw {
   PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt) const {
     return kernel_->evaluate_pair(jkr, k, s, dt);
   }
+  // Every particle against wall `w` (wall.hpp): the same sub-models with an infinite partner.
+  void evaluate_wall(const Wall& w, WallContacts& wc, const Particles& p, double dt, std::vector<PairForce>& out) const {
+    kernel_->evaluate_wall(w, wc, p, dt, out);
+  }
+  PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s, double dt) const {
+    return kernel_->evaluate_wall_contact(jkr, k, s, dt);
+  }
 
  private:
   contact::ModelNames names_;

@@ -15,7 +15,7 @@ void NeighborList::restore(const NeighborState& s, std::size_t n_particles) {
 }
 
 DemState DemSystem::state() const {
-  return DemState{p_, nl_.state(), dt_, skin_, time_, step_, forces_ready_};
+  return DemState{p_, nl_.state(), dt_, skin_, time_, step_, forces_ready_, walls_};
 }
 
 void DemSystem::restore(const DemState& s) {
@@ -26,6 +26,10 @@ void DemSystem::restore(const DemState& s) {
   time_ = s.time;
   step_ = s.step;
   forces_ready_ = s.forces_ready;
+  walls_ = s.walls;
+  decay_.clear();
+  lag_.clear();
+  attach();
 }
 
 }  // namespace agglo::dem

@@ -3,13 +3,15 @@
 // everything the next step reads. Restoring it into a system built from the same case continues the
 // run bitwise identically: the particles with the forces of the current positions (the next step
 // starts with the second half-kick of velocity Verlet, so the forces are not recomputed), the contact
-// states of every listed pair (JKR contact radius = Newton warm start, spring displacements), the
+// states of every listed pair and of every particle with each wall (JKR contact radius = Newton warm
+// start, spring displacements), the
 // neighbour list and the positions it was built at (its next rebuild happens at the same step).
 #include <vector>
 
 #include "agglo/core/vec3.hpp"
 #include "agglo/dem/neighbor_list.hpp"
 #include "agglo/dem/particles.hpp"
+#include "agglo/dem/wall.hpp"
 
 namespace agglo::dem {
 
@@ -27,6 +29,7 @@ struct DemState {
   double time = 0.0;             // simulated time [s]
   long step = 0;
   bool forces_ready = false;     // particles.f/t hold the forces of the current positions
+  std::vector<WallContacts> walls;  // contact states with each wall (DemParams::walls)
 };
 
 }  // namespace agglo::dem

@@ -28,14 +28,78 @@ double reference_period(const Particles& p, const ContactParams& c) {
   return best;
 }
 
+double reference_period(const Particles& p, const DemParams& d) {
+  double best = reference_period(p, d.contact);
+  if (p.size() == 0) return best;
+  // The lightest particle has the shortest wall period (R* = r, m* = m).
+  std::size_t light = 0;
+  for (std::size_t q = 1; q < p.size(); ++q)
+    if (p.m[q] < p.m[light]) light = q;
+  for (const Wall& w : d.walls) {
+    const double estar = wall_estar(w.material, d.contact.youngs_modulus, d.contact.poisson_ratio);
+    const auto jkr = JkrPair::make(p.r[light], estar, d.contact.surface_energy);
+    const double k0 = 0.9905 * jkr.Fc / jkr.deltaC;
+    best = std::min(best, 2.0 * constants::pi * std::sqrt(p.m[light] / k0));
+  }
+  return best;
+}
+
 DemSystem::DemSystem(Particles particles, DemParams params)
     : DemSystem(std::move(particles), params, params.contact.models) {}
 
 DemSystem::DemSystem(Particles particles, DemParams params, const contact::ModelNames& models)
     : p_(std::move(particles)), params_(params), law_(params_.contact, models) {
-  dt_ = params_.dt > 0.0 ? params_.dt : reference_period(p_, params_.contact) / params_.steps_per_period;
+  dt_ = params_.dt > 0.0 ? params_.dt : reference_period(p_, params_) / params_.steps_per_period;
   double rmin = p_.size() ? *std::min_element(p_.r.begin(), p_.r.end()) : 1.0;
   skin_ = params_.skin > 0.0 ? params_.skin : 0.1 * rmin;
+  attach();
+}
+
+JkrPair DemSystem::wall_jkr(std::uint32_t i, const Wall& w) const {
+  const auto& c = params_.contact;
+  return JkrPair::make(p_.r[i], wall_estar(w.material, c.youngs_modulus, c.poisson_ratio), c.surface_energy);
+}
+
+void DemSystem::attach() {
+  const std::size_t n = p_.size();
+  walls_.resize(params_.walls.size());
+  for (std::size_t k = 0; k < walls_.size(); ++k) {
+    auto& wc = walls_[k];
+    wc.state.resize(n);
+    for (std::size_t i = wc.jkr.size(); i < n; ++i)
+      wc.jkr.push_back(wall_jkr(static_cast<std::uint32_t>(i), params_.walls[k]));
+  }
+  if (!params_.gas.enabled) return;
+  for (std::size_t i = decay_.size(); i < n; ++i) {
+    const double tau = params_.gas.relaxation_time(p_.m[i], p_.r[i]);
+    const double x = -0.5 * dt_ / tau;
+    decay_.push_back(std::exp(x));
+    lag_.push_back(-tau * std::expm1(x));
+  }
+}
+
+void DemSystem::add_wall_and_body_forces() {
+  const auto n = static_cast<std::int64_t>(p_.size());
+  for (std::size_t k = 0; k < walls_.size(); ++k) {
+    law_.evaluate_wall(params_.walls[k], walls_[k], p_, dt_, wall_forces_);
+    parallel_for(n, [&](std::int64_t q) {
+      p_.f[q] += wall_forces_[q].f_on_i;
+      p_.t[q] += wall_forces_[q].t_on_i;
+    });
+  }
+  const Vec3 g = params_.gravity;
+  if (norm2(g) > 0.0) parallel_for(n, [&](std::int64_t q) { p_.f[q] += p_.m[q] * g; });
+}
+
+// Half kick of velocity Verlet over h = dt/2; with gas drag its exact exponential form (gas_drag.hpp).
+void DemSystem::kick(std::int64_t q, double h) {
+  if (params_.gas.enabled) {
+    const Vec3 u = params_.gas.flow;
+    p_.v[q] = u + decay_[q] * (p_.v[q] - u) + (lag_[q] / p_.m[q]) * p_.f[q];
+  } else {
+    p_.v[q] += (h / p_.m[q]) * p_.f[q];
+  }
+  p_.w[q] += (h / p_.I[q]) * p_.t[q];
 }
 
 JkrPair DemSystem::jkr_for(std::uint32_t i, std::uint32_t j) const {
@@ -66,6 +130,7 @@ void DemSystem::compute_forces() {
     p_.t[q] = t;
   };
   parallel_for(static_cast<std::int64_t>(n), gather);
+  if (!walls_.empty() || norm2(params_.gravity) > 0.0) add_wall_and_body_forces();
   if (ext_) ext_->add_forces(p_, step_, time_, p_.f, p_.t);
   forces_ready_ = true;
 }
@@ -75,19 +140,14 @@ void DemSystem::step() {
   const std::int64_t n = static_cast<std::int64_t>(p_.size());
   const double h = 0.5 * dt_;
   auto kick_drift = [&](std::int64_t q) {
-    p_.v[q] += (h / p_.m[q]) * p_.f[q];
-    p_.w[q] += (h / p_.I[q]) * p_.t[q];
+    kick(q, h);
     p_.x[q] += dt_ * p_.v[q];
-  };
-  auto kick = [&](std::int64_t q) {
-    p_.v[q] += (h / p_.m[q]) * p_.f[q];
-    p_.w[q] += (h / p_.I[q]) * p_.t[q];
   };
   parallel_for(n, kick_drift);
   time_ += dt_;
   ++step_;
   compute_forces();
-  parallel_for(n, kick);
+  parallel_for(n, [&](std::int64_t q) { kick(q, h); });
   if (step_ % 256 == 0) check_state();
 }
 
@@ -120,6 +180,13 @@ double DemSystem::kinetic_energy() const {
 int DemSystem::active_contacts() const {
   int c = 0;
   for (const auto& pr : nl_.pairs()) c += pr.state.active ? 1 : 0;
+  return c;
+}
+
+int DemSystem::wall_contacts() const {
+  int c = 0;
+  for (const auto& wc : walls_)
+    for (const auto& s : wc.state) c += s.active ? 1 : 0;
   return c;
 }
 

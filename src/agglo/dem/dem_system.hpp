@@ -10,8 +10,10 @@
 #include "agglo/dem/contact_params.hpp"
 #include "agglo/dem/dem_state.hpp"
 #include "agglo/dem/external_force.hpp"
+#include "agglo/dem/gas_drag.hpp"
 #include "agglo/dem/neighbor_list.hpp"
 #include "agglo/dem/particles.hpp"
+#include "agglo/dem/wall.hpp"
 #include "agglo/core/error.hpp"
 
 namespace agglo::dem {
@@ -32,6 +34,9 @@ struct DemParams {
   double dt = 0.0;          // time step [s]; <= 0: T0 / steps_per_period (see reference_period)
   double steps_per_period = 50.0;
   double skin = 0.0;        // neighbour skin [m]; <= 0: 0.1 * smallest radius
+  std::vector<Wall> walls;  // flat walls (wall.hpp)
+  GasDrag gas;              // drag of the surrounding gas (gas_drag.hpp)
+  Vec3 gravity;             // uniform acceleration g [m/s^2]
 };
 
 class DemSystem {
@@ -47,6 +52,7 @@ class DemSystem {
   // Adds a particle (largest index); existing contacts keep their state.
   void add_particle(const Vec3& x, double radius, double density, const Vec3& v, double charge, double kappa) {
     p_.add(x, radius, density, v, charge, kappa);
+    attach();
     forces_ready_ = false;
   }
   void step();
@@ -67,7 +73,10 @@ class DemSystem {
   // Diagnostics.
   double kinetic_energy() const;                // translational + rotational [J]
   double translational_kinetic_energy() const;  // [J]
-  int active_contacts() const;
+  int active_contacts() const;  // between particles
+  int wall_contacts() const;    // of particles with the walls
+  // Contact states of every particle with wall k of params().walls.
+  const WallContacts& wall_contacts(std::size_t k) const { return walls_[k]; }
   std::vector<int> contacts_per_particle() const;
   double external_energy() const { return ext_ ? ext_->energy() : 0.0; }
   Vec3 momentum() const;
@@ -81,6 +90,8 @@ class DemSystem {
   // Compute forces for the current state without advancing (first call of step() does it).
   void compute_forces();
   JkrPair jkr_for(std::uint32_t i, std::uint32_t j) const;
+  // JKR constants of particle i against `w` (R* = r_i, E* of the wall's material; wall.hpp).
+  JkrPair wall_jkr(std::uint32_t i, const Wall& w) const;
 
   // The complete state between two steps (dem_state.hpp) and its restoration into a system built
   // from the same case (same contact law and external force object); defined in dem_state.cpp.
@@ -88,12 +99,19 @@ class DemSystem {
   void restore(const DemState& s);
 
  private:
+  void attach();  // wall contact slots and drag constants of particles added since the last call
+  void add_wall_and_body_forces();
+  void kick(std::int64_t q, double h);
+
   Particles p_;
   DemParams params_;
   ContactLaw law_;
   NeighborList nl_;
   ExternalForce* ext_ = nullptr;
   std::vector<PairForce> pair_forces_;
+  std::vector<WallContacts> walls_;     // one per params_.walls
+  std::vector<PairForce> wall_forces_;  // per particle, of the wall being evaluated
+  std::vector<double> decay_, lag_;     // gas drag per particle: E = exp(-dt/(2 tau)), tau (1 - E)
   double dt_ = 0.0, skin_ = 0.0, time_ = 0.0;
   long step_ = 0;
   bool forces_ready_ = false;
@@ -101,5 +119,7 @@ class DemSystem {
 
 // Reference contact period T0 = 2 pi sqrt(m*/k0), k0 = 0.9905 F_C/delta_C, for the smallest pair.
 double reference_period(const Particles& p, const ContactParams& c);
+// The same including the sphere-wall contacts of the lightest particles (m* = m, R* = r, wall E*).
+double reference_period(const Particles& p, const DemParams& d);
 
 }  // namespace agglo::dem

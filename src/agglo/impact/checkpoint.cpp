@@ -24,17 +24,32 @@ dem::Particles read_particles(CheckpointReader& r) {
   return p;
 }
 
+void write_state(CheckpointWriter& w, const dem::ContactState& s) {
+  w.boolean(s.active);
+  w.f64(s.a);
+  w.pod(s.xi_t);
+  w.pod(s.xi_r);
+  w.f64(s.xi_q);
+  w.f64(s.delta);
+}
+
+dem::ContactState read_state(CheckpointReader& r) {
+  dem::ContactState s;
+  s.active = r.boolean();
+  s.a = r.f64();
+  s.xi_t = r.pod<Vec3>();
+  s.xi_r = r.pod<Vec3>();
+  s.xi_q = r.f64();
+  s.delta = r.f64();
+  return s;
+}
+
 void write_pairs(CheckpointWriter& w, const std::vector<dem::Pair>& pairs) {
   w.u64(pairs.size());
   for (const auto& pr : pairs) {
     w.u64(pr.i);
     w.u64(pr.j);
-    w.boolean(pr.state.active);
-    w.f64(pr.state.a);
-    w.pod(pr.state.xi_t);
-    w.pod(pr.state.xi_r);
-    w.f64(pr.state.xi_q);
-    w.f64(pr.state.delta);
+    write_state(w, pr.state);
     for (double c : {pr.jkr.R, pr.jkr.Estar, pr.jkr.gamma, pr.jkr.Fc, pr.jkr.a0, pr.jkr.deltaC}) w.f64(c);
   }
 }
@@ -44,12 +59,7 @@ std::vector<dem::Pair> read_pairs(CheckpointReader& r) {
   for (auto& pr : pairs) {
     pr.i = static_cast<std::uint32_t>(r.u64());
     pr.j = static_cast<std::uint32_t>(r.u64());
-    pr.state.active = r.boolean();
-    pr.state.a = r.f64();
-    pr.state.xi_t = r.pod<Vec3>();
-    pr.state.xi_r = r.pod<Vec3>();
-    pr.state.xi_q = r.f64();
-    pr.state.delta = r.f64();
+    pr.state = read_state(r);
     for (double* c : {&pr.jkr.R, &pr.jkr.Estar, &pr.jkr.gamma, &pr.jkr.Fc, &pr.jkr.a0, &pr.jkr.deltaC}) *c = r.f64();
   }
   return pairs;
@@ -63,6 +73,11 @@ void write_dem(CheckpointWriter& w, const dem::DemState& s) {
   for (double v : {s.dt, s.skin, s.time}) w.f64(v);
   w.i64(s.step);
   w.boolean(s.forces_ready);
+  w.u64(s.walls.size());  // the wall contact states; their JKR constants are recomputed on restore
+  for (const auto& wc : s.walls) {
+    w.u64(wc.state.size());
+    for (const auto& c : wc.state) write_state(w, c);
+  }
 }
 
 dem::DemState read_dem(CheckpointReader& r) {
@@ -74,6 +89,11 @@ dem::DemState read_dem(CheckpointReader& r) {
   for (double* v : {&s.dt, &s.skin, &s.time}) *v = r.f64();
   s.step = r.i64();
   s.forces_ready = r.boolean();
+  s.walls.resize(r.u64());
+  for (auto& wc : s.walls) {
+    wc.state.resize(r.u64());
+    for (auto& c : wc.state) c = read_state(r);
+  }
   return s;
 }
 

@@ -58,6 +58,12 @@ bool ElectrostaticForce::needs_solve(const dem::Particles& p, long step) const {
       double gap = norm(now) - shrink * (p.r[i] + p.r[j]);
       if (norm(now - then) > s_.es.update_fraction * gap) return true;
     }
+  for (const auto& w : s_.grounded)  // a sphere and its image: separation 2 h along the normal
+    for (std::size_t i : visible_) {
+      const double h = w.height(p.x[i]);
+      const double gap = 2.0 * h - 2.0 * shrink * p.r[i];
+      if (2.0 * std::abs(h - w.height(x_at_solve_[i])) > s_.es.update_fraction * gap) return true;
+    }
   return false;
 }
 
@@ -74,6 +80,14 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
     q.push_back(p.q[k]);
     kappa.push_back(p.kappa[k]);
   }
+  const std::size_t n_real = x.size();
+  for (const auto& w : s_.grounded)  // mirror spheres (electrostatic_coupling.hpp)
+    for (std::size_t a = 0; a < n_real; ++a) {
+      x.push_back(x[a] - 2.0 * w.height(x[a]) * w.normal);
+      radius.push_back(radius[a]);
+      q.push_back(-q[a]);
+      kappa.push_back(kappa[a]);
+    }
   es::Problem prob;
   try {
     prob = es::make_problem(s_.es, x, radius, q, kappa);
@@ -88,6 +102,7 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
   es::Solution sub;
   if (!prob.spheres.empty()) sub = uniform ? coulomb_->solve(prob) : solver_->solve(prob);
   last_ = sub;
+  if (!s_.grounded.empty()) last_.energy *= 0.5;  // the real half of the mirrored system
   last_.force.assign(p.size(), Vec3{});
   last_.torque.assign(p.size(), Vec3{});
   for (std::size_t a = 0; a < visible_.size(); ++a) {

@@ -21,6 +21,7 @@
 #include "agglo/impact/coupling_state.hpp"
 #include "agglo/impact/pair_table.hpp"
 #include "agglo/dem/external_force.hpp"
+#include "agglo/dem/wall.hpp"
 #include "agglo/electrostatics/config.hpp"
 #include "agglo/electrostatics/solver.hpp"
 
@@ -29,6 +30,15 @@ namespace agglo::impact {
 struct CouplingSettings {
   es::EsConfig es;            // [electrostatics]: solver, kappa_0, field, g_min, update rule
   double force_scale = 1.0;   // chi^(2/5) with force_scale_chi, else 1
+  // At most one grounded conducting wall (wall.grounded). Method of images: every visible sphere gets
+  // a mirror sphere (position reflected in the plane, same radius and kappa_p, free charge -q) and the
+  // chosen solver solves real and mirror spheres together. The potential of that system is odd under
+  // the reflection, so it vanishes on the plane: the forces on the real spheres are those of the
+  // grounded-plane problem with every order of polarisation the solver resolves (for the spectral
+  // and BEM solvers: the spheres' mutual and self-image polarisation; coulomb: point charges), and the
+  // energy of the real system is half the solved one. The update rule also watches each sphere's gap
+  // to its own image.
+  std::vector<dem::Wall> grounded;
 };
 
 class ElectrostaticForce : public dem::ExternalForce {

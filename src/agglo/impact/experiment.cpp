@@ -99,12 +99,17 @@ void check_relaxed_contacts(const dem::DemSystem& sys, const ImpactCase& c,
       made.empty() ? "" : ": ", edge_list(made), rg0, radius_of_gyration(sys.particles()), sys.time(), cause));
 }
 
+// The relaxation keeps the walls and the drag of still gas but no gravity or gas flow, which would
+// move the agglomerate as a whole (docs/dem.md "Gas and walls").
 dem::Particles relax(const ImpactCase& c, const ProgressFn& progress) {
-  dem::DemSystem sys(build_agglomerate(c), c.dem);
+  dem::DemParams still = c.dem;
+  still.gravity = {};
+  still.gas.flow = {};
+  dem::DemSystem sys(build_agglomerate(c), still);
   if (!c.electrostatics || c.time.relax_time <= 0.0) return sys.particles();
   auto es = make_electrostatic_force(c);
   sys.set_external_force(es.get());
-  auto jkr = sys.jkr_for(0, 1);
+  auto jkr = sys.jkr_for(0, sys.particles().size() > 1 ? 1 : 0);
   const double ke_tol = c.time.relax_energy * jkr.Fc * jkr.deltaC;
   const long max_steps = static_cast<long>(c.time.relax_time / sys.dt());
   sys.compute_forces();  // the first step's forces: contacts as built (the step reuses them)

@@ -51,6 +51,7 @@ struct ImpactOutcome {
   bool early_stop = false;   // decided before after_contact (clearly broken)
   long es_solves = 0;        // electrostatic solves
   double es_seconds = 0.0;   // wall time spent in them
+  int wall_contacts = -1;    // particles touching a wall at the end (sticking); -1: the case has no wall
 };
 
 // Electrostatic coupling factory (defined in electrostatic_coupling.cpp).

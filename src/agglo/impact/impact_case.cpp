@@ -4,7 +4,10 @@
 
 #include <fmt/format.h>
 
+#include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
+#include "agglo/core/gas_law.hpp"
+#include "agglo/core/settings_acoustic.hpp"
 #include "agglo/dem/contact/settings.hpp"
 #include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/orientation.hpp"
@@ -105,8 +108,13 @@ void parse_bodies(const ConfigSection& root, ImpactCase& c) {
   }
   auto plist = particles.elements(root);
   if (a.shape == "list") {
-    if (plist.size() < 2)
-      ka.shape.reject(ag, fmt::format("shape = \"list\" needs at least two [[{}]] entries", particles.name()));
+    const std::size_t least = c.wall_impact ? 1 : 2;  // a single sphere may hit a wall
+    if (plist.size() < least) {
+      const std::string hint =
+          c.wall_impact ? "" : fmt::format(" (one with {} = true)", impact_keys().wall.impact.dotted());
+      ka.shape.reject(ag, fmt::format("shape = \"list\" needs at least {} [[{}]] entries{}", least == 1 ? "one" : "two",
+                                      particles.name(), hint));
+    }
     for (auto& ps : plist) a.particles.push_back(es::parse_particle(ps));
   } else if (!plist.empty()) {
     ka.shape.reject(ag, fmt::format("[[{}]] entries are only used with shape = \"list\"", particles.name()));
@@ -121,6 +129,73 @@ void parse_bodies(const ConfigSection& root, ImpactCase& c) {
   p.radius = kp.radius.read_or(pj, a.radius);
   p.charge = kp.charge.read(pj);
   p.permittivity = kp.permittivity.read(pj);
+}
+
+// [wall]: read only when present (cases without it resolve as before); the wall goes to c.dem.walls.
+void parse_wall(const ConfigSection& root, ImpactCase& c) {
+  const auto& kw = impact_keys().wall;
+  if (!kw.t.present(root)) return;
+  auto ws = kw.t.open(root);
+  const bool on = kw.enabled.read(ws);
+  dem::Wall w;
+  w.point = kw.position.read(ws);
+  const Vec3 n = kw.normal.read(ws);
+  if (!(norm(n) > 0.0)) kw.normal.reject(ws, "must not be the zero vector");
+  w.normal = n / norm(n);
+  w.material = kw.material.read(ws) == "rigid" ? dem::WallMaterial::rigid : dem::WallMaterial::same;
+  const bool impact = kw.impact.read(ws);
+  const bool grounded = kw.grounded.read(ws);
+  if (!on) return;
+  if (impact && !(w.normal.x < 0.0))
+    kw.normal.reject(ws, fmt::format("with {} = true the agglomerate moves along +x: the wall must face it (a normal "
+                                     "with a negative x component)",
+                                     kw.impact.dotted()));
+  c.dem.walls.push_back(w);
+  c.wall_impact = impact;
+  if (grounded) c.coupling.grounded.push_back(w);
+}
+
+// [gas] of an impact case (the keys of the acoustic cases' [gas], plus drag and flow): read only when
+// present. Viscosity and mean free path default to air at the temperature and pressure (core/gas_law.hpp).
+void parse_gas(const ConfigSection& root, ImpactCase& c) {
+  const auto& kg = settings::acoustic_settings().gas;
+  if (!kg.t.present(root)) return;
+  auto gs = kg.t.open(root);
+  const double T = kg.temperature.read(gs), P = kg.pressure.read(gs);
+  const double mu = kg.viscosity.present(gs) ? kg.viscosity.read(gs) : gas::sutherland_viscosity(T);
+  const double lambda = kg.mean_free_path.present(gs)
+                            ? kg.mean_free_path.read(gs)
+                            : gas::mean_free_path(mu, gas::density(T, P), gas::mean_speed(T));
+  auto& g = c.dem.gas;
+  g.enabled = kg.drag.read(gs);
+  g.viscosity = mu;
+  g.mean_free_path = lambda;
+  g.flow = kg.flow.read(gs);
+  if (kg.gravity.read(gs)) c.dem.gravity = {0.0, 0.0, -constants::g0};
+}
+
+// No particle of the launch configuration may reach through a wall by more than kMaxListOverlap times
+// its JKR equilibrium overlap with it (touching at that overlap is a particle resting on the wall).
+void check_walls(const ConfigSection& root, const ImpactCase& c) {
+  if (c.dem.walls.empty()) return;
+  dem::Particles p = build_agglomerate(c);
+  if (!c.wall_impact) add_projectile(p, c, c.projectile.speed);
+  const auto& kw = impact_keys().wall;
+  const auto& cp = c.dem.contact;
+  const std::size_t n_agg = c.wall_impact ? p.size() : p.size() - 1;
+  for (const auto& w : c.dem.walls)
+    for (std::size_t q = 0; q < p.size(); ++q) {
+      const double estar = dem::wall_estar(w.material, cp.youngs_modulus, cp.poisson_ratio);
+      const double delta0 = dem::JkrPair::make(p.r[q], estar, cp.surface_energy).delta_equilibrium();
+      const double overlap = p.r[q] - w.height(p.x[q]);
+      if (!(overlap <= kMaxListOverlap * delta0))
+        kw.position.reject(kw.t.open(root),
+                           fmt::format("the wall plane cuts {} (centre [{:.4g}, {:.4g}, {:.4g}] m, radius {:.3g} m, "
+                                       "{:.3g} m through the plane); place the wall outside the structure, on the side "
+                                       "its normal points away from",
+                                       q < n_agg ? fmt::format("particle {}", q) : std::string("the projectile"),
+                                       p.x[q].x, p.x[q].y, p.x[q].z, p.r[q], overlap));
+    }
 }
 
 // Smallest vcrit.tolerance accepted, relative to vcrit.v_max.
@@ -176,6 +251,10 @@ void parse_coupling(const ConfigSection& root, double real_modulus, ImpactCase& 
   }
   c.medium_permittivity = c.coupling.es.medium_permittivity;
   c.electrostatics = c.electrostatics || norm(c.coupling.es.external_field) > 0.0;
+  if (!c.coupling.grounded.empty() && norm(c.coupling.es.external_field) > 0.0)
+    ks.external_field.reject(ks.t.open(root), fmt::format("a grounded wall ({} = true) takes no applied field: the "
+                                                          "images are those of a plane at zero potential without one",
+                                                          impact_keys().wall.grounded.dotted()));
 }
 
 // Several orientations rotate one relaxed agglomerate rigidly (breakup.hpp), which is exact only when
@@ -195,7 +274,7 @@ void check_time_step(const ConfigSection& root, const ImpactCase& c) {
   if (c.dem.dt <= 0.0) return;
   dem::Particles p = build_agglomerate(c);
   add_projectile(p, c, c.projectile.speed);
-  const double t0 = dem::reference_period(p, c.dem.contact);
+  const double t0 = dem::reference_period(p, c.dem);
   const double dt_max = dem::kMaxDtOverPeriod * t0;
   if (!(c.dem.dt <= dt_max)) {
     const auto& k = impact_keys().time;
@@ -213,11 +292,14 @@ ImpactCase parse_impact_case(Config& cfg) {
   c.name = impact_keys().top.name.read(root);
   const double real_modulus = parse_material_contact(root, c);
   parse_time(root, c);
+  parse_wall(root, c);
+  parse_gas(root, c);
   parse_bodies(root, c);
   parse_searches(root, c);
   parse_coupling(root, real_modulus, c);
   check_orientations(root, c);
   check_list_overlaps(root, c);
+  check_walls(root, c);
   check_time_step(root, c);
   return c;
 }

@@ -89,6 +89,8 @@ struct ImpactCase {
   bool electrostatics = false;  // derived: any charge or field present
   double medium_permittivity = es::es_keys().medium_permittivity.def();  // kappa_0
   CouplingSettings coupling;    // [electrostatics]
+  // [wall] (the wall itself is in dem.walls) and [gas] (dem.gas, dem.gravity): docs/dem.md "Gas and walls".
+  bool wall_impact = false;     // the agglomerate moves onto the wall (no projectile)
 };
 
 // Reads every section; throws ConfigError naming file, key, value and the allowed range.

@@ -44,6 +44,15 @@ bool clearly_broken(const dem::DemSystem& sys, std::size_t n_agg, double kappa0,
   return true;
 }
 
+// Smallest surface gap between a particle and a wall [m].
+double wall_gap(const dem::DemSystem& sys) {
+  const auto& p = sys.particles();
+  double gap = std::numeric_limits<double>::infinity();
+  for (const auto& w : sys.params().walls)
+    for (std::size_t q = 0; q < p.size(); ++q) gap = std::min(gap, w.height(p.x[q]) - p.r[q]);
+  return std::max(gap, 0.0);
+}
+
 }  // namespace
 
 ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double speed, Recorder* rec,
@@ -60,9 +69,14 @@ ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double spe
   u0_ = c.agglomerate.shape == "list" ? std::numeric_limits<double>::quiet_NaN()
                                       : 2.0 * constants::pi * rp * rp * rp * sigma * sigma / constants::eps0;
   kappa0_ = es_ ? c.medium_permittivity : 1.0;
-  const double gap = c.projectile.gap_radii * rp;
-  max_approach_ = c.time.max_approach > 0.0 ? c.time.max_approach : 5.0 * (gap + rp) / std::max(speed, 1e-3) + 1e-4;
+  double gap = c.projectile.gap_radii * rp;
   at_.t_launch = sys_.time();
+  if (c.wall_impact) {  // the agglomerate itself moves onto the wall (docs/dem.md "Gas and walls")
+    gap = wall_gap(sys_);
+    for (auto& v : sys_.particles().v) v = {speed, 0.0, 0.0};
+  }
+  max_approach_ = c.time.max_approach > 0.0 ? c.time.max_approach : 5.0 * (gap + rp) / std::max(speed, 1e-3) + 1e-4;
+  if (c.wall_impact) return;
   dem::Particles tmp = sys_.particles();
   add_projectile(tmp, c, speed);
   sys_.add_particle(tmp.x.back(), tmp.r.back(), c.agglomerate.density, tmp.v.back(), tmp.q.back(), tmp.kappa.back());
@@ -148,6 +162,12 @@ void ImpactRun::end_segment(bool early) {
 void ImpactRun::missed() const {
   const auto& p = sys_.particles();
   const auto& k = impact_keys();
+  if (c_.wall_impact)
+    throw InvalidRunError(fmt::format("the agglomerate never touched the wall within the approach limit {:.3g} s ({} = "
+                                      "{:g}, 0 = 5x the ballistic time): no impact happened; likely cause: {} or {} "
+                                      "place the wall out of its path along +x, or {} is too short",
+                                      max_approach_, k.time.max_approach.dotted(), c_.time.max_approach,
+                                      k.wall.position.dotted(), k.wall.normal.dotted(), k.time.max_approach.dotted()));
   Vec3 c;
   for (std::size_t q = 0; q < n_agg_; ++q) c += p.x[q] / static_cast<double>(n_agg_);
   double reach = 0.0;  // largest distance from the launch line at which the projectile still touches
@@ -191,6 +211,7 @@ ImpactOutcome ImpactRun::outcome() const {
     out.es_seconds = ef->seconds();
   }
   out.steps = sys_.steps();
+  if (!c_.dem.walls.empty()) out.wall_contacts = sys_.wall_contacts();
   return out;
 }
 
@@ -232,6 +253,7 @@ void ImpactRun::check_energy() const {
 }
 
 bool ImpactRun::projectile_touches() const {
+  if (c_.wall_impact) return sys_.wall_contacts() > 0;
   for (const auto& pr : sys_.pairs())
     if (pr.state.active && (pr.i == n_agg_ || pr.j == n_agg_)) return true;
   return false;

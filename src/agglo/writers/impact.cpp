@@ -75,11 +75,14 @@ nlohmann::json outcome_json(const ImpactOutcome& o) {
                      {"separation_rate_m_per_s", f.separation_rate},
                      {"relative_kinetic_energy_J", f.relative_ke},
                      {"electrostatic_binding_J", f.binding}});
-  return {{"speed_m_per_s", o.speed},   {"broken", o.broken},          {"undecided", o.undecided},
+  nlohmann::json j = {{"speed_m_per_s", o.speed},   {"broken", o.broken},          {"undecided", o.undecided},
           {"projectile_contact", o.contact}, {"components", o.components}, {"fragments", frags},
           {"t_first_contact_s", o.t_contact}, {"t_end_s", o.t_end},   {"dt_s", o.dt},
           {"steps", o.steps},           {"extensions", o.extensions}, {"early_stop", o.early_stop},
           {"electrostatic_solves", o.es_solves}, {"electrostatic_seconds", o.es_seconds}};
+  // Cases with a wall only (the others' result.json stays as it was).
+  if (o.wall_contacts >= 0) j["wall_contacts_at_end"] = o.wall_contacts;
+  return j;
 }
 
 ImpactOutcome outcome_from_json(const nlohmann::json& j) {
@@ -101,6 +104,7 @@ ImpactOutcome outcome_from_json(const nlohmann::json& j) {
   o.early_stop = j.at("early_stop").get<bool>();
   o.es_solves = j.at("electrostatic_solves").get<long>();
   o.es_seconds = j.at("electrostatic_seconds").get<double>();
+  if (j.contains("wall_contacts_at_end")) o.wall_contacts = j.at("wall_contacts_at_end").get<int>();
   return o;
 }
 

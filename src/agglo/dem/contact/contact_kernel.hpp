@@ -7,6 +7,7 @@
 #include "agglo/dem/jkr.hpp"
 #include "agglo/dem/neighbor_list.hpp"
 #include "agglo/dem/particles.hpp"
+#include "agglo/dem/wall.hpp"
 
 namespace agglo::dem::contact {
 
@@ -19,6 +20,12 @@ class ContactKernel {
   // One pair (tests and diagnostics; a virtual call per pair).
   virtual PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
                                   double dt) const = 0;
+  // Forces of every particle against wall `w` into out[k] (resized to p.size()); updates wc.state.
+  virtual void evaluate_wall(const Wall& w, WallContacts& wc, const Particles& p, double dt,
+                             std::vector<PairForce>& out) const = 0;
+  // One sphere against a wall (tests).
+  virtual PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s,
+                                          double dt) const = 0;
 };
 
 }  // namespace agglo::dem::contact

@@ -7,6 +7,8 @@
 //      touching, conserving angular momentum exactly); F_n = F_ne + eta_N d(delta)/dt on i along -n;
 //   4. F_t = Tangential::force, then Twisting::torque and Rolling::torque (moments on i, -moment on j;
 //      models declaring `inactive` are skipped), finally the lever torques l_i n x F_t, l_j n x F_t.
+// A sphere against a wall (wall.hpp) runs steps 2-4 unchanged with n = -wall normal, m* = m, l_i = h
+// (the centre height), l_j = 0 and the wall at rest: the same sub-models, R* = r in its JkrPair.
 // The interface each sub-model implements is the call made on it below.
 #include <cstdint>
 
@@ -47,6 +49,20 @@ class PairKernel final : public ContactKernel {
     return force(jkr, k, s, dt);
   }
 
+  void evaluate_wall(const Wall& w, WallContacts& wc, const Particles& p, double dt,
+                     std::vector<PairForce>& out) const override {
+    out.resize(p.size());
+    parallel_for(static_cast<std::int64_t>(p.size()), [&](std::int64_t k) {
+      const WallKinematics kin{w.height(p.x[k]), -w.normal, p.v[k], p.w[k], p.r[k], p.m[k]};
+      out[k] = wall_force(wc.jkr[k], kin, wc.state[k], dt);
+    });
+  }
+
+  PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s,
+                                  double dt) const override {
+    return wall_force(jkr, k, s, dt);
+  }
+
  private:
   // Step 1: true while the contact is (or becomes) active.
   bool engaged(const JkrPair& jkr, double delta, ContactState& s) const {
@@ -67,33 +83,63 @@ class PairKernel final : public ContactKernel {
   // flatten: the sub-model calls are inlined into one body (as fast as a hand-written law; without it
   // GCC keeps them out of line and a step costs ~25 % more).
   [[gnu::flatten]] PairForce force(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt) const {
-    PairForce out;
     const Vec3 d = k.xj - k.xi;
     const double dist = norm(d);
     const double delta = k.ri + k.rj - dist;
-    if (!engaged(jkr, delta, s)) return out;
+    if (!engaged(jkr, delta, s)) return PairForce{};
+    Geometry g;
+    g.n = d / dist;  // from i to j
+    g.mstar = k.mi * k.mj / (k.mi + k.mj);
+    g.li = (dist * dist + k.ri * k.ri - k.rj * k.rj) / (2.0 * dist);
+    g.lj = dist - g.li;
+    g.vrel = k.vi - k.vj + cross(g.li * k.wi + g.lj * k.wj, g.n);
+    g.w_rel = k.wi - k.wj;
+    return respond(jkr, delta, g, s, dt);
+  }
+
+  // A sphere against a wall (wall.hpp): the partner of infinite radius and mass, at rest.
+  [[gnu::flatten]] PairForce wall_force(const JkrPair& jkr, const WallKinematics& k, ContactState& s,
+                                        double dt) const {
+    const double delta = k.r - k.h;
+    if (!engaged(jkr, delta, s)) return PairForce{};
+    Geometry g;
+    g.n = k.n;
+    g.mstar = k.m;
+    g.li = k.h;
+    g.lj = 0.0;
+    g.vrel = k.v + cross(g.li * k.w, g.n);
+    g.w_rel = k.w;
+    return respond(jkr, delta, g, s, dt);
+  }
+
+  // Steps 2-4 of an engaged contact: normal n (from i to its partner), reduced mass, levers to the
+  // contact plane, relative velocity of i at the contact and relative angular velocity.
+  struct Geometry {
+    Vec3 n;
+    double mstar = 0.0, li = 0.0, lj = 0.0;
+    Vec3 vrel, w_rel;
+  };
+
+  PairForce respond(const JkrPair& jkr, double delta, const Geometry& g, ContactState& s, double dt) const {
+    PairForce out;
     ContactPoint c;
-    c.n = d / dist;  // from i to j
+    c.n = g.n;
     s.a = normal_.contact_radius(jkr, delta, s.a);
     c.a = s.a;
     c.f_ne = normal_.force(jkr, c.a);
-    const double mstar = k.mi * k.mj / (k.mi + k.mj);
-    c.eta_n = damping_.coefficient(mstar, normal_.stiffness(jkr, c.a));
-    const double li = (dist * dist + k.ri * k.ri - k.rj * k.rj) / (2.0 * dist);
-    const double lj = dist - li;
-    const Vec3 vrel = k.vi - k.vj + cross(li * k.wi + lj * k.wj, c.n);
-    const double ddelta_dt = dot(vrel, c.n);
-    c.vs = vrel - ddelta_dt * c.n;
+    c.eta_n = damping_.coefficient(g.mstar, normal_.stiffness(jkr, c.a));
+    const double ddelta_dt = dot(g.vrel, c.n);
+    c.vs = g.vrel - ddelta_dt * c.n;
     c.f_n = c.f_ne + c.eta_n * ddelta_dt;  // > 0 repulsive
-    c.w_rel = k.wi - k.wj;
+    c.w_rel = g.w_rel;
     c.dt = dt;
     out.f_on_i = -c.f_n * c.n;
     const Vec3 ft = tangential_.force(c, jkr, s);
     add_moment(twisting_, c, jkr, s, out);
     add_moment(rolling_, c, jkr, s, out);
     out.f_on_i += ft;
-    out.t_on_i += li * cross(c.n, ft);
-    out.t_on_j += lj * cross(c.n, ft);
+    out.t_on_i += g.li * cross(c.n, ft);
+    out.t_on_j += g.lj * cross(c.n, ft);
     return out;
   }
 
