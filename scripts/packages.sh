@@ -8,10 +8,13 @@ RUN_PKGS="build-essential cmake pkg-config libeigen3-dev libtomlplusplus-dev lib
 # pytest, the Dask example's test, the notebooks):
 TEST_PKGS="libgtest-dev libbenchmark-dev clang-tidy python3-pytest python3-distributed"
 
-# install_missing PKG...: apt-get installs the packages that dpkg does not know as installed.
+# install_missing PKG...: apt-get installs the packages that dpkg does not know as installed (a package
+# removed but not purged is known to `dpkg -s` with the status "deinstall ok config-files": not installed).
 install_missing() {
   local missing="" p SUDO=""
-  for p in "$@"; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
+  for p in "$@"; do
+    [ "$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null)" = "install ok installed" ] || missing="$missing $p"
+  done
   [ -n "$missing" ] || return 0
   [ "$(id -u)" -ne 0 ] && SUDO="sudo"
   echo "setup: installing$missing"
