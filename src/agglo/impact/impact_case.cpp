@@ -8,6 +8,7 @@
 #include "agglo/dem/contact/settings.hpp"
 #include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/orientation.hpp"
+#include "agglo/impact/structure_target.hpp"
 
 namespace agglo::impact {
 
@@ -73,12 +74,13 @@ void check_list_overlaps(const ConfigSection& root, const ImpactCase& c) {
     }
 }
 
-// [agglomerate], [[particles]] (shape = "list") and [projectile].
-void parse_bodies(const ConfigSection& root, ImpactCase& c) {
+}  // namespace
+
+AgglomerateSpec parse_agglomerate(const ConfigSection& root, const std::string& case_file) {
   const auto& ka = impact_keys().agglomerate;
   const auto& particles = settings::electrostatics_settings().particles.t;
   auto ag = ka.t.open(root);
-  auto& a = c.agglomerate;
+  AgglomerateSpec a;
   a.shape = ka.shape.read(ag);
   a.radius = ka.radius.read(ag);
   a.charged = ka.charged.read(ag);
@@ -98,11 +100,12 @@ void parse_bodies(const ConfigSection& root, ImpactCase& c) {
   a.orientation = original_orientation(a.shape);
   if (ka.orientation.present(ag)) {  // read only when set, so the resolved config stays unchanged
     a.orientation = ka.orientation.read(ag);
-    if (a.shape == "list")
-      ka.orientation.reject(ag, fmt::format("applies to the built-in shapes only; {} = \"list\" places the [[{}]] "
-                                            "entries as given",
-                                            ka.shape.dotted(), particles.name()));
+    if (a.shape == "list" || is_structure_shape(a.shape))
+      ka.orientation.reject(ag, fmt::format("applies to the tetrahedron and square only; {} = \"{}\" places the "
+                                            "primaries as given",
+                                            ka.shape.dotted(), a.shape));
   }
+  parse_structure(root, ag, case_file, a);
   auto plist = particles.elements(root);
   if (a.shape == "list") {
     if (plist.size() < 2)
@@ -111,6 +114,17 @@ void parse_bodies(const ConfigSection& root, ImpactCase& c) {
   } else if (!plist.empty()) {
     ka.shape.reject(ag, fmt::format("[[{}]] entries are only used with shape = \"list\"", particles.name()));
   }
+  return a;
+}
+
+namespace {
+
+// [agglomerate], [[particles]] (shape = "list") and [projectile].
+void parse_bodies(const ConfigSection& root, const std::string& case_file, ImpactCase& c) {
+  const double density = c.agglomerate.density;  // [material]
+  c.agglomerate = parse_agglomerate(root, case_file);
+  c.agglomerate.density = density;
+  const auto& a = c.agglomerate;
 
   const auto& kp = impact_keys().projectile;
   auto pj = kp.t.open(root);
@@ -213,7 +227,7 @@ ImpactCase parse_impact_case(Config& cfg) {
   c.name = impact_keys().top.name.read(root);
   const double real_modulus = parse_material_contact(root, c);
   parse_time(root, c);
-  parse_bodies(root, c);
+  parse_bodies(root, cfg.file(), c);
   parse_searches(root, c);
   parse_coupling(root, real_modulus, c);
   check_orientations(root, c);

@@ -12,6 +12,7 @@
 #include "agglo/impact/electrostatic_coupling.hpp"
 #include "agglo/dem/dem_system.hpp"
 #include "agglo/electrostatics/config.hpp"
+#include "agglo/structure/aggregate.hpp"
 
 namespace agglo::impact {
 
@@ -31,6 +32,15 @@ struct AgglomerateSpec {
   // edge_across | edge_along | face | vertex (orientation.hpp); empty = the shape's original geometry
   std::string orientation;
   std::vector<ListParticle> particles;                                    // shape = list
+  // shape = fractal | bpca | bcca | file (impact/structure_target.hpp): the request, and the structure
+  // built (or read) and checked at parse time, primaries touching, centroid at the origin.
+  int primaries = static_cast<int>(impact_keys().agglomerate.primaries.def());           // N
+  double fractal_dimension = impact_keys().agglomerate.fractal_dimension.def();          // D_f
+  double fractal_prefactor = impact_keys().agglomerate.fractal_prefactor.def();          // k_f
+  double radius_std = impact_keys().agglomerate.radius_std.def();                        // sigma_g
+  std::string file;                                                                      // resolved path
+  long long seed = impact_keys().top.seed.def();
+  structure::Aggregate structure;
 };
 
 struct ProjectileSpec {
@@ -90,6 +100,10 @@ struct ImpactCase {
   double medium_permittivity = es::es_keys().medium_permittivity.def();  // kappa_0
   CouplingSettings coupling;    // [electrostatics]
 };
+
+// [agglomerate] (with [[particles]] for shape = "list", the structure of impact/structure_target.hpp for
+// the builder's shapes); `case_file` locates a relative agglomerate.file. Density: the default.
+AgglomerateSpec parse_agglomerate(const ConfigSection& root, const std::string& case_file);
 
 // Reads every section; throws ConfigError naming file, key, value and the allowed range.
 ImpactCase parse_impact_case(Config& cfg);

@@ -5,6 +5,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "agglo/structure/primaries.hpp"
+
 namespace agglo::structure {
 
 double rg_point_mass(const Aggregate& a) {
@@ -98,6 +100,41 @@ FractalFit fit_fractal(const std::vector<double>& n, const std::vector<double>& 
   f.fractal_prefactor = std::exp(-intercept / slope);
   f.dimension_stderr = std::sqrt(rss / (md - 2.0) / sxx_c) / (slope * slope);  // delta method
   return f;
+}
+
+}  // namespace agglo::structure
+
+namespace agglo::structure {
+
+namespace {
+constexpr std::size_t kSmallestGrowthPrefix = 16;
+}
+
+std::optional<FractalFit> growth_fit(const Aggregate& a) {
+  std::vector<double> n, rg;
+  const double abar = geometric_mean(a.r);
+  for (std::size_t m = a.size(); m >= kSmallestGrowthPrefix; m /= 2) {
+    Aggregate prefix;
+    prefix.x.assign(a.x.begin(), a.x.begin() + static_cast<std::ptrdiff_t>(m));
+    prefix.r.assign(a.r.begin(), a.r.begin() + static_cast<std::ptrdiff_t>(m));
+    n.push_back(static_cast<double>(m));
+    rg.push_back(rg_point_mass(prefix) / abar);
+  }
+  if (n.size() < 3) return std::nullopt;
+  return fit_fractal(n, rg);
+}
+
+Summary summarize(const Aggregate& a, const Contacts& contacts, bool growth_order) {
+  Summary s;
+  s.primaries = a.size();
+  s.abar = geometric_mean(a.r);
+  s.rg_point_mass = rg_point_mass(a);
+  s.rg_spheres = rg_spheres(a);
+  s.contacts = contacts;
+  s.coordination_counts = coordination_histogram(contacts.coordination);
+  s.mean_coordination = 2.0 * static_cast<double>(contacts.pairs.size()) / static_cast<double>(a.size());
+  if (growth_order) s.growth = growth_fit(a);
+  return s;
 }
 
 }  // namespace agglo::structure

@@ -11,6 +11,7 @@
 //                    ln R_g would bias D_f low by the scatter), D_f = 1/slope, k_f = exp(-intercept D_f),
 //                    with the standard error of D_f (that of the slope times D_f^2).
 #include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -50,5 +51,27 @@ struct FractalFit {
 };
 // Fit over (N_k, R_g,k / abar_k); at least three aggregates of at least two sizes.
 FractalFit fit_fractal(const std::vector<double>& n, const std::vector<double>& rg_over_a);
+
+}  // namespace agglo::structure
+
+namespace agglo::structure {
+
+// Growth fit of one generated aggregate: fit_fractal over its index prefixes n = N, N/2, N/4, ... >= 16
+// (the first n primaries; the builders append, so these are the intermediate clusters of BPCA, of BCCA
+// and of the fractal builder when N is a power of two times the sub-cluster size). None below 3 prefixes.
+std::optional<FractalFit> growth_fit(const Aggregate& a);
+
+// Everything agglo aggregate reports about one structure.
+struct Summary {
+  std::size_t primaries = 0;
+  double abar = 0.0;                // geometric-mean radius [m]
+  double rg_point_mass = 0.0;       // [m]
+  double rg_spheres = 0.0;          // [m]
+  Contacts contacts;
+  std::vector<int> coordination_counts;  // coordination_histogram
+  double mean_coordination = 0.0;
+  std::optional<FractalFit> growth;
+};
+Summary summarize(const Aggregate& a, const Contacts& contacts, bool growth_order);
 
 }  // namespace agglo::structure
