@@ -77,7 +77,7 @@ struct ImpactSettings {
     // The keys of the generated shapes are read only with those shapes (the resolved config of the
     // other shapes stays as it was).
     Integer primaries{t, {"agglomerate.primaries", "", "number of primaries N of shape fractal, bpca, bcca"}, 64, 2,
-                      100000};
+                      10000};
     Real fractal_dimension{t, {"agglomerate.fractal_dimension", "", "fractal dimension D_f of shape fractal"}, 1.8,
                            Range::closed(1.0, 3.0)};
     Real fractal_prefactor{t, {"agglomerate.fractal_prefactor", "", "fractal prefactor k_f of shape fractal"}, 1.3,

@@ -17,6 +17,7 @@ namespace {
 
 constexpr std::uint64_t kFractalStream = 0x46524143;  // "FRAC"
 constexpr int kAngleTries = 8;
+constexpr long kMaxPairDraws = 200L * kMaxPairTries;  // random (i, j) draws of one join
 
 struct Law {
   double kf, df, abar;
@@ -123,22 +124,20 @@ bool join_clusters(Cluster& a, const Cluster& b, const Law& law, CounterRng& rng
   g.gamma = std::sqrt(g2);
   for (const auto& x : a.x) g.d1.push_back(norm(x - g.cm1));
   for (const auto& x : b.x) g.d2.push_back(norm(x - g.cm2));
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j) {
-      const auto [lo, hi] = pair_range(g, g.d1[i], g.d2[j], a.r[i] + b.r[j]);
-      if (lo <= hi) pairs.emplace_back(i, j);
-    }
+  // Touching pairs are drawn at random (no list of all m1 m2 pairs); a drawn pair that cannot span
+  // Gamma costs only the draw.
   Cluster placed;
-  for (int t = 0; t < kMaxPairTries && !pairs.empty(); ++t) {
-    const std::size_t pick = random_index(rng, pairs.size());
+  int feasible = 0;
+  for (long draw = 0; draw < kMaxPairDraws && feasible < kMaxPairTries; ++draw) {
+    const std::size_t i = random_index(rng, a.size()), j = random_index(rng, b.size());
+    const auto [lo, hi] = pair_range(g, g.d1[i], g.d2[j], a.r[i] + b.r[j]);
+    if (lo > hi) continue;
+    ++feasible;
     for (int k = 0; k < kAngleTries; ++k)
-      if (try_place(a, b, pairs[pick].first, pairs[pick].second, g, rng, placed)) {
+      if (try_place(a, b, i, j, g, rng, placed)) {
         a.append(placed);
         return true;
       }
-    pairs[pick] = pairs.back();
-    pairs.pop_back();
   }
   return false;
 }
@@ -192,7 +191,7 @@ Aggregate build_fractal(const FractalRequest& q) {
       if (!join_clusters(level[k], level[k + 1], law, rng))
         throw BuildError("fractal_dimension",
                          fmt::format("cluster-cluster aggregation cannot reach {}: no placement of clusters of {} "
-                                     "and {} primaries after {} pairs",
+                                     "and {} primaries after {} touching pairs",
                                      df_text(q), level[k].size(), level[k + 1].size(), kMaxPairTries));
       next.push_back(std::move(level[k]));
     }
