@@ -102,7 +102,7 @@ bool try_place(const Cluster& a, const Cluster& b, std::size_t i, std::size_t j,
   Rotation R = random_rotation(rng);
   if (d2 > 0.0) {
     const Vec3 u = (xj - c2) / d2;
-    R = compose(rotation_about(u, 2.0 * constants::pi * rng.uniform()), rotation_taking((b.x[j] - g.cm2) / d2, u));
+    R = compose(rotation_taking((b.x[j] - g.cm2) / d2, u), rotation_about(u, 2.0 * constants::pi * rng.uniform()));
   }
   placed = Cluster{};
   for (std::size_t k = 0; k < b.size(); ++k) {

@@ -13,30 +13,11 @@ Vec3 random_direction(CounterRng& rng) {
   return {s * std::cos(phi), s * std::sin(phi), z};
 }
 
-Rotation rotation_about(const Vec3& k, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle), t = 1.0 - c;
-  Rotation R;
-  R.row[0] = {c + t * k.x * k.x, t * k.x * k.y - s * k.z, t * k.x * k.z + s * k.y};
-  R.row[1] = {t * k.x * k.y + s * k.z, c + t * k.y * k.y, t * k.y * k.z - s * k.x};
-  R.row[2] = {t * k.x * k.z - s * k.y, t * k.y * k.z + s * k.x, c + t * k.z * k.z};
-  return R;
-}
-
-Rotation compose(const Rotation& a, const Rotation& b) {
-  Rotation out;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const Vec3 col{b.row[0][j], b.row[1][j], b.row[2][j]};
-      out.row[i][j] = dot(a.row[i], col);
-    }
-  return out;
-}
-
 Rotation random_rotation(CounterRng& rng) {
   // Uniform axis for the new z, then a uniform spin about it: Haar measure on SO(3).
   const Vec3 z = random_direction(rng);
   const double spin = 2.0 * constants::pi * rng.uniform();
-  return compose(rotation_about(z, spin), rotation_taking({0.0, 0.0, 1.0}, z));
+  return compose(rotation_taking({0.0, 0.0, 1.0}, z), rotation_about(z, spin));  // tilt, then spin about z
 }
 
 Rotation rotation_taking(const Vec3& from, const Vec3& to) {

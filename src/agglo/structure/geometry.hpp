@@ -1,24 +1,18 @@
 #pragma once
-// Geometry helpers of the builders: isotropic random directions and rotations drawn from a CounterRng,
+// Geometry helpers of the builders: isotropic random directions and rotations drawn from a CounterRng
+// (Rotation, rotation_about, compose: core/rotation.hpp),
 // the circle where two spheres meet, and the first contact of a sphere moving along a straight line.
 #include <optional>
 
 #include "agglo/core/rng.hpp"
+#include "agglo/core/rotation.hpp"
 #include "agglo/core/vec3.hpp"
 
 namespace agglo::structure {
 
-// A rotation as a 3x3 matrix (rows); apply(v) = R v.
-struct Rotation {
-  Vec3 row[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  Vec3 apply(const Vec3& v) const { return {dot(row[0], v), dot(row[1], v), dot(row[2], v)}; }
-};
-
 Vec3 random_direction(CounterRng& rng);                  // uniform on the unit sphere
 Rotation random_rotation(CounterRng& rng);               // uniform (Haar) random rotation
-Rotation rotation_about(const Vec3& unit_axis, double angle);  // right-handed, Rodrigues
 Rotation rotation_taking(const Vec3& from, const Vec3& to);    // smallest rotation taking unit `from` to unit `to`
-Rotation compose(const Rotation& a, const Rotation& b);        // a after b: v -> a(b(v))
 // Two unit vectors p, q completing unit n to a right-handed orthonormal basis.
 void orthonormal_pair(const Vec3& n, Vec3& p, Vec3& q);
 
