@@ -86,7 +86,7 @@ struct ImpactSettings {
                     {"agglomerate.radius_std", "",
                      "geometric standard deviation sigma_g of the lognormal primary radii (fractal, bpca, bcca)", {},
                      "1 = monodisperse"},
-                    1.0, Range::closed(1.0, 10.0)};
+                    1.0, Range::closed(1.0, 3.0)};
     Text file{t,
               {"agglomerate.file", "",
                "CSV of shape file: header with x, y, z, radius [m], optional charge [C], permittivity; relative "

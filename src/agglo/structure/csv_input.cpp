@@ -72,6 +72,8 @@ Aggregate read_aggregate_csv(std::istream& in, const std::string& source, const 
       have_header = true;
       continue;
     }
+    if (a.size() >= kMaxFilePrimaries)
+      ctx.fail(n, fmt::format("more than {} primaries (the O(N^2) contact check's limit)", kMaxFilePrimaries));
     a.add({number_at(cells, pos[0], ctx, n), number_at(cells, pos[1], ctx, n), number_at(cells, pos[2], ctx, n)},
           number_at(cells, pos[3], ctx, n));
     if (pos[4] >= 0) a.charge.push_back(number_at(cells, pos[4], ctx, n));

@@ -10,7 +10,10 @@
 
 namespace agglo::structure {
 
-// BuildError(key) naming `source` and the line on a missing column, a non-number or a short row.
+inline constexpr std::size_t kMaxFilePrimaries = 10000;  // as agglomerate.primaries
+
+// BuildError(key) naming `source` and the line on a missing column, a non-number, a short row or more
+// than kMaxFilePrimaries primaries.
 Aggregate read_aggregate_csv(std::istream& in, const std::string& source, const std::string& key);
 
 }  // namespace agglo::structure
