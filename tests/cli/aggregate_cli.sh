@@ -59,7 +59,7 @@ bad "agglomerate.shape' = \"tetrahedron\"" $'[agglomerate]\nshape = "tetrahedron
 bad "agglomerate.primaries" $'[agglomerate]\nshape = "square"\nprimaries = 10'
 
 # A 64-primary fractal target through the DEM (electrostatics off): one run, a decided outcome.
-printf 'name = "fractal64"\nseed = 2\n[agglomerate]\nshape = "fractal"\nprimaries = 64\nradius = 10e-6\n[projectile]\nspeed = 0.5\n' > "$T/f64.toml"
+printf 'name = "fractal64"\n[agglomerate]\nseed = 2\nshape = "fractal"\nprimaries = 64\nradius = 10e-6\n[projectile]\nspeed = 0.5\n' > "$T/f64.toml"
 $A -q collide "$T/f64.toml" --out "$T/f64" --set time.after_contact=2e-4 --set output.snapshot_interval=0 \
   > /dev/null 2>&1 || fail "collide of a 64-primary fractal target"
 /usr/bin/python3 -c "

@@ -17,7 +17,7 @@ namespace agglo::impact {
 namespace {
 
 ImpactCase fractal_case(const std::string& extra = "") {
-  Config cfg = Config::from_string("seed = 4\n[agglomerate]\nshape = \"fractal\"\nprimaries = 64\nradius = 1e-5\n" + extra);
+  Config cfg = Config::from_string("[agglomerate]\nseed = 4\nshape = \"fractal\"\nprimaries = 64\nradius = 1e-5\n" + extra);
   return parse_impact_case(cfg);
 }
 

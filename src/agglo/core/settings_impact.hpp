@@ -16,9 +16,6 @@ struct ImpactSettings {
   struct Top {
     Table t{"", kAgglomerateCommands, "top-level keys of an impact case"};
     Text name{t, {"name", "", "case name"}, "collision"};
-    // Read only when a generated shape needs it (agglomerate.shape = fractal, bpca, bcca).
-    Integer seed{t, {"seed", "", "random seed of the generated agglomerate (shape fractal, bpca, bcca)"}, 1, 0,
-                 INT64_MAX};
   } top;
 
   struct Material {
@@ -76,6 +73,8 @@ struct ImpactSettings {
                 10e-6, Range::open_closed(0.0, 0.1)};
     // The keys of the generated shapes are read only with those shapes (the resolved config of the
     // other shapes stays as it was).
+    Integer seed{t, {"agglomerate.seed", "", "random seed of the generated agglomerate (shape fractal, bpca, bcca)"},
+                 1, 0, INT64_MAX};
     Integer primaries{t, {"agglomerate.primaries", "", "number of primaries N of shape fractal, bpca, bcca"}, 64, 2,
                       10000};
     Real fractal_dimension{t, {"agglomerate.fractal_dimension", "", "fractal dimension D_f of shape fractal"}, 1.8,

@@ -105,7 +105,7 @@ AgglomerateSpec parse_agglomerate(const ConfigSection& root, const std::string& 
                                             "primaries as given",
                                             ka.shape.dotted(), a.shape));
   }
-  parse_structure(root, ag, case_file, a);
+  parse_structure(ag, case_file, a);
   auto plist = particles.elements(root);
   if (a.shape == "list") {
     if (plist.size() < 2)

@@ -39,7 +39,7 @@ struct AgglomerateSpec {
   double fractal_prefactor = impact_keys().agglomerate.fractal_prefactor.def();          // k_f
   double radius_std = impact_keys().agglomerate.radius_std.def();                        // sigma_g
   std::string file;                                                                      // resolved path
-  long long seed = impact_keys().top.seed.def();
+  long long seed = impact_keys().agglomerate.seed.def();
   structure::Aggregate structure;
 };
 

@@ -38,11 +38,11 @@ structure::Aggregate read_structure_file(const ConfigSection& ag, const std::str
   return structure::read_aggregate_csv(in, a.file, "file");
 }
 
-structure::Aggregate generate(const ConfigSection& root, const ConfigSection& ag, AgglomerateSpec& a) {
+structure::Aggregate generate(const ConfigSection& ag, AgglomerateSpec& a) {
   const auto& ka = impact_keys().agglomerate;
   a.primaries = static_cast<int>(ka.primaries.read(ag));
   a.radius_std = ka.radius_std.read(ag);
-  a.seed = impact_keys().top.seed.read(impact_keys().top.t.open(root));
+  a.seed = ka.seed.read(ag);
   const auto seed = static_cast<std::uint64_t>(a.seed);
   if (a.shape == "fractal") {
     a.fractal_dimension = ka.fractal_dimension.read(ag);
@@ -57,7 +57,8 @@ structure::Aggregate generate(const ConfigSection& root, const ConfigSection& ag
 void reject_unused_keys(const ConfigSection& ag, const AgglomerateSpec& a) {
   const auto& ka = impact_keys().agglomerate;
   const bool generated = a.shape == "fractal" || a.shape == "bpca" || a.shape == "bcca";
-  for (const settings::Setting* s : std::initializer_list<const settings::Setting*>{&ka.primaries, &ka.radius_std})
+  for (const settings::Setting* s :
+       std::initializer_list<const settings::Setting*>{&ka.primaries, &ka.radius_std, &ka.seed})
     if (!generated && s->present(ag)) s->reject(ag, "applies to shape = \"fractal\", \"bpca\" or \"bcca\" only");
   for (const settings::Setting* s :
        std::initializer_list<const settings::Setting*>{&ka.fractal_dimension, &ka.fractal_prefactor})
@@ -71,12 +72,11 @@ bool is_structure_shape(std::string_view shape) {
   return shape == "fractal" || shape == "bpca" || shape == "bcca" || shape == "file";
 }
 
-void parse_structure(const ConfigSection& root, const ConfigSection& ag, const std::string& case_file,
-                     AgglomerateSpec& a) {
+void parse_structure(const ConfigSection& ag, const std::string& case_file, AgglomerateSpec& a) {
   reject_unused_keys(ag, a);
   if (!is_structure_shape(a.shape)) return;
   try {
-    a.structure = a.shape == "file" ? read_structure_file(ag, case_file, a) : generate(root, ag, a);
+    a.structure = a.shape == "file" ? read_structure_file(ag, case_file, a) : generate(ag, a);
     (void)structure::validate_structure(a.structure, a.shape == "file" ? "file" : "shape");
   } catch (const structure::BuildError& e) {
     key_of(e.key).reject(ag, e.what());

@@ -21,10 +21,9 @@ namespace agglo::impact {
 
 bool is_structure_shape(std::string_view shape);  // fractal, bpca, bcca, file
 
-// Reads the keys of the shape from [agglomerate] (and the top-level seed), builds or reads the structure
+// Reads the keys of the shape from [agglomerate], builds or reads the structure
 // into a.structure and checks it. `case_file`: relative agglomerate.file paths start from its folder.
-void parse_structure(const ConfigSection& root, const ConfigSection& ag, const std::string& case_file,
-                     AgglomerateSpec& a);
+void parse_structure(const ConfigSection& ag, const std::string& case_file, AgglomerateSpec& a);
 
 // Appends the structure's primaries to p, scaled to the JKR equilibrium overlap (above).
 void place_structure(const AgglomerateSpec& a, const dem::ContactParams& contact, dem::Particles& p);

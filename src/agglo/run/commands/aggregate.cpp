@@ -26,10 +26,10 @@ class Aggregate final : public Command {
   }
   long long seed(const Config& cfg) const override {
     Config probe = cfg.clone();
-    const auto& top = settings::impact_settings().top;
-    return top.seed.read(top.t.open(probe.root()));
+    const auto& ka = settings::impact_settings().agglomerate;
+    return ka.seed.read(ka.t.open(probe.root()));
   }
-  const settings::Setting* seed_key() const override { return &settings::impact_settings().top.seed; }
+  const settings::Setting* seed_key() const override { return &settings::impact_settings().agglomerate.seed; }
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const impact::AgglomerateSpec a = spec(cfg);
