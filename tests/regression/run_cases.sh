@@ -44,6 +44,9 @@ done
 run electrostatics electrostatics_tetrahedron --set electrostatics.solver=bem --set electrostatics.patches_per_sphere=200
 mv "$O/electrostatics_tetrahedron-electrostatics" "$O/electrostatics_tetrahedron_bem-electrostatics" 2>/dev/null
 run electrostatics electrostatics_tetrahedron
+# The structure builder (docs/model.md Part S): a lognormal fractal aggregate and a BPCA aggregate.
+run aggregate aggregate_fractal
+run aggregate aggregate_bpca
 for c in "$C"/seed002_*.toml; do
   run acoustic "$(basename "$c" .toml)" --set time.end=0.02 --set "output.snapshot_times=[0.0,0.01]" --set "output.psd_times=[0.0,0.02]"
 done

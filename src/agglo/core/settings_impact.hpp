@@ -9,10 +9,12 @@
 namespace agglo::settings {
 
 inline constexpr std::string_view kImpactCommands = "collide, vcrit, breakup";
+// [agglomerate] and the top level are read by the impact commands and by `agglo aggregate`.
+inline constexpr std::string_view kAgglomerateCommands = "collide, vcrit, breakup, aggregate";
 
 struct ImpactSettings {
   struct Top {
-    Table t{"", kImpactCommands, "top-level keys of an impact case"};
+    Table t{"", kAgglomerateCommands, "top-level keys of an impact case"};
     Text name{t, {"name", "", "case name"}, "collision"};
   } top;
 
@@ -58,11 +60,37 @@ struct ImpactSettings {
   } time;
 
   struct Agglomerate {
-    Table t{"agglomerate", kImpactCommands, "the target agglomerate"};
-    Choice shape{t, {"agglomerate.shape", "", "built-in shape, or list = the [[particles]] entries"},
-                 "tetrahedron", {"tetrahedron", "square", "list"}};
-    Real radius{t, {"agglomerate.radius", "m", "particle radius r_p of the built-in shapes"}, 10e-6,
-                Range::open_closed(0.0, 0.1)};
+    Table t{"agglomerate", kAgglomerateCommands, "the target agglomerate"};
+    Choice shape{t,
+                 {"agglomerate.shape", "",
+                  "built-in shape; list = the [[particles]] entries; fractal = tunable fractal aggregate (PCA then "
+                  "CCA on N = k_f (R_g/a)^D_f); bpca / bcca = ballistic particle-cluster / cluster-cluster "
+                  "aggregate; file = the primaries of agglomerate.file (docs/model.md, structure builder)"},
+                 "tetrahedron", {"tetrahedron", "square", "list", "fractal", "bpca", "bcca", "file"}};
+    Real radius{t,
+                {"agglomerate.radius", "m",
+                 "particle radius r_p of the built-in shapes; geometric-mean primary radius a_g of fractal, bpca, bcca"},
+                10e-6, Range::open_closed(0.0, 0.1)};
+    // The keys of the generated shapes are read only with those shapes (the resolved config of the
+    // other shapes stays as it was).
+    Integer seed{t, {"agglomerate.seed", "", "random seed of the generated agglomerate (shape fractal, bpca, bcca)"},
+                 1, 0, INT64_MAX};
+    Integer primaries{t, {"agglomerate.primaries", "", "number of primaries N of shape fractal, bpca, bcca"}, 64, 2,
+                      10000};
+    Real fractal_dimension{t, {"agglomerate.fractal_dimension", "", "fractal dimension D_f of shape fractal"}, 1.8,
+                           Range::closed(1.0, 3.0)};
+    Real fractal_prefactor{t, {"agglomerate.fractal_prefactor", "", "fractal prefactor k_f of shape fractal"}, 1.3,
+                           Range::open_closed(0.0, 100.0)};
+    Real radius_std{t,
+                    {"agglomerate.radius_std", "",
+                     "geometric standard deviation sigma_g of the lognormal primary radii (fractal, bpca, bcca)", {},
+                     "1 = monodisperse"},
+                    1.0, Range::closed(1.0, 3.0)};
+    Text file{t,
+              {"agglomerate.file", "",
+               "CSV of shape file: header with x, y, z, radius [m], optional charge [C], permittivity; relative "
+               "paths from the case file's folder"},
+              std::nullopt};
     Bool charged{t, {"agglomerate.charged", "", "alternate +/- charge_density on the built-in shapes"}, false};
     Real charge_density{t, {"agglomerate.charge_density", "C/m^2", "surface charge density |sigma_f|"}, 10e-6,
                         Range::closed(0.0, 1e-2)};

@@ -5,6 +5,7 @@
 
 #include "agglo/dem/jkr.hpp"
 #include "agglo/impact/orientation.hpp"
+#include "agglo/impact/structure_target.hpp"
 
 namespace agglo::impact {
 
@@ -13,6 +14,10 @@ dem::Particles build_agglomerate(const ImpactCase& c) {
   dem::Particles p;
   if (a.shape == "list") {
     for (const auto& lp : a.particles) p.add(lp.position, lp.radius, a.density, {}, lp.charge, lp.permittivity);
+    return p;
+  }
+  if (is_structure_shape(a.shape)) {
+    place_structure(a, c.dem.contact, p);
     return p;
   }
   const double r = a.radius;

@@ -6,6 +6,7 @@
 //   square:      2x2 in the x-y plane, side (0,3) facing the projectile; charges +,-,+,- round the ring.
 // agglomerate.orientation then rotates the shape rigidly about its centroid (orientation.hpp lists
 // the geometry of each orientation); particles keep their indices and charges.
+//   fractal, bpca, bcca, file: the structure builder's primaries (impact/structure_target.hpp).
 #include "agglo/impact/impact_case.hpp"
 #include "agglo/dem/particles.hpp"
 

@@ -11,6 +11,7 @@
 #include "agglo/dem/contact/settings.hpp"
 #include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/orientation.hpp"
+#include "agglo/impact/structure_target.hpp"
 
 namespace agglo::impact {
 
@@ -76,12 +77,13 @@ void check_list_overlaps(const ConfigSection& root, const ImpactCase& c) {
     }
 }
 
-// [agglomerate], [[particles]] (shape = "list") and [projectile].
-void parse_bodies(const ConfigSection& root, ImpactCase& c) {
+}  // namespace
+
+AgglomerateSpec parse_agglomerate(const ConfigSection& root, const std::string& case_file, bool wall_impact) {
   const auto& ka = impact_keys().agglomerate;
   const auto& particles = settings::electrostatics_settings().particles.t;
   auto ag = ka.t.open(root);
-  auto& a = c.agglomerate;
+  AgglomerateSpec a;
   a.shape = ka.shape.read(ag);
   a.radius = ka.radius.read(ag);
   a.charged = ka.charged.read(ag);
@@ -101,17 +103,18 @@ void parse_bodies(const ConfigSection& root, ImpactCase& c) {
   a.orientation = original_orientation(a.shape);
   if (ka.orientation.present(ag)) {  // read only when set, so the resolved config stays unchanged
     a.orientation = ka.orientation.read(ag);
-    if (a.shape == "list")
-      ka.orientation.reject(ag, fmt::format("applies to the built-in shapes only; {} = \"list\" places the [[{}]] "
-                                            "entries as given",
-                                            ka.shape.dotted(), particles.name()));
+    if (a.shape == "list" || is_structure_shape(a.shape))
+      ka.orientation.reject(ag, fmt::format("applies to the tetrahedron and square only; {} = \"{}\" places the "
+                                            "primaries as given",
+                                            ka.shape.dotted(), a.shape));
   }
+  parse_structure(ag, case_file, a);
   auto plist = particles.elements(root);
   if (a.shape == "list") {
-    const std::size_t least = c.wall_impact ? 1 : 2;  // a single sphere may hit a wall
+    const std::size_t least = wall_impact ? 1 : 2;  // a single sphere may hit a wall
     if (plist.size() < least) {
       const std::string hint =
-          c.wall_impact ? "" : fmt::format(" (one with {} = true)", impact_keys().wall.impact.dotted());
+          wall_impact ? "" : fmt::format(" (one with {} = true)", impact_keys().wall.impact.dotted());
       ka.shape.reject(ag, fmt::format("shape = \"list\" needs at least {} [[{}]] entries{}", least == 1 ? "one" : "two",
                                       particles.name(), hint));
     }
@@ -119,6 +122,17 @@ void parse_bodies(const ConfigSection& root, ImpactCase& c) {
   } else if (!plist.empty()) {
     ka.shape.reject(ag, fmt::format("[[{}]] entries are only used with shape = \"list\"", particles.name()));
   }
+  return a;
+}
+
+namespace {
+
+// [agglomerate], [[particles]] (shape = "list") and [projectile].
+void parse_bodies(const ConfigSection& root, const std::string& case_file, ImpactCase& c) {
+  const double density = c.agglomerate.density;  // [material]
+  c.agglomerate = parse_agglomerate(root, case_file, c.wall_impact);
+  c.agglomerate.density = density;
+  const auto& a = c.agglomerate;
 
   const auto& kp = impact_keys().projectile;
   auto pj = kp.t.open(root);
@@ -294,7 +308,7 @@ ImpactCase parse_impact_case(Config& cfg) {
   parse_time(root, c);
   parse_wall(root, c);
   parse_gas(root, c);
-  parse_bodies(root, c);
+  parse_bodies(root, cfg.file(), c);
   parse_searches(root, c);
   parse_coupling(root, real_modulus, c);
   check_orientations(root, c);

@@ -12,6 +12,7 @@
 #include "agglo/impact/electrostatic_coupling.hpp"
 #include "agglo/dem/dem_system.hpp"
 #include "agglo/electrostatics/config.hpp"
+#include "agglo/structure/aggregate.hpp"
 
 namespace agglo::impact {
 
@@ -31,6 +32,15 @@ struct AgglomerateSpec {
   // edge_across | edge_along | face | vertex (orientation.hpp); empty = the shape's original geometry
   std::string orientation;
   std::vector<ListParticle> particles;                                    // shape = list
+  // shape = fractal | bpca | bcca | file (impact/structure_target.hpp): the request, and the structure
+  // built (or read) and checked at parse time, primaries touching, centroid at the origin.
+  int primaries = static_cast<int>(impact_keys().agglomerate.primaries.def());           // N
+  double fractal_dimension = impact_keys().agglomerate.fractal_dimension.def();          // D_f
+  double fractal_prefactor = impact_keys().agglomerate.fractal_prefactor.def();          // k_f
+  double radius_std = impact_keys().agglomerate.radius_std.def();                        // sigma_g
+  std::string file;                                                                      // resolved path
+  long long seed = impact_keys().agglomerate.seed.def();
+  structure::Aggregate structure;
 };
 
 struct ProjectileSpec {
@@ -92,6 +102,11 @@ struct ImpactCase {
   // [wall] (the wall itself is in dem.walls) and [gas] (dem.gas, dem.gravity): docs/dem.md "Gas and walls".
   bool wall_impact = false;     // the agglomerate moves onto the wall (no projectile)
 };
+
+// [agglomerate] (with [[particles]] for shape = "list", the structure of impact/structure_target.hpp for
+// the builder's shapes); `case_file` locates a relative agglomerate.file. Density: the default.
+// `wall_impact` (wall.impact): a list of one sphere is allowed, that sphere hitting the wall.
+AgglomerateSpec parse_agglomerate(const ConfigSection& root, const std::string& case_file, bool wall_impact = false);
 
 // Reads every section; throws ConfigError naming file, key, value and the allowed range.
 ImpactCase parse_impact_case(Config& cfg);

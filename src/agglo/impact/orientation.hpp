@@ -27,21 +27,13 @@
 #include <string>
 #include <string_view>
 
+#include "agglo/core/rotation.hpp"
 #include "agglo/core/vec3.hpp"
 #include "agglo/dem/particles.hpp"
 
 namespace agglo::impact {
 
-// 3x3 rotation matrix, rows m[i]: x' = m x.
-struct Rotation {
-  std::array<Vec3, 3> m{Vec3{1.0, 0.0, 0.0}, Vec3{0.0, 1.0, 0.0}, Vec3{0.0, 0.0, 1.0}};
-  Vec3 apply(const Vec3& x) const { return {dot(m[0], x), dot(m[1], x), dot(m[2], x)}; }
-};
-
-// Rotation by `angle` [rad] about the unit vector `axis` (right-handed, Rodrigues' formula).
-Rotation rotation_about(const Vec3& axis, double angle);
-// a then b: x' = b (a x).
-Rotation compose(const Rotation& a, const Rotation& b);
+// Rotation, rotation_about and compose: core/rotation.hpp.
 
 // The orientation of a built-in shape ("tetrahedron", "square"); nullopt for the shape's original
 // orientation or an empty name (no rotation). Throws std::invalid_argument for an unknown name.

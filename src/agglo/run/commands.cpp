@@ -11,7 +11,8 @@ const std::vector<const Command*>& all_commands() {
   (void)tables;
   static const std::vector<const Command*> list = {&collide_command(), &vcrit_command(), &breakup_command(),
                                                    &electrostatics_command(), &acoustic_command(),
-                                                   &sectional_command(), &calibrate_command()};
+                                                   &sectional_command(), &calibrate_command(),
+                                                   &aggregate_command()};
   return list;
 }
 

@@ -14,6 +14,7 @@ const Command& electrostatics_command();
 const Command& acoustic_command();
 const Command& sectional_command();
 const Command& calibrate_command();
+const Command& aggregate_command();
 
 // Every command, in the order of `agglo --help`.
 const std::vector<const Command*>& all_commands();
