@@ -1,51 +1,92 @@
 #include "agglo/io/vtk.hpp"
 
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+
 #include <fmt/format.h>
 
 namespace agglo::io {
 
 namespace {
-// 3-vectors one per line, scalars all on one line.
-void array(std::ostream& o, const VtkArray& a) {
-  if (a.components == 1) {
-    o << fmt::format("        <DataArray type=\"{}\" Name=\"{}\" format=\"ascii\">\n          ", a.type, a.name);
-    for (double v : a.values) o << fmt::format("{:.10g} ", v);
-    o << "\n        </DataArray>\n";
-    return;
-  }
-  o << fmt::format("        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"ascii\">\n", a.type,
-                   a.name, a.components);
-  const auto m = static_cast<std::size_t>(a.components);
-  for (std::size_t i = 0; i + m <= a.values.size(); i += m) {
-    o << "         ";
-    for (std::size_t c = 0; c < m; ++c) o << fmt::format(" {:.10g}", a.values[i + c]);
-    o << '\n';
-  }
-  o << "        </DataArray>\n";
+
+// Appends `v` as the little-endian bytes of T.
+template <class T>
+void put(std::string& bytes, T v) {
+  char b[sizeof(T)];
+  std::memcpy(b, &v, sizeof(T));
+  if constexpr (std::endian::native == std::endian::big)
+    for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
+  bytes.append(b, sizeof(T));
 }
+
+template <class T>
+void put_values(std::string& bytes, const std::vector<double>& values) {
+  put<std::uint64_t>(bytes, values.size() * sizeof(T));
+  for (double v : values) put<T>(bytes, static_cast<T>(v));
+}
+
+// Appends the array's block (byte count, values) to `bytes`.
+void encode(std::string& bytes, const VtkArray& a) {
+  if (a.components < 1 || a.values.size() % static_cast<std::size_t>(a.components) != 0)
+    throw std::invalid_argument(fmt::format("VTK array {}: {} values for {} components", a.name, a.values.size(),
+                                            a.components));
+  if (a.type == "Float64")
+    put_values<double>(bytes, a.values);
+  else if (a.type == "Int64")
+    put_values<std::int64_t>(bytes, a.values);
+  else if (a.type == "Int32")
+    put_values<std::int32_t>(bytes, a.values);
+  else if (a.type == "UInt8")
+    put_values<std::uint8_t>(bytes, a.values);
+  else
+    throw std::invalid_argument(fmt::format("VTK array {}: unsupported type {}", a.name, a.type));
+}
+
 }  // namespace
 
 VtkArray vtk_vectors(std::string name, const std::vector<Vec3>& v) {
   VtkArray a{std::move(name), "Float64", 3, {}};
+  a.values.reserve(3 * v.size());
   for (const auto& x : v) a.values.insert(a.values.end(), {x.x, x.y, x.z});
   return a;
 }
 
+void write_vtk(std::ostream& o, std::string_view dataset, std::string_view piece_attributes,
+               const std::vector<VtkSection>& sections) {
+  std::string bytes;
+  std::string xml = fmt::format(
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"{}\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n  <{}>\n    <Piece {}>\n",
+      dataset, dataset, piece_attributes);
+  for (const auto& s : sections) {
+    xml += fmt::format("      <{}{}{}>\n", s.element, s.attributes.empty() ? "" : " ", s.attributes);
+    for (const auto& a : s.arrays) {
+      xml += fmt::format("        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"appended\" "
+                         "offset=\"{}\"/>\n",
+                         a.type, a.name, a.components, bytes.size());
+      encode(bytes, a);
+    }
+    xml += fmt::format("      </{}>\n", s.element);
+  }
+  xml += fmt::format("    </Piece>\n  </{}>\n  <AppendedData encoding=\"raw\">\n   _", dataset);
+  o << xml;
+  o.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  o << "\n  </AppendedData>\n</VTKFile>\n";
+}
+
 void write_vtp(std::ostream& o, const std::vector<Vec3>& points, const std::vector<VtkArray>& point_data) {
   const std::size_t n = points.size();
-  o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-    << "  <PolyData>\n" << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\">\n", n, n)
-    << (point_data.empty() ? std::string("      <PointData>\n")
-                           : fmt::format("      <PointData Scalars=\"{}\">\n", point_data.front().name));
-  for (const auto& a : point_data) array(o, a);
-  o << "      </PointData>\n      <Points>\n";
-  array(o, vtk_vectors("Points", points));
-  o << "      </Points>\n      <Verts>\n"
-    << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n          ";
-  for (std::size_t k = 0; k < n; ++k) o << k << ' ';
-  o << "\n        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n          ";
-  for (std::size_t k = 0; k < n; ++k) o << k + 1 << ' ';
-  o << "\n        </DataArray>\n      </Verts>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  VtkArray connectivity{"connectivity", "Int64", 1, {}}, offsets{"offsets", "Int64", 1, {}};
+  for (std::size_t k = 0; k < n; ++k) {
+    connectivity.values.push_back(static_cast<double>(k));
+    offsets.values.push_back(static_cast<double>(k + 1));
+  }
+  write_vtk(o, "PolyData", fmt::format("NumberOfPoints=\"{}\" NumberOfVerts=\"{}\"", n, n),
+            {{"PointData", point_data.empty() ? "" : fmt::format("Scalars=\"{}\"", point_data.front().name), point_data},
+             {"Points", "", {vtk_vectors("Points", points)}},
+             {"Verts", "", {std::move(connectivity), std::move(offsets)}}});
 }
 
 void write_pvd(std::ostream& o, const std::vector<std::pair<double, std::string>>& files) {

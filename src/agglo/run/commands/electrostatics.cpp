@@ -37,7 +37,7 @@ class Electrostatics final : public Command {
     const es::EsCase sc = es::parse_electrostatics_case(cfg);
     const auto solver = es::make_solver(sc.settings.options);
     const es::Solution sol = solver->solve(sc.problem);
-    if (ctx.formats.csv) writers::write_electrostatics(out, *solver, sc.problem, sol);
+    if (ctx.formats.csv) writers::write_electrostatics(out, *solver, sc.problem, sol, sc.surface_output);
     CommandResult r;
     r.data = std::make_shared<const io::Dataset>(writers::electrostatics_dataset(*solver, sc.problem, sol));
     r.summary = writers::solve_stats(*solver, sc.problem, sol);
