@@ -50,6 +50,14 @@ def surface(path, spheres, triangles):
     d = np.linalg.norm(r, axis=1)
     assert np.allclose(d, spheres[body, 3], rtol=1e-3), "samples on their sphere"
     assert np.all(np.einsum("ij,ij->i", r / d[:, None], n) > 0.9), "outward normals"
+    # the values against the case: uniform free charge q / (4 pi r_E^2), the samples' areas tile each
+    # sphere, and the total charge sigma * area is the free charge (bound charge sums to zero; the
+    # spectral solver's quadrature of sigma_b to 2 %)
+    q, rE, a = spheres[:, 4], spheres[:, 3], s["PointData/area"][:, 0]
+    assert np.allclose(s["PointData/sigma_f"][:, 0], q[body] / (4 * np.pi * rE[body] ** 2), rtol=1e-12, atol=0), "sigma_f"
+    assert np.allclose(np.bincount(body, a), 4 * np.pi * rE ** 2, rtol=1e-10, atol=0), "areas"
+    total = np.bincount(body, a * s["PointData/sigma"][:, 0])
+    assert np.allclose(total, q, rtol=0, atol=2e-2 * abs(q).max()), (total, q)
     cells, conn, off, typ = s["attrs"]["NumberOfCells"], s["Cells/connectivity"][:, 0], s["Cells/offsets"][:, 0], s["Cells/types"][:, 0]
     k = 3 if triangles else 1
     assert len(off) == len(typ) == cells and np.array_equal(off, k * np.arange(1, cells + 1)), "offsets"
@@ -58,12 +66,12 @@ def surface(path, spheres, triangles):
     if not triangles:
         assert np.array_equal(conn, np.arange(m)), "vertex cells"
 
-# the sphere centres and electrostatic radii r / (1 + g_min / 2) from the case file
+# the sphere centres, electrostatic radii r / (1 + g_min / 2) and charges from the case file
 import tomllib
 import os
 case = tomllib.load(open(os.environ["CASE"], "rb"))
 g = case.get("electrostatics", {}).get("min_gap", 0.01)
-sp = np.array([[*p["position"], p["radius"] / (1 + g / 2)] for p in case["particles"]])
+sp = np.array([[*p["position"], p["radius"] / (1 + g / 2), p["charge"]] for p in case["particles"]])
 for solver in ("sp", "bem", "co"):
     surface(f"{T}/{solver}/surface.vtu", sp, True)  # every solver provides a triangulation
 
