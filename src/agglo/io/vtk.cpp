@@ -3,6 +3,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -46,6 +47,10 @@ void encode(std::string& bytes, const VtkArray& a) {
 
 }  // namespace
 
+std::string vtk_index_type(std::size_t largest) {
+  return largest <= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()) ? "Int32" : "Int64";
+}
+
 VtkArray vtk_vectors(std::string name, const std::vector<Vec3>& v) {
   VtkArray a{std::move(name), "Float64", 3, {}};
   a.values.reserve(3 * v.size());
@@ -78,7 +83,8 @@ void write_vtk(std::ostream& o, std::string_view dataset, std::string_view piece
 
 void write_vtp(std::ostream& o, const std::vector<Vec3>& points, const std::vector<VtkArray>& point_data) {
   const std::size_t n = points.size();
-  VtkArray connectivity{"connectivity", "Int64", 1, {}}, offsets{"offsets", "Int64", 1, {}};
+  const std::string index = vtk_index_type(n);
+  VtkArray connectivity{"connectivity", index, 1, {}}, offsets{"offsets", index, 1, {}};
   for (std::size_t k = 0; k < n; ++k) {
     connectivity.values.push_back(static_cast<double>(k));
     offsets.values.push_back(static_cast<double>(k + 1));

@@ -9,6 +9,7 @@
 // its values, little-endian, in the array's declared type (Float64 exact, integers converted from
 // the stored doubles). The file header says version="1.0" header_type="UInt64"
 // byte_order="LittleEndian".
+#include <cstddef>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -26,6 +27,10 @@ struct VtkArray {
   int components = 1;
   std::vector<double> values;  // integer types: whole numbers within the type's range
 };
+
+// The type of cell connectivity and offsets whose largest value is `largest`: "Int32" when it fits,
+// else "Int64".
+std::string vtk_index_type(std::size_t largest);
 
 // A Float64 array of one 3-vector per point.
 VtkArray vtk_vectors(std::string name, const std::vector<Vec3>& v);

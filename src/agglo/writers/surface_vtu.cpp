@@ -20,7 +20,8 @@ io::VtkArray per_sample(const char* name, const char* type, const std::vector<Su
 // connectivity, offsets and types of the cells.
 std::vector<io::VtkArray> cells(std::size_t samples, const std::vector<std::array<int, 3>>& tri) {
   const bool mesh = !tri.empty();
-  io::VtkArray conn{"connectivity", "Int64", 1, {}}, offsets{"offsets", "Int64", 1, {}}, types{"types", "UInt8", 1, {}};
+  const std::string index = io::vtk_index_type(mesh ? 3 * tri.size() : samples);
+  io::VtkArray conn{"connectivity", index, 1, {}}, offsets{"offsets", index, 1, {}}, types{"types", "UInt8", 1, {}};
   if (mesh)
     for (const auto& t : tri) conn.values.insert(conn.values.end(), {double(t[0]), double(t[1]), double(t[2])});
   else
