@@ -26,8 +26,8 @@ constexpr double kSphereBytes = 256.0;
 // forces.csv row; the small JSON files.
 constexpr double kVtuSampleBytes = 118.0;
 // Held per sample while surface.vtu is written: the writer's double arrays (11 per point, 10 per
-// two cells), its copies of point and normal (48 B) and the encoded bytes.
-constexpr double kVtuWriteBytes = 21.0 * 8.0 + 48.0 + kVtuSampleBytes;
+// two cells) and the encoded bytes of one array (at most a 3-vector, 24 B).
+constexpr double kVtuWriteBytes = 21.0 * 8.0 + 24.0;
 constexpr double kForcesRowBytes = 180.0;
 constexpr double kSmallFilesBytes = 64.0 * 1024.0;
 

@@ -1,5 +1,6 @@
 #include "agglo/io/vtk.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -12,37 +13,42 @@ namespace agglo::io {
 
 namespace {
 
-// Appends `v` as the little-endian bytes of T.
+// Stores `v` at `p` as the little-endian bytes of T.
 template <class T>
-void put(std::string& bytes, T v) {
-  char b[sizeof(T)];
-  std::memcpy(b, &v, sizeof(T));
-  if constexpr (std::endian::native == std::endian::big)
-    for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
-  bytes.append(b, sizeof(T));
+void store(char* p, T v) {
+  std::memcpy(p, &v, sizeof(T));
+  if constexpr (std::endian::native == std::endian::big) std::reverse(p, p + sizeof(T));
 }
 
 template <class T>
-void put_values(std::string& bytes, const std::vector<double>& values) {
-  put<std::uint64_t>(bytes, values.size() * sizeof(T));
-  for (double v : values) put<T>(bytes, static_cast<T>(v));
+std::string block_of(const std::vector<double>& values) {
+  std::string b(8 + values.size() * sizeof(T), '\0');
+  store<std::uint64_t>(b.data(), values.size() * sizeof(T));
+  char* p = b.data() + 8;
+  for (double v : values) {
+    store<T>(p, static_cast<T>(v));
+    p += sizeof(T);
+  }
+  return b;
 }
 
-// Appends the array's block (byte count, values) to `bytes`.
-void encode(std::string& bytes, const VtkArray& a) {
+// Bytes per value of the array's type; throws for an unknown type or a partial tuple.
+std::size_t value_bytes(const VtkArray& a) {
   if (a.components < 1 || a.values.size() % static_cast<std::size_t>(a.components) != 0)
     throw std::invalid_argument(fmt::format("VTK array {}: {} values for {} components", a.name, a.values.size(),
                                             a.components));
-  if (a.type == "Float64")
-    put_values<double>(bytes, a.values);
-  else if (a.type == "Int64")
-    put_values<std::int64_t>(bytes, a.values);
-  else if (a.type == "Int32")
-    put_values<std::int32_t>(bytes, a.values);
-  else if (a.type == "UInt8")
-    put_values<std::uint8_t>(bytes, a.values);
-  else
-    throw std::invalid_argument(fmt::format("VTK array {}: unsupported type {}", a.name, a.type));
+  if (a.type == "Float64" || a.type == "Int64") return 8;
+  if (a.type == "Int32") return 4;
+  if (a.type == "UInt8") return 1;
+  throw std::invalid_argument(fmt::format("VTK array {}: unsupported type {}", a.name, a.type));
+}
+
+// The array's block in the appended data: UInt64 byte count, then the values.
+std::string block(const VtkArray& a) {
+  if (a.type == "Float64") return block_of<double>(a.values);
+  if (a.type == "Int64") return block_of<std::int64_t>(a.values);
+  if (a.type == "Int32") return block_of<std::int32_t>(a.values);
+  return block_of<std::uint8_t>(a.values);
 }
 
 }  // namespace
@@ -60,7 +66,7 @@ VtkArray vtk_vectors(std::string name, const std::vector<Vec3>& v) {
 
 void write_vtk(std::ostream& o, std::string_view dataset, std::string_view piece_attributes,
                const std::vector<VtkSection>& sections) {
-  std::string bytes;
+  std::size_t offset = 0;
   std::string xml = fmt::format(
       "<?xml version=\"1.0\"?>\n<VTKFile type=\"{}\" version=\"1.0\" byte_order=\"LittleEndian\" "
       "header_type=\"UInt64\">\n  <{}>\n    <Piece {}>\n",
@@ -70,14 +76,18 @@ void write_vtk(std::ostream& o, std::string_view dataset, std::string_view piece
     for (const auto& a : s.arrays) {
       xml += fmt::format("        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"appended\" "
                          "offset=\"{}\"/>\n",
-                         a.type, a.name, a.components, bytes.size());
-      encode(bytes, a);
+                         a.type, a.name, a.components, offset);
+      offset += 8 + a.values.size() * value_bytes(a);
     }
     xml += fmt::format("      </{}>\n", s.element);
   }
   xml += fmt::format("    </Piece>\n  </{}>\n  <AppendedData encoding=\"raw\">\n   _", dataset);
   o << xml;
-  o.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  for (const auto& s : sections)
+    for (const auto& a : s.arrays) {
+      const std::string b = block(a);  // one array's bytes at a time
+      o.write(b.data(), static_cast<std::streamsize>(b.size()));
+    }
   o << "\n  </AppendedData>\n</VTKFile>\n";
 }
 
@@ -85,6 +95,8 @@ void write_vtp(std::ostream& o, const std::vector<Vec3>& points, const std::vect
   const std::size_t n = points.size();
   const std::string index = vtk_index_type(n);
   VtkArray connectivity{"connectivity", index, 1, {}}, offsets{"offsets", index, 1, {}};
+  connectivity.values.reserve(n);
+  offsets.values.reserve(n);
   for (std::size_t k = 0; k < n; ++k) {
     connectivity.values.push_back(static_cast<double>(k));
     offsets.values.push_back(static_cast<double>(k + 1));
