@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Binary VTK (docs/outputs.md): aggregate.vtp, collide snapshots and surface.vtu (spectral, BEM and
-# coulomb solvers) are read back by an independent parser (vtk_read.py) and every array is
+# coulomb solvers) are read back by an independent parser (scripts/vtk_read.py) and every array is
 # checked against what agglo wrote elsewhere (aggregate.csv at 17 digits) or the case, or against its
 # definition (sigma = sigma_f + sigma_b, unit normals, cell offsets and types); a truncated file fails
 # the parser; output.surface = false writes no surface.vtu, a non-boolean value is exit 2.
 . "$(dirname "$0")/lib.sh"  # A, SRC, T, fail
-R="$SRC/tests/cli/vtk_read.py"
+R="$SRC/scripts/vtk_read.py"
 
 $A -q aggregate "$SRC/cases/aggregate_fractal.toml" --out "$T/agg" > /dev/null 2>&1 || fail "aggregate failed"
 $A -q electrostatics "$SRC/cases/electrostatics_tetrahedron.toml" --out "$T/sp" > /dev/null 2>&1 || fail "spectral failed"
@@ -16,7 +16,7 @@ $A -q electrostatics "$SRC/cases/electrostatics_tetrahedron.toml" --set electros
 $A -q collide "$NT" --set time.after_contact=2e-4 --set output.snapshot_interval=5e-5 --set output.timeseries_interval=5e-5 \
   --out "$T/col" > /dev/null 2> "$T/col.err" || fail "collide failed: $(cat "$T/col.err")"
 
-CASE="$SRC/cases/electrostatics_tetrahedron.toml" PYTHONPATH="$SRC/tests/cli" /usr/bin/python3 - "$T" <<'PY' || fail "VTK contents"
+CASE="$SRC/cases/electrostatics_tetrahedron.toml" PYTHONPATH="$SRC/scripts" /usr/bin/python3 - "$T" <<'PY' || fail "VTK contents"
 import csv, glob, sys
 import numpy as np
 from vtk_read import read
