@@ -16,16 +16,17 @@ import os
 import subprocess
 import sys
 import tomllib
-import xml.etree.ElementTree as ET
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vtk_read import read  # noqa: E402  (binary VTK files, docs/outputs.md)
 
 
 def read_vtp(path):
     """Positions (N x 3), radii, charges of one snapshot."""
-    root = ET.parse(path).getroot()
-    arrays = {a.get("Name"): np.array(a.text.split(), dtype=float) for a in root.iter("DataArray")}
-    return arrays["Points"].reshape(-1, 3), arrays["radius"], arrays["charge"]
+    v = read(path)
+    return v["Points/Points"], v["PointData/radius"][:, 0], v["PointData/charge"][:, 0]
 
 
 def case_toml(x, r, q, kappa, medium, min_gap, solver, extra):

@@ -23,6 +23,9 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vtk_read import read  # noqa: E402  (binary VTK files, docs/outputs.md)
+
 EPS0 = 8.8541878128e-12
 SEED = {"k1": (25.0, 30.0), "k15": (40.0, 50.0)}  # seed's Delta U / U0 (text of Figs. 3d, 4d)
 RUNS = {  # name -> (case, extra --set overrides)
@@ -67,10 +70,9 @@ def read_snapshots(folder):
     q = r = None
     for ds in ET.parse(os.path.join(folder, "particles.pvd")).getroot().iter("DataSet"):
         times.append(float(ds.get("timestep")))
-        root = ET.parse(os.path.join(folder, ds.get("file"))).getroot()
-        arrays = {a.get("Name"): np.array(a.text.split(), float) for a in root.iter("DataArray")}
-        pos.append(arrays["Points"].reshape(-1, 3))
-        q, r = arrays["charge"], arrays["radius"]
+        v = read(os.path.join(folder, ds.get("file")))
+        pos.append(v["Points/Points"])
+        q, r = v["PointData/charge"][:, 0], v["PointData/radius"][:, 0]
     return np.array(times), np.array(pos), q, r
 
 

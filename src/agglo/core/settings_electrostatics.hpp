@@ -1,7 +1,8 @@
 #pragma once
 // Settings tables of the electrostatics: [electrostatics] (solver and coupling options, read by the
-// electrostatics command and by charged impact cases) and [[particles]] (explicit spheres, read by
-// the electrostatics command and by impact cases with agglomerate.shape = "list").
+// electrostatics command and by charged impact cases), [[particles]] (explicit spheres, read by
+// the electrostatics command and by impact cases with agglomerate.shape = "list") and the
+// electrostatics command's [output].
 #include "agglo/core/settings.hpp"
 
 namespace agglo::settings {
@@ -52,7 +53,12 @@ struct ElectrostaticsSettings {
     Real permittivity{t, {"particles.permittivity", "", "relative permittivity kappa_p"}, 1.0, Range::open_closed(0.0, 1e6)};
   } particles;
 
-  std::vector<const Table*> tables() const { return {&solver.t, &particles.t}; }
+  struct Output {
+    Table t{"output", "electrostatics", "outputs of the electrostatics command"};
+    Bool surface{t, {"output.surface", "", "write surface.vtu (surface charge, binary VTK)"}, true};
+  } output;
+
+  std::vector<const Table*> tables() const { return {&solver.t, &particles.t, &output.t}; }
 };
 
 const ElectrostaticsSettings& electrostatics_settings();

@@ -62,6 +62,7 @@ EsCase parse_electrostatics_case(Config& cfg) {
     q.push_back(e.charge);
     kappa.push_back(e.permittivity);
   }
+  c.surface_output = keys.output.surface.read(keys.output.t.open(root));
   cfg.check_unknown_keys();
   settings::check_as(keys.particles.t, root, [&] { c.problem = make_problem(c.settings, x, r, q, kappa); });
   return c;

@@ -48,6 +48,7 @@ ParticleEntry parse_particle(const ConfigSection& element);
 struct EsCase {
   EsConfig settings;
   Problem problem;
+  bool surface_output = settings::electrostatics_settings().output.surface.def();  // output.surface: surface.vtu
 };
 EsCase parse_electrostatics_case(Config& cfg);
 

@@ -21,9 +21,13 @@ constexpr double kSpectralPairBytes = 320.0;
 constexpr double kBemArrayBytesPerPatch = 600.0;
 // Per sphere: the Problem, the Solution and the writer's rows.
 constexpr double kSphereBytes = 256.0;
-// Text bytes of one surface.vtu sample (point, normal, area, three densities, body, its two
-// triangles) and of one forces.csv row; the small JSON files.
-constexpr double kVtuSampleBytes = 300.0;
+// Bytes of one surface.vtu sample in the binary file (point and normal 2 x 24, area and three
+// densities 32, body 4, its two triangles 2 x 17 with Int32 indices: 118 B) and of one
+// forces.csv row; the small JSON files.
+constexpr double kVtuSampleBytes = 118.0;
+// Held per sample while surface.vtu is written: the writer's double arrays (11 per point, 10 per
+// two cells) and the encoded bytes of one array (at most a 3-vector, 24 B).
+constexpr double kVtuWriteBytes = 21.0 * 8.0 + 24.0;
 constexpr double kForcesRowBytes = 180.0;
 constexpr double kSmallFilesBytes = 64.0 * 1024.0;
 
@@ -121,11 +125,11 @@ double surface_samples(const SolverOptions& opt, double spheres) {
 }
 
 namespace {
-Estimate assemble(const SolverOptions& opt, double n, double steps, double solver_bytes) {
+Estimate assemble(const SolverOptions& opt, double n, double steps, double solver_bytes, bool surface) {
   const auto& k = settings::electrostatics_settings();
   const std::string particles = "[[" + std::string(k.particles.t.name()) + "]]";
   const std::string solver(k.solver.solver.dotted()), patches(k.solver.patches_per_sphere.dotted());
-  const double samples = surface_samples(opt, n);
+  const double samples = surface ? surface_samples(opt, n) : 0.0;
   std::vector<std::string> keys{particles, solver};
   if (opt.solver == "bem") keys.insert(keys.begin(), patches);
   if (opt.solver == "spectral") keys.emplace_back(k.solver.max_degree_limit.dotted());
@@ -133,22 +137,23 @@ Estimate assemble(const SolverOptions& opt, double n, double steps, double solve
   add_to(e.steps, steps, keys);
   add_to(e.steps, 0.0, {std::string(k.solver.max_iterations.dotted())});
   add_to(e.output, samples * kVtuSampleBytes + n * kForcesRowBytes + kSmallFilesBytes, {particles, patches});
-  // The surface samples (80 B each, two copies) and the text of surface.vtu are held while writing.
-  add_to(e.memory, solver_bytes + samples * (160.0 + kVtuSampleBytes), keys);
+  // The surface samples (80 B each, two copies) and the writer's arrays and bytes of surface.vtu.
+  add_to(e.memory, solver_bytes + samples * (160.0 + kVtuWriteBytes), keys);
   return e;
 }
 }  // namespace
 
-Estimate static_solve_estimate(const SolverOptions& opt, const Problem& p) {
-  return assemble(opt, static_cast<double>(p.spheres.size()), solver_steps(opt, p), solver_memory_bytes(opt, p));
+Estimate static_solve_estimate(const SolverOptions& opt, const Problem& p, bool surface) {
+  return assemble(opt, static_cast<double>(p.spheres.size()), solver_steps(opt, p), solver_memory_bytes(opt, p),
+                  surface);
 }
 
-Estimate static_solve_lower_bound(const SolverOptions& opt, double spheres) {
+Estimate static_solve_lower_bound(const SolverOptions& opt, double spheres, bool surface) {
   const double pairs = 0.5 * spheres * (spheres - 1.0);
   double bytes = kSphereBytes * spheres;
   if (opt.solver == "spectral") bytes += pairs * (kSpectralPairBytes + 8.0 * rotation_doubles(2.0));
   if (opt.solver == "bem") bytes += spheres * opt.patches_per_sphere * bem_patch_bytes(opt);
-  return assemble(opt, spheres, spheres * spheres, bytes);
+  return assemble(opt, spheres, spheres * spheres, bytes, surface);
 }
 
 }  // namespace agglo::es

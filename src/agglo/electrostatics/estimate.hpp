@@ -28,13 +28,14 @@ double solver_steps(const SolverOptions& opt, const Problem& p);
 
 // Lower bounds of the steps and memory from the number of spheres alone (every pair at the smallest
 // degree), cheap enough to check before the O(N^2) validation of the sphere positions.
-Estimate static_solve_lower_bound(const SolverOptions& opt, double spheres);
+Estimate static_solve_lower_bound(const SolverOptions& opt, double spheres, bool surface = true);
 
 // Surface samples the solver returns for output (surface.vtu) with `spheres` spheres.
 double surface_samples(const SolverOptions& opt, double spheres);
 
 // The electrostatics command: steps = spheres (one static solve), memory = solver + surface output
-// kept in memory, output = forces.csv + surface.vtu + small JSON files.
-Estimate static_solve_estimate(const SolverOptions& opt, const Problem& p);
+// kept in memory, output = forces.csv + surface.vtu + small JSON files; without surface.vtu when
+// `surface` is false (output.surface).
+Estimate static_solve_estimate(const SolverOptions& opt, const Problem& p, bool surface = true);
 
 }  // namespace agglo::es

@@ -57,11 +57,12 @@ io::Table forces_table(const es::Problem& p, const es::Solution& sol) {
 }
 
 void write_electrostatics(const OutputDir& out, const es::Solver& solver, const es::Problem& p,
-                          const es::Solution& sol) {
+                          const es::Solution& sol, bool surface) {
   io::write_csv(out, forces_table(p, sol));
   out.write_json("energy.json", nlohmann::json{{"energy_J", sol.energy}});
   out.write_json("stats.json", solve_stats(solver, p, sol));
-  out.write("surface.vtu", [&](std::ostream& os) { write_surface_vtu(os, solver.surface(), solver.surface_triangles()); });
+  if (surface)
+    out.write("surface.vtu", [&](std::ostream& os) { write_surface_vtu(os, solver.surface(), solver.surface_triangles()); });
 }
 
 io::Dataset electrostatics_dataset(const es::Solver& solver, const es::Problem& p, const es::Solution& sol) {

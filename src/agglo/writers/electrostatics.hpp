@@ -20,8 +20,9 @@ nlohmann::json solve_stats(const es::Solver& solver, const es::Problem& p, const
 // forces.csv and the per-particle variables of results.nc.
 io::Table forces_table(const es::Problem& p, const es::Solution& sol);
 
+// forces.csv, energy.json, stats.json and, if `surface` (output.surface), surface.vtu.
 void write_electrostatics(const OutputDir& out, const es::Solver& solver, const es::Problem& p,
-                          const es::Solution& sol);
+                          const es::Solution& sol, bool surface = true);
 
 io::Dataset electrostatics_dataset(const es::Solver& solver, const es::Problem& p, const es::Solution& sol);
 

@@ -1,8 +1,8 @@
 #pragma once
-// Hand-written VTK XML UnstructuredGrid (.vtu, ASCII) of the surface charge of a solve:
+// VTK XML UnstructuredGrid (.vtu, binary: io/vtk.hpp) of the surface charge of a solve:
 // points = surface samples, cells = triangles (VTK_TRIANGLE) when the solver provides a
 // triangulation, else one VTK_VERTEX per sample. Point data: sigma_f, sigma_b, sigma
-// (= sigma_f + sigma_b) [C/m^2], body id, normal, area [m^2]. Coordinates in metres.
+// (= sigma_f + sigma_b) [C/m^2], area [m^2], body id, normal. Coordinates in metres.
 #include <array>
 #include <ostream>
 #include <vector>

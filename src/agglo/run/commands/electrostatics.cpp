@@ -23,21 +23,22 @@ class Electrostatics final : public Command {
 
   Estimate estimate(Config& cfg, const RunContext&) const override {
     const es::EsCase sc = es::parse_electrostatics_case(cfg);
-    return es::static_solve_estimate(sc.settings.options, sc.problem);
+    return es::static_solve_estimate(sc.settings.options, sc.problem, sc.surface_output);
   }
 
   Estimate lower_bound(Config& cfg) const override {
     const auto& keys = settings::electrostatics_settings();
     auto root = cfg.root();
     const es::EsConfig ec = es::parse_electrostatics(keys.solver.t.open(root));
-    return es::static_solve_lower_bound(ec.options, static_cast<double>(keys.particles.t.elements(root).size()));
+    return es::static_solve_lower_bound(ec.options, static_cast<double>(keys.particles.t.elements(root).size()),
+                                        keys.output.surface.read(keys.output.t.open(root)));
   }
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const es::EsCase sc = es::parse_electrostatics_case(cfg);
     const auto solver = es::make_solver(sc.settings.options);
     const es::Solution sol = solver->solve(sc.problem);
-    if (ctx.formats.csv) writers::write_electrostatics(out, *solver, sc.problem, sol);
+    if (ctx.formats.csv) writers::write_electrostatics(out, *solver, sc.problem, sol, sc.surface_output);
     CommandResult r;
     r.data = std::make_shared<const io::Dataset>(writers::electrostatics_dataset(*solver, sc.problem, sol));
     r.summary = writers::solve_stats(*solver, sc.problem, sol);
