@@ -1,5 +1,5 @@
 #pragma once
-// Breakage observables of one impact (docs/model.md §A.6), from the agglomerate at the launch (relaxed,
+// Breakage observables of one impact (docs/model.md §A.7), from the agglomerate at the launch (relaxed,
 // its first n_agg particles; the projectile, if any, is not part of it) and the final particle state:
 //   fragments:            components of the final contact graph (all particles, as classify() counts
 //                         them), each counted by its agglomerate primaries; components without any are
