@@ -69,12 +69,7 @@ ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double spe
   u0_ = c.agglomerate.shape == "list" ? std::numeric_limits<double>::quiet_NaN()
                                       : 2.0 * constants::pi * rp * rp * rp * sigma * sigma / constants::eps0;
   kappa0_ = es_ ? c.medium_permittivity : 1.0;
-  launch_agg_ = sys_.particles();
-  {  // the contacts of the launch state, from a copy (a restored run skips launch())
-    dem::DemSystem probe(launch_agg_, c.dem);
-    probe.compute_forces();
-    launch_edges_ = contact_edges(probe, n_agg_);
-  }
+  set_launch(sys_.particles());
   double gap = c.projectile.gap_radii * rp;
   at_.t_launch = sys_.time();
   if (c.wall_impact) {  // the agglomerate itself moves onto the wall (docs/dem.md "Gas and walls")
@@ -220,6 +215,15 @@ ImpactOutcome ImpactRun::outcome() const {
   out.steps = sys_.steps();
   if (!c_.dem.walls.empty()) out.wall_contacts = sys_.wall_contacts();
   return out;
+}
+
+// The agglomerate at the launch and its contacts, from a DEM system of its own (a restored run, whose
+// launch state is that of the checkpoint, skips launch()).
+void ImpactRun::set_launch(dem::Particles agglomerate) {
+  launch_agg_ = std::move(agglomerate);
+  dem::DemSystem probe(launch_agg_, c_.dem);
+  probe.compute_forces();
+  launch_edges_ = contact_edges(probe, n_agg_);
 }
 
 // The breakage observables of the current state (breakage.hpp); sticking or rebound for a wall impact.

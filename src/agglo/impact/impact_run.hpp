@@ -45,6 +45,7 @@ class ImpactRun {
   void end_segment(bool early);
   ImpactOutcome outcome() const;
   Breakage breakage() const;
+  void set_launch(dem::Particles agglomerate);
   void step();
   void guard() const;
   double watched_energy() const;
