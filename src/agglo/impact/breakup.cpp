@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agglo/io/ensemble_stats.hpp"
+
 namespace agglo::impact {
 
 void wilson_interval(int k, int n, double& lo, double& hi) {
@@ -54,12 +56,18 @@ BreakupResult breakup_probability(const BreakupSpec& spec, double offset_radii, 
   for (std::size_t s = 0; s < speeds.size(); ++s) {
     BreakupPoint pt;
     pt.speed = speeds[s];
+    std::vector<double> damage, largest;
     for (std::size_t k = 0; k < m; ++k) {
       const auto& o = res.outcomes[s * m + k];
       ++pt.runs;
       pt.broken += o.broken ? 1 : 0;
       pt.undecided += o.undecided ? 1 : 0;
+      damage.push_back(o.breakage.damage_ratio);
+      largest.push_back(o.breakage.largest_fraction);
     }
+    const auto d = io::mean_stderr(damage), l = io::mean_stderr(largest);
+    pt.damage = d.mean, pt.damage_se = d.standard_error;
+    pt.largest = l.mean, pt.largest_se = l.standard_error;
     pt.p = static_cast<double>(pt.broken) / pt.runs;
     wilson_interval(pt.broken, pt.runs, pt.ci_lo, pt.ci_hi);
     res.points.push_back(pt);

@@ -7,7 +7,10 @@
 // numbers), for each of breakup.orientations rigid rotations of the agglomerate (orientation_set.hpp:
 // a stratified covering of all orientations, so p(v) is orientation-averaged; 1 = the agglomerate as
 // oriented), and reports the fraction that breaks with its Wilson 95 % interval, and the speeds at which
-// the fraction first reaches 0.1, 0.5 and 0.9 (linear interpolation between tested speeds).
+// the fraction first reaches 0.1, 0.5 and 0.9 (linear interpolation between tested speeds); and, per
+// speed, the mean damage ratio and largest-fragment fraction of its runs (breakage.hpp) with their
+// standard errors s = sqrt(sum (x_i - mean)^2 / ((n - 1) n)) over the n runs (orientations x offsets;
+// NaN for n = 1).
 #include <functional>
 #include <vector>
 
@@ -20,6 +23,8 @@ struct BreakupPoint {
   int runs = 0, broken = 0, undecided = 0;  // undecided outcomes count as not broken (as in vcrit)
   double p = 0.0;                          // broken / runs
   double ci_lo = 0.0, ci_hi = 0.0;         // Wilson score interval, 95 %
+  double damage = 0.0, damage_se = 0.0;    // mean damage ratio and its standard error [1]
+  double largest = 0.0, largest_se = 0.0;  // mean largest-fragment fraction and its standard error [1]
 };
 
 struct BreakupResult {

@@ -186,6 +186,7 @@ void write_impact_state(CheckpointWriter& w, const impact::ImpactState& s) {
   if (s.has_coupling) write_coupling(w, s.coupling);
   write_recorder(w, s.recorder);
   write_progress(w, s.progress);
+  write_particles(w, s.launch);
 }
 
 impact::ImpactState read_impact_state(CheckpointReader& r) {
@@ -200,6 +201,7 @@ impact::ImpactState read_impact_state(CheckpointReader& r) {
   if (s.has_coupling) s.coupling = read_coupling(r);
   s.recorder = read_recorder(r);
   s.progress = read_progress(r);
+  s.launch = read_particles(r);
   r.expect_end();
   return s;
 }

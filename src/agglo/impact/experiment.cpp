@@ -39,35 +39,7 @@ void rethrow_with_cause(const dem::DemInstability& e) {
 namespace {
 
 std::vector<std::vector<int>> components(const dem::DemSystem& sys) {
-  const int n = static_cast<int>(sys.particles().size());
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  };
-  for (const auto& pr : sys.pairs())
-    if (pr.state.active) parent[find(static_cast<int>(pr.i))] = find(static_cast<int>(pr.j));
-  std::vector<std::vector<int>> groups;
-  std::vector<int> slot(n, -1);
-  for (int k = 0; k < n; ++k) {
-    int r = find(k);
-    if (slot[r] < 0) {
-      slot[r] = static_cast<int>(groups.size());
-      groups.emplace_back();
-    }
-    groups[slot[r]].push_back(k);
-  }
-  return groups;
-}
-
-// The active contacts (i < j) of the first n particles, sorted.
-std::vector<std::pair<std::uint32_t, std::uint32_t>> contact_edges(const dem::DemSystem& sys, std::size_t n) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> e;
-  for (const auto& pr : sys.pairs())
-    if (pr.state.active && pr.i < n && pr.j < n) e.emplace_back(std::min(pr.i, pr.j), std::max(pr.i, pr.j));
-  std::sort(e.begin(), e.end());
-  return e;
+  return graph_components(sys.particles().size(), contact_edges(sys, sys.particles().size()));
 }
 
 std::string edge_list(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& e) {

@@ -11,6 +11,7 @@
 
 #include "agglo/dem/dem_system.hpp"
 #include "agglo/dem/particle_snapshot.hpp"
+#include "agglo/impact/breakage.hpp"
 #include "agglo/impact/impact_case.hpp"
 
 namespace agglo::impact {
@@ -52,6 +53,7 @@ struct ImpactOutcome {
   long es_solves = 0;        // electrostatic solves
   double es_seconds = 0.0;   // wall time spent in them
   int wall_contacts = -1;    // particles touching a wall at the end (sticking); -1: the case has no wall
+  Breakage breakage;         // fragments, damage, restructuring, rebound (breakage.hpp); set when contact
 };
 
 // Electrostatic coupling factory (defined in electrostatic_coupling.cpp).

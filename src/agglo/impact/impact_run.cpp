@@ -69,6 +69,7 @@ ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double spe
   u0_ = c.agglomerate.shape == "list" ? std::numeric_limits<double>::quiet_NaN()
                                       : 2.0 * constants::pi * rp * rp * rp * sigma * sigma / constants::eps0;
   kappa0_ = es_ ? c.medium_permittivity : 1.0;
+  set_launch(sys_.particles());
   double gap = c.projectile.gap_radii * rp;
   at_.t_launch = sys_.time();
   if (c.wall_impact) {  // the agglomerate itself moves onto the wall (docs/dem.md "Gas and walls")
@@ -204,6 +205,7 @@ ImpactOutcome ImpactRun::outcome() const {
     out.fragments = cl.fragments;
     out.extensions = at_.extensions;
     out.early_stop = at_.early_stop;
+    out.breakage = breakage();
   }
   out.t_end = since_launch();
   if (auto* ef = dynamic_cast<ElectrostaticForce*>(es_.get())) {
@@ -213,6 +215,30 @@ ImpactOutcome ImpactRun::outcome() const {
   out.steps = sys_.steps();
   if (!c_.dem.walls.empty()) out.wall_contacts = sys_.wall_contacts();
   return out;
+}
+
+// The agglomerate at the launch and its contacts, from a DEM system of its own (a restored run, whose
+// launch state is that of the checkpoint, skips launch()).
+void ImpactRun::set_launch(dem::Particles agglomerate) {
+  launch_agg_ = std::move(agglomerate);
+  dem::DemSystem probe(launch_agg_, c_.dem);
+  probe.compute_forces();
+  launch_edges_ = contact_edges(probe, n_agg_);
+}
+
+// The breakage observables of the current state (breakage.hpp); sticking or rebound for a wall impact.
+Breakage ImpactRun::breakage() const {
+  const auto& p = sys_.particles();
+  const auto edges = contact_edges(sys_, p.size());
+  Breakage b = measure_breakage(launch_agg_, launch_edges_, p, edges);
+  if (!c_.wall_impact) return b;
+  std::vector<char> on_wall(p.size(), 0);
+  for (std::size_t k = 0; k < c_.dem.walls.size(); ++k)
+    for (std::size_t q = 0; q < p.size(); ++q) on_wall[q] = on_wall[q] || sys_.wall_contacts(k).state[q].active;
+  double ke = 0.0;
+  for (double m : launch_agg_.m) ke += 0.5 * m * speed_ * speed_;
+  measure_rebound(b, p, edges, on_wall, c_.dem.walls.front().normal, ke);
+  return b;
 }
 
 void ImpactRun::step() {

@@ -44,6 +44,8 @@ class ImpactRun {
   void contact_step();
   void end_segment(bool early);
   ImpactOutcome outcome() const;
+  Breakage breakage() const;
+  void set_launch(dem::Particles agglomerate);
   void step();
   void guard() const;
   double watched_energy() const;
@@ -63,6 +65,8 @@ class ImpactRun {
   double kappa0_ = 1.0;  // medium permittivity of the point-charge binding
   double max_approach_ = 0.0;  // longest approach [s]
   ImpactProgress at_;  // phase, segment, output clocks, watchdog
+  dem::Particles launch_agg_;               // the agglomerate at the launch, at rest (breakage.hpp)
+  std::vector<ContactEdge> launch_edges_;   // its contacts
 };
 
 // Adds the likely input cause to a DEM blow-up message (experiment.cpp).

@@ -19,12 +19,14 @@ ImpactState ImpactRun::state() const {
   }
   if (rec_) s.recorder = *rec_;
   s.progress = at_;
+  s.launch = launch_agg_;
   return s;
 }
 
 void ImpactRun::restore(const ImpactState& s) {
   auto* ef = dynamic_cast<ElectrostaticForce*>(es_.get());
-  if (s.dem.particles.size() != sys_.particles().size() || s.has_coupling != (ef != nullptr) || s.speed != speed_)
+  if (s.dem.particles.size() != sys_.particles().size() || s.launch.size() != n_agg_ || s.has_coupling != (ef != nullptr) ||
+      s.speed != speed_)
     throw ConfigError(fmt::format("collision state of {} particles at {} m/s (electrostatics {}) does not belong to "
                                   "this case ({} particles at {} m/s, electrostatics {})",
                                   s.dem.particles.size(), s.speed, s.has_coupling ? "on" : "off",
@@ -33,6 +35,7 @@ void ImpactRun::restore(const ImpactState& s) {
   if (ef) ef->restore(s.coupling);
   if (rec_) *rec_ = s.recorder;
   at_ = s.progress;
+  set_launch(s.launch);
 }
 
 }  // namespace agglo::impact

@@ -2,7 +2,8 @@
 // The complete state of one collision run (impact_run.hpp) between two steps, as plain data for
 // checkpoints (impact/checkpoint.hpp, docs/restart.md, "Collide"): the DEM state, the electrostatic coupling
 // (held forces, warm start), the recorded rows and snapshots, the phase of the run with its stop
-// times and extension count, the output clocks and the energy watchdog's launch values. Restored
+// times and extension count, the output clocks, the energy watchdog's launch values and the agglomerate
+// at the launch (the reference of the breakage observables). Restored
 // into a run of the same case, the continuation is bitwise identical to the uninterrupted run.
 #include "agglo/dem/dem_state.hpp"
 #include "agglo/impact/coupling_state.hpp"
@@ -36,6 +37,7 @@ struct ImpactState {
   CouplingState coupling;
   Recorder recorder;                // rows and snapshots so far
   ImpactProgress progress;
+  dem::Particles launch;            // the agglomerate at the launch, before any step (breakage.hpp)
 };
 
 }  // namespace agglo::impact

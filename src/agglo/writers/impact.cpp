@@ -1,5 +1,6 @@
 #include "agglo/writers/impact.hpp"
 
+#include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -67,6 +68,45 @@ void write_snapshots(const OutputDir& out, const Recorder& rec) {
   if (!files.empty()) out.write("particles.pvd", [&](std::ostream& o) { io::write_pvd(o, files); });
 }
 
+namespace {
+
+// The "breakage" object of result.json (impact/breakage.hpp); rebound keys for wall impacts only.
+nlohmann::json breakage_json(const impact::Breakage& b) {
+  nlohmann::json j = {{"fragment_primaries", b.fragment_sizes},   {"fragment_size_counts", b.size_counts},
+                      {"largest_fragment_fraction", b.largest_fraction}, {"initial_contacts", b.initial_contacts},
+                      {"broken_contacts", b.broken_contacts},       {"damage_ratio", b.damage_ratio},
+                      {"rg_before_m", b.rg_before},                 {"rg_after_m", b.rg_after},
+                      {"coordination_before", b.coordination_before}, {"coordination_after", b.coordination_after}};
+  if (b.wall == impact::WallOutcome::none) return j;
+  j["rebounded"] = b.wall == impact::WallOutcome::rebounded;
+  j["rebound_kinetic_energy_J"] = b.rebound_kinetic;
+  j["impact_kinetic_energy_J"] = b.impact_kinetic;
+  j["rebound_energy_fraction"] = b.rebound_fraction;
+  return j;
+}
+
+impact::Breakage breakage_from_json(const nlohmann::json& j) {
+  impact::Breakage b;
+  b.fragment_sizes = j.at("fragment_primaries").get<std::vector<int>>();
+  b.size_counts = j.at("fragment_size_counts").get<std::vector<int>>();
+  b.largest_fraction = j.at("largest_fragment_fraction").get<double>();
+  b.initial_contacts = j.at("initial_contacts").get<int>();
+  b.broken_contacts = j.at("broken_contacts").get<int>();
+  b.damage_ratio = j.at("damage_ratio").get<double>();
+  b.rg_before = j.at("rg_before_m").get<double>();
+  b.rg_after = j.at("rg_after_m").get<double>();
+  b.coordination_before = j.at("coordination_before").get<double>();
+  b.coordination_after = j.at("coordination_after").get<double>();
+  if (!j.contains("rebounded")) return b;
+  b.wall = j.at("rebounded").get<bool>() ? impact::WallOutcome::rebounded : impact::WallOutcome::stuck;
+  b.rebound_kinetic = j.at("rebound_kinetic_energy_J").get<double>();
+  b.impact_kinetic = j.at("impact_kinetic_energy_J").get<double>();
+  b.rebound_fraction = j.at("rebound_energy_fraction").get<double>();
+  return b;
+}
+
+}  // namespace
+
 nlohmann::json outcome_json(const ImpactOutcome& o) {
   nlohmann::json frags = nlohmann::json::array();
   for (const auto& f : o.fragments)
@@ -82,6 +122,7 @@ nlohmann::json outcome_json(const ImpactOutcome& o) {
           {"electrostatic_solves", o.es_solves}, {"electrostatic_seconds", o.es_seconds}};
   // Cases with a wall only (the others' result.json stays as it was).
   if (o.wall_contacts >= 0) j["wall_contacts_at_end"] = o.wall_contacts;
+  if (o.contact) j["breakage"] = breakage_json(o.breakage);
   return j;
 }
 
@@ -105,6 +146,7 @@ ImpactOutcome outcome_from_json(const nlohmann::json& j) {
   o.es_solves = j.at("electrostatic_solves").get<long>();
   o.es_seconds = j.at("electrostatic_seconds").get<double>();
   if (j.contains("wall_contacts_at_end")) o.wall_contacts = j.at("wall_contacts_at_end").get<int>();
+  if (j.contains("breakage")) o.breakage = breakage_from_json(j.at("breakage"));
   return o;
 }
 
@@ -142,16 +184,26 @@ io::Table breakup_table(const BreakupResult& r) {
   t.real("p_break", "1", "break-up probability", io::reals_of(p, [](const P& x) { return x.p; }));
   t.real("ci95_lo", "1", "Wilson 95 % interval, lower end", io::reals_of(p, [](const P& x) { return x.ci_lo; }));
   t.real("ci95_hi", "1", "Wilson 95 % interval, upper end", io::reals_of(p, [](const P& x) { return x.ci_hi; }));
+  t.real("damage_ratio", "1", "mean damage ratio of the runs", io::reals_of(p, [](const P& x) { return x.damage; }));
+  t.real("damage_ratio_se", "1", "standard error of the mean damage ratio",
+         io::reals_of(p, [](const P& x) { return x.damage_se; }));
+  t.real("largest_fraction", "1", "mean largest-fragment fraction of the runs",
+         io::reals_of(p, [](const P& x) { return x.largest; }));
+  t.real("largest_fraction_se", "1", "standard error of the mean largest-fragment fraction",
+         io::reals_of(p, [](const P& x) { return x.largest_se; }));
   return t;
 }
 
 void write_breakup(const OutputDir& out, const BreakupResult& r) {
   io::write_csv(out, breakup_table(r));
   auto level = [](double v) { return v < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(v); };
+  auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
   nlohmann::json pts = nlohmann::json::array(), runs = nlohmann::json::array();
   for (const auto& p : r.points)
     pts.push_back({{"speed", p.speed}, {"runs", p.runs}, {"broken", p.broken}, {"undecided", p.undecided},
-                   {"p_break", p.p}, {"ci95", {p.ci_lo, p.ci_hi}}});
+                   {"p_break", p.p}, {"ci95", {p.ci_lo, p.ci_hi}}, {"damage_ratio", finite(p.damage)},
+                   {"damage_ratio_se", finite(p.damage_se)}, {"largest_fraction", finite(p.largest)},
+                   {"largest_fraction_se", finite(p.largest_se)}});
   const std::size_t m = r.offsets.size(), n = static_cast<std::size_t>(r.orientations);
   for (std::size_t j = 0; j < r.outcomes.size(); ++j) {
     const auto& o = r.outcomes[j];

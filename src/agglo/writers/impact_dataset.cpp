@@ -96,6 +96,20 @@ void add_snapshots(Dataset& d, const impact::Recorder& rec) {
     d.add_ints("contacts", {"frame", "particle"}, "1", "contacts of the particle", contacts).attributes = coord;
 }
 
+// The arrays of result.json's "breakage" (its scalars come with add_scalars): fragment sizes and their
+// distribution over the coordinate breakage_size = 1 .. largest.
+void add_breakage_arrays(Dataset& d, const impact::Breakage& b) {
+  if (b.fragment_sizes.empty()) return;
+  add_int_column(d, "breakage_fragment_primaries", "breakage_fragment", "1",
+                 "agglomerate primaries in each fragment of the final contact graph, largest first",
+                 ints_of(b.fragment_sizes, [](int k) { return k; }));
+  std::vector<std::int64_t> size(b.size_counts.size());
+  for (std::size_t k = 0; k < size.size(); ++k) size[k] = static_cast<std::int64_t>(k + 1);
+  add_int_column(d, "breakage_size", "breakage_size", "1", "fragment size in primaries", size);
+  d.add_ints("breakage_fragment_size_counts", {"breakage_size"}, "1", "fragments of this size",
+             ints_of(b.size_counts, [](int k) { return k; }));
+}
+
 double level(double v) { return v < 0.0 ? std::numeric_limits<double>::quiet_NaN() : v; }
 
 }  // namespace
@@ -106,6 +120,7 @@ Dataset collide_dataset(const impact::Recorder& rec, const impact::ImpactOutcome
   if (outcome) {
     add_scalars(d, outcome_json(*outcome));
     add_fragments(d, *outcome);
+    add_breakage_arrays(d, outcome->breakage);
   }
   add_snapshots(d, rec);
   return d;
