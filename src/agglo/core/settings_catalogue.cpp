@@ -36,7 +36,7 @@ const AcousticSettings& acoustic_settings() {
 }
 
 std::vector<const Table*> ImpactSettings::tables() const {
-  return {&top.t, &material.t, &time.t, &agglomerate.t, &projectile.t, &output.t, &vcrit.t, &breakup.t, &wall.t};
+  return {&top.t, &material.t, &materials.t, &time.t, &agglomerate.t, &projectile.t, &output.t, &vcrit.t, &breakup.t, &wall.t};
 }
 
 std::vector<const Table*> AcousticSettings::tables() const {

@@ -36,6 +36,26 @@ struct ImpactSettings {
                              0.0, Range::closed(0.0, 1e13)};
   } material;
 
+  // [[materials]]: named materials (dem/material.hpp), chosen per particle by particles.material,
+  // agglomerate.material, the structure file's material column, projectile.material and wall.material.
+  struct Materials {
+    Table t{"materials", kImpactCommands, "named materials, each chosen by its name (the [material] table is \"default\")",
+            true};
+    Text name{t, {"materials.name", "", "name of the material (not default, same or rigid; unique)"}, std::nullopt};
+    Real density{t, {"materials.density", "kg/m^3", "density rho", "the [material] value"}, std::nullopt,
+                 Range::open_closed(0.0, 1e5)};
+    Real youngs_modulus{t, {"materials.youngs_modulus", "Pa", "Young's modulus E", "the [material] value"},
+                        std::nullopt, Range::open_closed(0.0, 1e13)};
+    Real poisson_ratio{t, {"materials.poisson_ratio", "", "Poisson ratio nu", "the [material] value"}, std::nullopt,
+                       Range::open(-1.0, 0.5)};
+    Real surface_energy{t, {"materials.surface_energy", "J/m^2", "surface energy gamma", "the [material] value"},
+                        std::nullopt, Range::open_closed(0.0, 100.0)};
+    Real restitution{t, {"materials.restitution", "", "coefficient of restitution e", "the [material] value"},
+                     std::nullopt, Range::open_closed(0.0, 1.0)};
+    Real friction{t, {"materials.friction", "", "sliding friction coefficient mu_F", "the [material] value"},
+                  std::nullopt, Range::closed(0.0, 10.0)};
+  } materials;
+
   // [contact] (the sub-models by name) is declared beside them: dem/contact/settings.hpp.
 
   struct Time {
@@ -96,6 +116,12 @@ struct ImpactSettings {
                         Range::closed(0.0, 1e-2)};
     Real permittivity{t, {"agglomerate.permittivity", "", "relative permittivity kappa_p of the built-in shapes"},
                       1.0, Range::open_closed(0.0, 1e6)};
+    Text material{t,
+                  {"agglomerate.material", "",
+                   "material of every primary of the built-in and generated shapes, and of the file's primaries "
+                   "without a material column: default or a [[materials]] name",
+                   "default"},
+                  std::nullopt};
     // Read only when set: absent, the resolved config stays as it was before the key existed.
     Choice orientation{t,
                        {"agglomerate.orientation", "",
@@ -115,6 +141,9 @@ struct ImpactSettings {
                 Range::open_closed(0.0, 0.1)};
     Real charge{t, {"projectile.charge", "C", "projectile charge"}, 0.0, Range::closed(-1e-3, 1e-3)};
     Real permittivity{t, {"projectile.permittivity", "", "relative permittivity kappa_p"}, 1.0, Range::open_closed(0.0, 1e6)};
+    Text material{t, {"projectile.material", "", "material of the projectile: default or a [[materials]] name",
+                                "the agglomerate's material"},
+                  std::nullopt};
   } projectile;
 
   struct Output {
@@ -162,10 +191,11 @@ struct ImpactSettings {
     Vector3 position{t, {"wall.position", "m", "a point of the wall plane"}, std::nullopt, Range::closed(-1e3, 1e3)};
     Vector3 normal{t, {"wall.normal", "", "normal of the wall, towards the particles (normalised)"}, Vec3{-1, 0, 0},
                    Range::closed(-1e6, 1e6)};
-    Choice material{t,
-                    {"wall.material", "",
-                     "same = the particles' material, E* = E/(2(1-nu^2)); rigid = undeformable, E* = E/(1-nu^2)"},
-                    "same", {"same", "rigid"}};
+    Text material{t,
+                  {"wall.material", "",
+                   "same = each particle's own material, E* = E/(2(1-nu^2)); rigid = undeformable, E* = E/(1-nu^2); "
+                   "default or a [[materials]] name = a wall of that material (pair rules of docs/model.md)"},
+                  "same"};
     Bool impact{t,
                 {"wall.impact", "",
                  "the agglomerate itself moves at projectile.speed along +x onto the wall; no projectile"},

@@ -80,7 +80,8 @@ ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double spe
   if (c.wall_impact) return;
   dem::Particles tmp = sys_.particles();
   add_projectile(tmp, c, speed);
-  sys_.add_particle(tmp.x.back(), tmp.r.back(), c.agglomerate.density, tmp.v.back(), tmp.q.back(), tmp.kappa.back());
+  sys_.add_particle(tmp.x.back(), tmp.r.back(), material_density(c, c.projectile.material), tmp.v.back(), tmp.q.back(),
+                    tmp.kappa.back(), c.projectile.material);
 }
 
 ImpactRun::~ImpactRun() = default;

@@ -83,9 +83,11 @@ void parse_structure(const ConfigSection& ag, const std::string& case_file, Aggl
   }
 }
 
-void place_structure(const AgglomerateSpec& a, const dem::ContactParams& contact, dem::Particles& p) {
+void place_structure(const AgglomerateSpec& a, const ImpactCase& c, dem::Particles& p) {
   const auto& s = a.structure;
   const double abar = structure::geometric_mean(s.r);
+  const dem::MaterialPairs mats(c.dem.contact, c.dem.materials);
+  const auto& contact = mats.at(a.material_of(0), a.material_of(0));
   const auto jkr = dem::JkrPair::make(0.5 * abar, contact.estar(), contact.surface_energy);
   const double scale = 1.0 - jkr.delta_equilibrium() / (2.0 * abar);
   for (std::size_t k = 0; k < s.size(); ++k) {
@@ -93,7 +95,8 @@ void place_structure(const AgglomerateSpec& a, const dem::ContactParams& contact
     double q = a.charged ? a.charge_density * 4.0 * constants::pi * r * r * (k % 2 == 0 ? 1.0 : -1.0) : 0.0;
     if (!s.charge.empty()) q = s.charge[k];
     const double kappa = s.permittivity.empty() ? a.permittivity : s.permittivity[k];
-    p.add(scale * s.x[k], r, a.density, {}, q, kappa);
+    const std::uint32_t mat = a.material_of(k);
+    p.add(scale * s.x[k], r, material_density(c, mat), {}, q, kappa, mat);
   }
 }
 

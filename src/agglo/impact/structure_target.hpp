@@ -25,7 +25,8 @@ bool is_structure_shape(std::string_view shape);  // fractal, bpca, bcca, file
 // into a.structure and checks it. `case_file`: relative agglomerate.file paths start from its folder.
 void parse_structure(const ConfigSection& ag, const std::string& case_file, AgglomerateSpec& a);
 
-// Appends the structure's primaries to p, scaled to the JKR equilibrium overlap (above).
-void place_structure(const AgglomerateSpec& a, const dem::ContactParams& contact, dem::Particles& p);
+// Appends the structure's primaries to p, scaled to the JKR equilibrium overlap (above; delta0 of the
+// material of a's first primary), with the materials and densities of c.
+void place_structure(const AgglomerateSpec& a, const ImpactCase& c, dem::Particles& p);
 
 }  // namespace agglo::impact
