@@ -165,6 +165,14 @@ struct ImpactSettings {
                               "speeds tried per bisection round; fixed by configuration so v_crit never depends "
                               "on the core count"},
                              2, 1, 64};
+    // Read only when set (cases without it resolve as before).
+    Choice criterion{t,
+                     {"vcrit.criterion", "",
+                      "what is bisected: breakup = the lowest speed from which every tested speed breaks the "
+                      "agglomerate; sticking = the largest speed at which the agglomerate (wall.impact) or the "
+                      "projectile stays (on the wall, on the target)",
+                      "breakup"},
+                     std::nullopt, {"breakup", "sticking"}};
   } vcrit;
 
   struct Breakup {

@@ -310,6 +310,7 @@ void parse_searches(const ConfigSection& root, ImpactCase& c) {
                                         "nothing physical and approaches the spacing of doubles)",
                                         kMinRelativeTolerance, kv.v_max.dotted(), kMinRelativeTolerance * c.vcrit.v_max));
   c.vcrit.points_per_round = static_cast<int>(kv.points_per_round.read(vc));
+  if (kv.criterion.present(vc)) c.vcrit.sticking = kv.criterion.read(vc) == "sticking";
 
   const auto& kb = impact_keys().breakup;
   auto bu = kb.t.open(root);
