@@ -2,7 +2,9 @@
 // Settings tables of the DEM impact commands (collide, vcrit, breakup): the one declaration of each
 // key, its unit, default, range and meaning (docs/dem.md describes the experiment, docs/config.md
 // lists these tables). [electrostatics] and [[particles]] are in settings_electrostatics.hpp.
+#include <array>
 #include <cstdint>
+#include <string>
 
 #include "agglo/core/settings.hpp"
 
@@ -11,6 +13,18 @@ namespace agglo::settings {
 inline constexpr std::string_view kImpactCommands = "collide, vcrit, breakup";
 // [agglomerate] and the top level are read by the impact commands and by `agglo aggregate`.
 inline constexpr std::string_view kAgglomerateCommands = "collide, vcrit, breakup, aggregate";
+
+// The keys of the structure builder (docs/model.md Part S), declared once for the two tables that build
+// a structure: [agglomerate] (the target) and [projectile] (an aggregate projectile). `table` is the
+// section name ("agglomerate"), `what` the body named in the meanings. The dotted keys and meanings
+// are stored here, before the settings that refer to them (not copyable, like every Setting).
+struct BuilderKeys {
+  BuilderKeys(Table& t, std::string_view table, std::string_view what);
+  std::array<std::string, 12> text_;  // dotted key, meaning of each setting below, in order
+  Integer seed, primaries;
+  Real fractal_dimension, fractal_prefactor, radius_std;
+  Text file;
+};
 
 struct ImpactSettings {
   struct Top {
@@ -93,24 +107,13 @@ struct ImpactSettings {
                 10e-6, Range::open_closed(0.0, 0.1)};
     // The keys of the generated shapes are read only with those shapes (the resolved config of the
     // other shapes stays as it was).
-    Integer seed{t, {"agglomerate.seed", "", "random seed of the generated agglomerate (shape fractal, bpca, bcca)"},
-                 1, 0, INT64_MAX};
-    Integer primaries{t, {"agglomerate.primaries", "", "number of primaries N of shape fractal, bpca, bcca"}, 64, 2,
-                      10000};
-    Real fractal_dimension{t, {"agglomerate.fractal_dimension", "", "fractal dimension D_f of shape fractal"}, 1.8,
-                           Range::closed(1.0, 3.0)};
-    Real fractal_prefactor{t, {"agglomerate.fractal_prefactor", "", "fractal prefactor k_f of shape fractal"}, 1.3,
-                           Range::open_closed(0.0, 100.0)};
-    Real radius_std{t,
-                    {"agglomerate.radius_std", "",
-                     "geometric standard deviation sigma_g of the lognormal primary radii (fractal, bpca, bcca)", {},
-                     "1 = monodisperse"},
-                    1.0, Range::closed(1.0, 3.0)};
-    Text file{t,
-              {"agglomerate.file", "",
-               "CSV of shape file: header with x, y, z, radius [m], optional charge [C], permittivity; relative "
-               "paths from the case file's folder"},
-              std::nullopt};
+    BuilderKeys builder{t, "agglomerate", "agglomerate"};
+    const Integer& seed = builder.seed;
+    const Integer& primaries = builder.primaries;
+    const Real& fractal_dimension = builder.fractal_dimension;
+    const Real& fractal_prefactor = builder.fractal_prefactor;
+    const Real& radius_std = builder.radius_std;
+    const Text& file = builder.file;
     Bool charged{t, {"agglomerate.charged", "", "alternate +/- charge_density on the built-in shapes"}, false};
     Real charge_density{t, {"agglomerate.charge_density", "C/m^2", "surface charge density |sigma_f|"}, 10e-6,
                         Range::closed(0.0, 1e-2)};
@@ -144,6 +147,20 @@ struct ImpactSettings {
     Text material{t, {"projectile.material", "", "material of the projectile: default or a [[materials]] name",
                                 "the agglomerate's material"},
                   std::nullopt};
+    // An aggregate projectile (read only when set, as the keys below): the builder's shapes and keys.
+    Choice shape{t,
+                 {"projectile.shape", "",
+                  "sphere, or an aggregate of the structure builder as agglomerate.shape (fractal, bpca, bcca, file; "
+                  "keys projectile.seed, primaries, ...; projectile.radius = its geometric-mean primary radius)",
+                  "sphere"},
+                 std::nullopt, {"sphere", "fractal", "bpca", "bcca", "file"}};
+    BuilderKeys builder{t, "projectile", "projectile"};
+    Choice orientation{t,
+                       {"projectile.orientation", "",
+                        "as_built, or random: an aggregate projectile turned about its centroid by a uniform random "
+                        "rotation drawn from projectile.seed",
+                        "as_built"},
+                       std::nullopt, {"as_built", "random"}};
   } projectile;
 
   struct Output {

@@ -6,6 +6,7 @@
 #include "agglo/dem/jkr.hpp"
 #include "agglo/impact/orientation.hpp"
 #include "agglo/impact/structure_target.hpp"
+#include "agglo/structure/geometry.hpp"
 
 namespace agglo::impact {
 
@@ -53,9 +54,29 @@ void add_projectile(dem::Particles& p, const ImpactCase& c, double speed) {
     centroid += p.x[k] / static_cast<double>(p.size());
     xmin = std::min(xmin, p.x[k].x - p.r[k]);
   }
-  Vec3 start{xmin - pj.gap_radii * rref - pj.radius, centroid.y + pj.offset_radii * rref, centroid.z};
-  p.add(start, pj.radius, material_density(c, pj.material), {speed, 0.0, 0.0}, pj.charge, pj.permittivity,
-        pj.material);
+  if (pj.shape == "sphere") {
+    Vec3 start{xmin - pj.gap_radii * rref - pj.radius, centroid.y + pj.offset_radii * rref, centroid.z};
+    p.add(start, pj.radius, material_density(c, pj.material), {speed, 0.0, 0.0}, pj.charge, pj.permittivity,
+          pj.material);
+    return;
+  }
+  dem::Particles body;  // centroid at the origin
+  place_structure(pj.body, c, body);
+  double xmax = -1e300;
+  for (std::size_t k = 0; k < body.size(); ++k) {
+    body.x[k] = pj.rotation.apply(body.x[k]);
+    xmax = std::max(xmax, body.x[k].x + body.r[k]);
+  }
+  const Vec3 shift{xmin - pj.gap_radii * rref - xmax, centroid.y + pj.offset_radii * rref, centroid.z};
+  for (std::size_t k = 0; k < body.size(); ++k)
+    p.add(body.x[k] + shift, body.r[k], material_density(c, body.mat[k]), {speed, 0.0, 0.0}, body.q[k],
+          body.kappa[k], body.mat[k]);
+}
+
+Rotation projectile_orientation(const ImpactCase& c, int k) {
+  constexpr std::uint64_t kOrientationStream = 0x70726f6aULL;  // "proj": apart from the builder's streams
+  CounterRng rng(static_cast<std::uint64_t>(c.projectile.body.seed), kOrientationStream, static_cast<std::uint64_t>(k));
+  return structure::random_rotation(rng);
 }
 
 }  // namespace agglo::impact

@@ -174,6 +174,42 @@ AgglomerateSpec parse_agglomerate(const ConfigSection& root, const std::string& 
 
 namespace {
 
+// The materials of a structure file's material column (`file`: the key of the file, in `sec`).
+void column_materials(const settings::Setting& file, const ConfigSection& sec, const ImpactCase& c,
+                      AgglomerateSpec& a) {
+  const auto& names = a.structure.material;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const auto id = find_material(c, names[k]);
+    if (!id)
+      file.reject(sec, fmt::format("primary {} (data row {}): unknown material \"{}\" in the material column; "
+                                   "allowed: {}",
+                                   k, k + 1, names[k], material_names(c)));
+    a.materials.push_back(*id);
+  }
+}
+
+// An aggregate projectile (projectile.shape other than "sphere"): its structure, orientation and materials.
+void parse_projectile_body(const ConfigSection& pj, const std::string& case_file, ImpactCase& c) {
+  const auto& kp = impact_keys().projectile;
+  auto& p = c.projectile;
+  if (kp.shape.present(pj)) p.shape = kp.shape.read(pj);
+  p.body.shape = p.shape;
+  p.body.radius = p.radius;
+  p.body.permittivity = p.permittivity;
+  p.body.material = p.material;
+  parse_structure(pj, case_file, p.body, {kp.shape, kp.builder});  // refuses the builder keys with a sphere
+  const bool aggregate = p.shape != "sphere";
+  if (!aggregate && kp.orientation.present(pj))
+    kp.orientation.reject(pj, fmt::format("applies to an aggregate projectile ({} other than \"sphere\")", kp.shape.dotted()));
+  if (!aggregate) return;
+  if (p.charge != 0.0)
+    kp.charge.reject(pj, fmt::format("applies to a sphere projectile; an aggregate projectile takes the charge column of "
+                                     "{} = \"file\"",
+                                     kp.shape.dotted()));
+  column_materials(kp.builder.file, pj, c, p.body);
+  if (kp.orientation.present(pj) && kp.orientation.read(pj) == "random") p.rotation = projectile_orientation(c, 0);
+}
+
 // The materials of the agglomerate's primaries: agglomerate.material, particles.material of each
 // [[particles]] entry, the material column of a structure file.
 void parse_body_materials(const ConfigSection& root, ImpactCase& c) {
@@ -185,15 +221,7 @@ void parse_body_materials(const ConfigSection& root, ImpactCase& c) {
     const auto& kl = settings::electrostatics_settings().particles;
     for (const auto& e : kl.t.elements(root)) a.materials.push_back(read_material(kl.material, e, c, a.material));
   }
-  const auto& names = a.structure.material;
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    const auto id = names[k].empty() ? std::optional<std::uint32_t>(a.material) : find_material(c, names[k]);
-    if (!id)
-      ka.file.reject(ag, fmt::format("primary {} (data row {}): unknown material \"{}\" in the material column; "
-                                     "allowed: {}",
-                                     k, k + 1, names[k], material_names(c)));
-    a.materials.push_back(*id);
-  }
+  column_materials(ka.file, ag, c, a);
 }
 
 // [agglomerate], [[particles]] (shape = "list") and [projectile].
@@ -214,6 +242,7 @@ void parse_bodies(const ConfigSection& root, const std::string& case_file, Impac
   p.permittivity = kp.permittivity.read(pj);
   parse_body_materials(root, c);
   p.material = read_material(kp.material, pj, c, c.agglomerate.material);
+  parse_projectile_body(pj, case_file, c);
 }
 
 // [wall]: read only when present (cases without it resolve as before); the wall goes to c.dem.walls.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "agglo/core/config.hpp"
+#include "agglo/core/rotation.hpp"
 #include "agglo/core/settings_impact.hpp"
 #include "agglo/core/vec3.hpp"
 #include "agglo/impact/electrostatic_coupling.hpp"
@@ -57,6 +58,12 @@ struct ProjectileSpec {
   double charge = impact_keys().projectile.charge.def();              // [C]
   double permittivity = impact_keys().projectile.permittivity.def();  // kappa_p
   std::uint32_t material = 0;                                         // material id (dem/material.hpp)
+  // An aggregate projectile (projectile.shape fractal | bpca | bcca | file; "sphere": the sphere above):
+  // the builder's request and structure in `body` (radius = the primary radius a_g above, materials),
+  // turned about its centroid by `rotation` (projectile.orientation = "random": drawn from the seed).
+  std::string shape = "sphere";
+  AgglomerateSpec body;
+  Rotation rotation;
 };
 
 struct TimeSpec {
