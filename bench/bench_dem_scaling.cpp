@@ -82,9 +82,9 @@ void BM_NeighborBuild(benchmark::State& state) {
   const double skin = 0.1 * p.r[0];
   for (auto _ : state) {
     dem::NeighborList nl;
-    nl.build(p.x, p.r, skin, [&](std::uint32_t i, std::uint32_t j) {
-      return dem::JkrPair::make(p.r[i] * p.r[j] / (p.r[i] + p.r[j]), params.contact.estar(),
-                                params.contact.surface_energy);
+    nl.build(p.x, p.r, skin, [&](dem::Pair& pr) {
+      pr.jkr = dem::JkrPair::make(p.r[pr.i] * p.r[pr.j] / (p.r[pr.i] + p.r[pr.j]), params.contact.estar(),
+                                  params.contact.surface_energy);
     });
     benchmark::DoNotOptimize(nl.pairs().data());
   }

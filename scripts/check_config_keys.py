@@ -7,7 +7,10 @@ Usage: check_config_keys.py AGGLO_EXECUTABLE SOURCE_DIR
    src/ (its declaration in src/agglo/core/settings_*.hpp, or in the tables the engines declare beside
    the models they name: src/agglo/dem/contact/settings.*, src/agglo/acoustics/kernels/keys.*). A key
    whose name is also a quoted value in the listing (the top-level key "seed" and the deprecated contact
-   model name "seed") cannot be told apart from that value: it must appear at least once.
+   model name "seed") cannot be told apart from that value: it must appear at least once. The keys of
+   the structure builder are declared once for several tables (settings::BuilderKeys): "<table>.<leaf>"
+   for each table constructing one in settings_impact.hpp (`BuilderKeys builder{t, "<table>", ...}`) and
+   each leaf of builder_text() in settings_catalogue.cpp (`key("<leaf>")`); they appear as no literal.
 2. No string literal in src/ or apps/ outside the settings tables may contain a dotted key
    ("time.motion_dt" in a message, "projectile.speed=..." in an override): messages name keys
    through the setting objects (Setting::dotted()).
@@ -57,6 +60,13 @@ def code_lines(path):
         yield n, "".join(code)
 
 
+def builder_keys(root):
+    """The keys settings::BuilderKeys declares: every table that builds one times every leaf."""
+    tables = re.findall(r'BuilderKeys builder\{t, "([a-z_]+)"', (root / "src/agglo/core/settings_impact.hpp").read_text())
+    leaves = re.findall(r'key\("([a-z_]+)"\)', (root / "src/agglo/core/settings_catalogue.cpp").read_text())
+    return {f"{t}.{leaf}" for t in tables for leaf in leaves}
+
+
 def sources(root, folder):
     for p in sorted((root / folder).rglob("*")):
         rel = p.relative_to(root).as_posix()
@@ -84,8 +94,13 @@ def main():
                         offenders.append(f"{rel}:{n}: literal names the key '{hit.group(1)}': \"{text}\"")
                 if READER_CALL.search(code):
                     offenders.append(f"{rel}:{n}: config read with a literal key: {code.strip()}")
+    generated = builder_keys(root)
     for key in keys:
         n = len(where[key])
+        if key in generated:
+            if n:
+                offenders.append(f"key '{key}' (declared by BuilderKeys) also appears as a literal: {', '.join(where[key])}")
+            continue
         if n == 0 or (n > 1 and key not in values):
             places = ", ".join(where[key]) or "nowhere"
             offenders.append(f"key '{key}' appears {n} times as a literal in src/ (expected once): {places}")

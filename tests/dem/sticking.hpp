@@ -1,6 +1,7 @@
 #pragma once
-// Shared by the sticking-velocity tests (test_dem_dynamics.cpp, test_wall.cpp): a material, DEM
-// parameters resolving the contact finely, and the bisection of the largest speed that sticks.
+// Shared by the sticking-velocity tests (test_dem_dynamics.cpp, test_wall.cpp, test_materials.cpp): a
+// sample material (Sample), DEM parameters resolving the contact finely, and the bisection of the
+// largest speed that sticks.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -11,12 +12,12 @@
 
 namespace agglo::dem::testing {
 
-struct Material {
+struct Sample {
   double r = 10e-6, rho = 2500, E = 1e9, nu = 0.33, gamma = 0.01;
   double mass() const { return 4.0 / 3.0 * constants::pi * r * r * r * rho; }
 };
 
-inline DemParams params_for(const Material& m, double e, bool damping) {
+inline DemParams params_for(const Sample& m, double e, bool damping) {
   DemParams p;
   p.contact.youngs_modulus = m.E;
   p.contact.poisson_ratio = m.nu;

@@ -21,7 +21,7 @@ using namespace agglo::dem::testing;
 namespace {
 
 // Head-on collision of two equal spheres at relative speed v: true if they stay bonded.
-bool sticks(const Material& m, const DemParams& prm, double v) {
+bool sticks(const Sample& m, const DemParams& prm, double v) {
   Particles p;
   const double gap = 1e-3 * m.r;
   p.add({-(m.r + gap / 2), 0, 0}, m.r, m.rho, {v / 2, 0, 0});
@@ -40,11 +40,11 @@ bool sticks(const Material& m, const DemParams& prm, double v) {
   return true;
 }
 
-double sticking_velocity(const Material& m, const DemParams& prm, double vlo, double vhi) {
+double sticking_velocity(const Sample& m, const DemParams& prm, double vlo, double vhi) {
   return bisect([&](double v) { return sticks(m, prm, v); }, vlo, vhi);
 }
 
-double reference_vs0(const Material& m) {
+double reference_vs0(const Sample& m) {
   double R = m.r / 2, Estar = m.E / (2 * (1 - m.nu * m.nu));
   auto jkr = JkrPair::make(R, Estar, m.gamma);
   double mass = 4.0 / 3.0 * constants::pi * m.r * m.r * m.r * m.rho;
@@ -52,7 +52,7 @@ double reference_vs0(const Material& m) {
 }
 
 TEST(DemDynamics, UndampedStickingVelocity) {
-  Material m;
+  Sample m;
   double vs0 = reference_vs0(m);
   double vs = sticking_velocity(m, params_for(m, 0.7, false), 0.5 * vs0, 2 * vs0);
   EXPECT_NEAR(vs / vs0, 1.0, 2e-3);
@@ -61,8 +61,8 @@ TEST(DemDynamics, UndampedStickingVelocity) {
 TEST(DemDynamics, DampedStickingRatioUniversal) {
   // g(e) = v_s / v_s0 (docs/model.md §A.4 item 6) for two very different materials.
   const std::pair<double, double> table[] = {{0.9, 1.275}, {0.7, 1.983}, {0.5, 3.123}, {0.3, 5.444}};
-  Material a;
-  Material b{2e-6, 1000, 5e9, 0.25, 0.05};
+  Sample a;
+  Sample b{2e-6, 1000, 5e9, 0.25, 0.05};
   for (auto [e, g] : table) {
     double ga = sticking_velocity(a, params_for(a, e, true), reference_vs0(a), 8 * reference_vs0(a)) / reference_vs0(a);
     double gb = sticking_velocity(b, params_for(b, e, true), reference_vs0(b), 8 * reference_vs0(b)) / reference_vs0(b);
@@ -72,7 +72,7 @@ TEST(DemDynamics, DampedStickingRatioUniversal) {
 }
 
 TEST(DemDynamics, PairAtEquilibriumStaysAtRest) {
-  Material m;
+  Sample m;
   auto prm = params_for(m, 0.7, true);
   prm.contact.friction = 0.3;
   auto jkr = JkrPair::make(m.r / 2, m.E / (2 * (1 - m.nu * m.nu)), m.gamma);
@@ -130,7 +130,7 @@ TEST(DemDynamics, ConservationMarshallFull) { check_conservation(true); }
 TEST(DemDynamics, BreakRules) {
   // Pull a bonded pair apart slowly and record the overlap at which the contact breaks.
   for (auto rule : {BreakRule::marshall, BreakRule::lammps}) {
-    Material m;
+    Sample m;
     auto prm = params_for(m, 0.7, false);
     prm.contact.break_rule = rule;
     auto jkr = JkrPair::make(m.r / 2, m.E / (2 * (1 - m.nu * m.nu)), m.gamma);
@@ -171,7 +171,7 @@ TEST(DemDynamics, NeighborListMatchesBruteForce) {
   }
   double skin = 2e-6;
   NeighborList nl;
-  nl.build(x, r, skin, [](auto, auto) { return JkrPair{}; });
+  nl.build(x, r, skin, [](Pair&) {});
   std::set<std::pair<unsigned, unsigned>> fast, slow;
   for (const auto& p : nl.pairs()) fast.insert({p.i, p.j});
   for (unsigned i = 0; i < x.size(); ++i)
@@ -185,7 +185,7 @@ TEST(DemDynamics, ThreadCountIndependent) {
   // A packed block of 8000 particles (> 4096 pairs: parallel force loop) gives identical states.
   auto make = [] {
     Particles p;
-    Material m;
+    Sample m;
     auto jkr = JkrPair::make(m.r / 2, m.E / (2 * (1 - m.nu * m.nu)), m.gamma);
     double L = 2 * m.r - jkr.delta_equilibrium();
     std::mt19937_64 rng(3);
@@ -195,7 +195,7 @@ TEST(DemDynamics, ThreadCountIndependent) {
         for (int c = 0; c < 20; ++c) p.add({a * L, b * L, c * L}, m.r, m.rho, {nd(rng), nd(rng), nd(rng)});
     return p;
   };
-  auto prm = params_for(Material{}, 0.7, true);
+  auto prm = params_for(Sample{}, 0.7, true);
   prm.contact.friction = 0.3;
   int saved = omp_get_max_threads();
   omp_set_num_threads(1);

@@ -34,7 +34,7 @@ bool stays(DemSystem& sys, double approach_time) {
 }
 
 // A sphere approaching `wall` along -normal at speed v from a gap of 1e-3 r.
-bool sticks_to_wall(const Material& m, DemParams prm, const Wall& wall, double v) {
+bool sticks_to_wall(const Sample& m, DemParams prm, const Wall& wall, double v) {
   prm.walls = {wall};
   const double gap = 1e-3 * m.r;
   Particles p;
@@ -44,7 +44,7 @@ bool sticks_to_wall(const Material& m, DemParams prm, const Wall& wall, double v
 }
 
 // Two equal spheres head-on at relative speed v.
-bool pair_sticks(const Material& m, const DemParams& prm, double v) {
+bool pair_sticks(const Sample& m, const DemParams& prm, double v) {
   const double gap = 1e-3 * m.r;
   Particles p;
   p.add({-(m.r + gap / 2), 0, 0}, m.r, m.rho, {v / 2, 0, 0});
@@ -54,12 +54,12 @@ bool pair_sticks(const Material& m, const DemParams& prm, double v) {
 }
 
 // Closed form with R* = r, m* = m and the wall's E*.
-double wall_capture(const Material& m, WallMaterial w) {
+double wall_capture(const Sample& m, WallMaterial w) {
   const auto jkr = JkrPair::make(m.r, wall_estar(w, m.E, m.nu), m.gamma);
   return kCapture * std::sqrt(jkr.Fc * jkr.deltaC / m.mass());
 }
 
-double pair_capture(const Material& m) {
+double pair_capture(const Sample& m) {
   const auto jkr = JkrPair::make(m.r / 2, m.E / (2 * (1 - m.nu * m.nu)), m.gamma);
   return kCapture * std::sqrt(jkr.Fc * jkr.deltaC / (m.mass() / 2));
 }
@@ -72,7 +72,7 @@ Wall wall_of(WallMaterial mat, Vec3 normal = {1, 0, 0}) {
   return w;
 }
 
-double wall_sticking(const Material& m, const DemParams& prm, const Wall& w, double lo, double hi) {
+double wall_sticking(const Sample& m, const DemParams& prm, const Wall& w, double lo, double hi) {
   return bisect([&](double v) { return sticks_to_wall(m, prm, w, v); }, lo, hi);
 }
 
@@ -83,14 +83,14 @@ TEST(Wall, EffectiveModulus) {
 
 TEST(Wall, SeedMaterialClosedForm) {
   // The values quoted by issue 24 for the seed material (E = 1 GPa): 0.02514 m/s (same), 0.01996 m/s (rigid).
-  const Material m;
+  const Sample m;
   EXPECT_NEAR(wall_capture(m, WallMaterial::same), 0.02514, 5e-6);
   EXPECT_NEAR(wall_capture(m, WallMaterial::rigid), 0.01996, 5e-6);
   EXPECT_NEAR(wall_capture(m, WallMaterial::same) / pair_capture(m), std::pow(2.0, 1.0 / 6.0), 1e-12);
 }
 
 TEST(Wall, UndampedStickingSameMaterial) {
-  const Material m;
+  const Sample m;
   const double vs0 = wall_capture(m, WallMaterial::same);
   const double vs = wall_sticking(m, params_for(m, 0.7, false), wall_of(WallMaterial::same), 0.5 * vs0, 2 * vs0);
   EXPECT_NEAR(vs / vs0, 1.0, 2e-3);
@@ -103,7 +103,7 @@ TEST(Wall, UndampedStickingSameMaterial) {
 }
 
 TEST(Wall, UndampedStickingRigid) {
-  const Material m;
+  const Sample m;
   const double vs0 = wall_capture(m, WallMaterial::rigid);
   const double vs = wall_sticking(m, params_for(m, 0.7, false), wall_of(WallMaterial::rigid), 0.5 * vs0, 2 * vs0);
   std::printf("rigid wall: v_s = %.6g m/s (closed form %.6g)\n", vs, vs0);
@@ -113,7 +113,7 @@ TEST(Wall, UndampedStickingRigid) {
 
 TEST(Wall, ObliqueWallSameSticking) {
   // The wall's orientation and position do not matter: a normal along (1, -2, 0.5).
-  const Material m{3e-6, 1200, 3e9, 0.25, 0.03};
+  const Sample m{3e-6, 1200, 3e9, 0.25, 0.03};
   const double vs0 = wall_capture(m, WallMaterial::same);
   const double vs =
       wall_sticking(m, params_for(m, 0.7, false), wall_of(WallMaterial::same, {1, -2, 0.5}), 0.5 * vs0, 2 * vs0);
@@ -124,7 +124,7 @@ TEST(Wall, DampedRatioFollowsAlpha) {
   // With eta_N = alpha(e) sqrt(m* k_N) the dimensionless contact depends on e only, so the damped
   // sticking velocity is g(e) times the undamped one (docs/model.md §A.4 item 6) and the wall/pair
   // ratio stays 2^(1/6).
-  const Material m;
+  const Sample m;
   const std::pair<double, double> table[] = {{0.9, 1.275}, {0.5, 3.123}};
   for (auto [e, g] : table) {
     const auto prm = params_for(m, e, true);
@@ -138,7 +138,7 @@ TEST(Wall, DampedRatioFollowsAlpha) {
 }
 
 TEST(Wall, SphereAtEquilibriumStaysAtRest) {
-  Material m;
+  Sample m;
   auto prm = params_for(m, 0.7, true);
   prm.contact.friction = 0.3;
   const Wall w = wall_of(WallMaterial::rigid, {0, 0, 1});
@@ -157,7 +157,7 @@ TEST(Wall, SphereAtEquilibriumStaysAtRest) {
 TEST(Wall, ObliqueImpactFrictionSpinsSphere) {
   // A sphere hitting a wall obliquely with Marshall's sliding friction: the tangential force at the
   // contact point slows the sliding and spins the sphere the way it would roll.
-  Material m;
+  Sample m;
   auto prm = params_for(m, 0.7, true);
   prm.contact.friction = 0.5;
   prm.contact.models.tangential = contact::MarshallSliding::name;

@@ -35,8 +35,38 @@ const AcousticSettings& acoustic_settings() {
   return s;
 }
 
+namespace {
+
+std::array<std::string, 12> builder_text(std::string_view table, std::string_view what) {
+  auto key = [&](std::string_view leaf) { return fmt::format("{}.{}", table, leaf); };
+  return {key("seed"),
+          fmt::format("random seed of the generated {} (shape fractal, bpca, bcca)", what),
+          key("primaries"),
+          "number of primaries N of shape fractal, bpca, bcca",
+          key("fractal_dimension"),
+          "fractal dimension D_f of shape fractal",
+          key("fractal_prefactor"),
+          "fractal prefactor k_f of shape fractal",
+          key("radius_std"),
+          "geometric standard deviation sigma_g of the lognormal primary radii (fractal, bpca, bcca)",
+          key("file"),
+          "CSV of shape file: header with x, y, z, radius [m], optional charge [C], permittivity, material; "
+          "relative paths from the case file's folder"};
+}
+
+}  // namespace
+
+BuilderKeys::BuilderKeys(Table& t, std::string_view table, std::string_view what)
+    : text_(builder_text(table, what)),
+      seed{t, {text_[0], "", text_[1]}, 1, 0, INT64_MAX},
+      primaries{t, {text_[2], "", text_[3]}, 64, 2, 10000},
+      fractal_dimension{t, {text_[4], "", text_[5]}, 1.8, Range::closed(1.0, 3.0)},
+      fractal_prefactor{t, {text_[6], "", text_[7]}, 1.3, Range::open_closed(0.0, 100.0)},
+      radius_std{t, {text_[8], "", text_[9], {}, "1 = monodisperse"}, 1.0, Range::closed(1.0, 3.0)},
+      file{t, {text_[10], "", text_[11]}, std::nullopt} {}
+
 std::vector<const Table*> ImpactSettings::tables() const {
-  return {&top.t, &material.t, &time.t, &agglomerate.t, &projectile.t, &output.t, &vcrit.t, &breakup.t, &wall.t};
+  return {&top.t, &material.t, &materials.t, &time.t, &agglomerate.t, &projectile.t, &output.t, &vcrit.t, &breakup.t, &wall.t};
 }
 
 std::vector<const Table*> AcousticSettings::tables() const {

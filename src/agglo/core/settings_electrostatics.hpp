@@ -51,6 +51,9 @@ struct ElectrostaticsSettings {
     Real radius{t, {"particles.radius", "m", "radius"}, std::nullopt, Range::open_closed(0.0, 0.1)};
     Real charge{t, {"particles.charge", "C", "charge"}, 0.0, Range::closed(-1e-3, 1e-3)};
     Real permittivity{t, {"particles.permittivity", "", "relative permittivity kappa_p"}, 1.0, Range::open_closed(0.0, 1e6)};
+    Text material{t, {"particles.material", "", "impact cases: material, default or a [[materials]] name",
+                                "default"},
+                  std::nullopt};
   } particles;
 
   struct Output {

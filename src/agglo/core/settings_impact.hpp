@@ -2,7 +2,9 @@
 // Settings tables of the DEM impact commands (collide, vcrit, breakup): the one declaration of each
 // key, its unit, default, range and meaning (docs/dem.md describes the experiment, docs/config.md
 // lists these tables). [electrostatics] and [[particles]] are in settings_electrostatics.hpp.
+#include <array>
 #include <cstdint>
+#include <string>
 
 #include "agglo/core/settings.hpp"
 
@@ -11,6 +13,18 @@ namespace agglo::settings {
 inline constexpr std::string_view kImpactCommands = "collide, vcrit, breakup";
 // [agglomerate] and the top level are read by the impact commands and by `agglo aggregate`.
 inline constexpr std::string_view kAgglomerateCommands = "collide, vcrit, breakup, aggregate";
+
+// The keys of the structure builder (docs/model.md Part S), declared once for the two tables that build
+// a structure: [agglomerate] (the target) and [projectile] (an aggregate projectile). `table` is the
+// section name ("agglomerate"), `what` the body named in the meanings. The dotted keys and meanings
+// are stored here, before the settings that refer to them (not copyable, like every Setting).
+struct BuilderKeys {
+  BuilderKeys(Table& t, std::string_view table, std::string_view what);
+  std::array<std::string, 12> text_;  // dotted key, meaning of each setting below, in order
+  Integer seed, primaries;
+  Real fractal_dimension, fractal_prefactor, radius_std;
+  Text file;
+};
 
 struct ImpactSettings {
   struct Top {
@@ -35,6 +49,26 @@ struct ImpactSettings {
                               "0 = same as youngs_modulus"},
                              0.0, Range::closed(0.0, 1e13)};
   } material;
+
+  // [[materials]]: named materials (dem/material.hpp), chosen per particle by particles.material,
+  // agglomerate.material, the structure file's material column, projectile.material and wall.material.
+  struct Materials {
+    Table t{"materials", kImpactCommands, "named materials, each chosen by its name (the [material] table is \"default\")",
+            true};
+    Text name{t, {"materials.name", "", "name of the material (not default, same or rigid; unique)"}, std::nullopt};
+    Real density{t, {"materials.density", "kg/m^3", "density rho", "the [material] value"}, std::nullopt,
+                 Range::open_closed(0.0, 1e5)};
+    Real youngs_modulus{t, {"materials.youngs_modulus", "Pa", "Young's modulus E", "the [material] value"},
+                        std::nullopt, Range::open_closed(0.0, 1e13)};
+    Real poisson_ratio{t, {"materials.poisson_ratio", "", "Poisson ratio nu", "the [material] value"}, std::nullopt,
+                       Range::open(-1.0, 0.5)};
+    Real surface_energy{t, {"materials.surface_energy", "J/m^2", "surface energy gamma", "the [material] value"},
+                        std::nullopt, Range::open_closed(0.0, 100.0)};
+    Real restitution{t, {"materials.restitution", "", "coefficient of restitution e", "the [material] value"},
+                     std::nullopt, Range::open_closed(0.0, 1.0)};
+    Real friction{t, {"materials.friction", "", "sliding friction coefficient mu_F", "the [material] value"},
+                  std::nullopt, Range::closed(0.0, 10.0)};
+  } materials;
 
   // [contact] (the sub-models by name) is declared beside them: dem/contact/settings.hpp.
 
@@ -73,29 +107,24 @@ struct ImpactSettings {
                 10e-6, Range::open_closed(0.0, 0.1)};
     // The keys of the generated shapes are read only with those shapes (the resolved config of the
     // other shapes stays as it was).
-    Integer seed{t, {"agglomerate.seed", "", "random seed of the generated agglomerate (shape fractal, bpca, bcca)"},
-                 1, 0, INT64_MAX};
-    Integer primaries{t, {"agglomerate.primaries", "", "number of primaries N of shape fractal, bpca, bcca"}, 64, 2,
-                      10000};
-    Real fractal_dimension{t, {"agglomerate.fractal_dimension", "", "fractal dimension D_f of shape fractal"}, 1.8,
-                           Range::closed(1.0, 3.0)};
-    Real fractal_prefactor{t, {"agglomerate.fractal_prefactor", "", "fractal prefactor k_f of shape fractal"}, 1.3,
-                           Range::open_closed(0.0, 100.0)};
-    Real radius_std{t,
-                    {"agglomerate.radius_std", "",
-                     "geometric standard deviation sigma_g of the lognormal primary radii (fractal, bpca, bcca)", {},
-                     "1 = monodisperse"},
-                    1.0, Range::closed(1.0, 3.0)};
-    Text file{t,
-              {"agglomerate.file", "",
-               "CSV of shape file: header with x, y, z, radius [m], optional charge [C], permittivity; relative "
-               "paths from the case file's folder"},
-              std::nullopt};
+    BuilderKeys builder{t, "agglomerate", "agglomerate"};
+    const Integer& seed = builder.seed;
+    const Integer& primaries = builder.primaries;
+    const Real& fractal_dimension = builder.fractal_dimension;
+    const Real& fractal_prefactor = builder.fractal_prefactor;
+    const Real& radius_std = builder.radius_std;
+    const Text& file = builder.file;
     Bool charged{t, {"agglomerate.charged", "", "alternate +/- charge_density on the built-in shapes"}, false};
     Real charge_density{t, {"agglomerate.charge_density", "C/m^2", "surface charge density |sigma_f|"}, 10e-6,
                         Range::closed(0.0, 1e-2)};
     Real permittivity{t, {"agglomerate.permittivity", "", "relative permittivity kappa_p of the built-in shapes"},
                       1.0, Range::open_closed(0.0, 1e6)};
+    Text material{t,
+                  {"agglomerate.material", "",
+                   "material of every primary of the built-in and generated shapes, and of the file's primaries "
+                   "without a material column: default or a [[materials]] name",
+                   "default"},
+                  std::nullopt};
     // Read only when set: absent, the resolved config stays as it was before the key existed.
     Choice orientation{t,
                        {"agglomerate.orientation", "",
@@ -115,6 +144,23 @@ struct ImpactSettings {
                 Range::open_closed(0.0, 0.1)};
     Real charge{t, {"projectile.charge", "C", "projectile charge"}, 0.0, Range::closed(-1e-3, 1e-3)};
     Real permittivity{t, {"projectile.permittivity", "", "relative permittivity kappa_p"}, 1.0, Range::open_closed(0.0, 1e6)};
+    Text material{t, {"projectile.material", "", "material of the projectile: default or a [[materials]] name",
+                                "the agglomerate's material"},
+                  std::nullopt};
+    // An aggregate projectile (read only when set, as the keys below): the builder's shapes and keys.
+    Choice shape{t,
+                 {"projectile.shape", "",
+                  "sphere, or an aggregate of the structure builder as agglomerate.shape (fractal, bpca, bcca, file; "
+                  "keys projectile.seed, primaries, ...; projectile.radius = its geometric-mean primary radius)",
+                  "sphere"},
+                 std::nullopt, {"sphere", "fractal", "bpca", "bcca", "file"}};
+    BuilderKeys builder{t, "projectile", "projectile"};
+    Choice orientation{t,
+                       {"projectile.orientation", "",
+                        "as_built, or random: an aggregate projectile turned about its centroid by a uniform random "
+                        "rotation drawn from projectile.seed",
+                        "as_built"},
+                       std::nullopt, {"as_built", "random"}};
   } projectile;
 
   struct Output {
@@ -136,6 +182,14 @@ struct ImpactSettings {
                               "speeds tried per bisection round; fixed by configuration so v_crit never depends "
                               "on the core count"},
                              2, 1, 64};
+    // Read only when set (cases without it resolve as before).
+    Choice criterion{t,
+                     {"vcrit.criterion", "",
+                      "what is bisected: breakup = the lowest speed from which every tested speed breaks the "
+                      "agglomerate; sticking = the largest speed at which the agglomerate (wall.impact) or the "
+                      "projectile stays (on the wall, on the target)",
+                      "breakup"},
+                     std::nullopt, {"breakup", "sticking"}};
   } vcrit;
 
   struct Breakup {
@@ -162,10 +216,11 @@ struct ImpactSettings {
     Vector3 position{t, {"wall.position", "m", "a point of the wall plane"}, std::nullopt, Range::closed(-1e3, 1e3)};
     Vector3 normal{t, {"wall.normal", "", "normal of the wall, towards the particles (normalised)"}, Vec3{-1, 0, 0},
                    Range::closed(-1e6, 1e6)};
-    Choice material{t,
-                    {"wall.material", "",
-                     "same = the particles' material, E* = E/(2(1-nu^2)); rigid = undeformable, E* = E/(1-nu^2)"},
-                    "same", {"same", "rigid"}};
+    Text material{t,
+                  {"wall.material", "",
+                   "same = each particle's own material, E* = E/(2(1-nu^2)); rigid = undeformable, E* = E/(1-nu^2); "
+                   "default or a [[materials]] name = a wall of that material (pair rules of docs/model.md)"},
+                  "same"};
     Bool impact{t,
                 {"wall.impact", "",
                  "the agglomerate itself moves at projectile.speed along +x onto the wall; no projectile"},

@@ -7,6 +7,9 @@ namespace agglo::dem {
 ContactLaw::ContactLaw(const ContactParams& p) : ContactLaw(p, p.models) {}
 
 ContactLaw::ContactLaw(const ContactParams& p, const contact::ModelNames& names)
-    : names_(names), kernel_(contact::make_kernel(names, p)) {}
+    : names_(names), kernel_(contact::make_kernel(names, {p})) {}
+
+ContactLaw::ContactLaw(const MaterialPairs& pairs, const contact::ModelNames& names)
+    : names_(names), kernel_(contact::make_kernel(names, pairs.table)) {}
 
 }  // namespace agglo::dem

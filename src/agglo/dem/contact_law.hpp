@@ -8,6 +8,7 @@
 #include "agglo/dem/contact/contact_kernel.hpp"
 #include "agglo/dem/contact/model_names.hpp"
 #include "agglo/dem/contact_params.hpp"
+#include "agglo/dem/material.hpp"
 
 namespace agglo::dem {
 
@@ -17,6 +18,8 @@ class ContactLaw {
   explicit ContactLaw(const ContactParams& p);
   // Explicit names; throws ConfigError for unknown names or coefficients a model rejects.
   ContactLaw(const ContactParams& p, const contact::ModelNames& names);
+  // One set of sub-models per material pair: pairs.table[k] for kind k (material.hpp).
+  ContactLaw(const MaterialPairs& pairs, const contact::ModelNames& names);
 
   const contact::ModelNames& names() const { return names_; }
 
@@ -24,15 +27,17 @@ class ContactLaw {
     kernel_->evaluate_pairs(pairs, p, dt, out);
   }
   // One contact evaluation: updates `s` (formation, break, springs) and returns the forces.
-  PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt) const {
-    return kernel_->evaluate_pair(jkr, k, s, dt);
+  PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
+                          std::uint32_t kind = 0) const {
+    return kernel_->evaluate_pair(jkr, k, s, dt, kind);
   }
   // Every particle against wall `w` (wall.hpp): the same sub-models with an infinite partner.
   void evaluate_wall(const Wall& w, WallContacts& wc, const Particles& p, double dt, std::vector<PairForce>& out) const {
     kernel_->evaluate_wall(w, wc, p, dt, out);
   }
-  PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s, double dt) const {
-    return kernel_->evaluate_wall_contact(jkr, k, s, dt);
+  PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s, double dt,
+                                  std::uint32_t kind = 0) const {
+    return kernel_->evaluate_wall_contact(jkr, k, s, dt, kind);
   }
 
  private:

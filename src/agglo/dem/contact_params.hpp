@@ -22,12 +22,14 @@ struct ContactParams {
   double rolling_angle = 0.01;     // critical rolling angle theta_crit [rad]
   BreakRule break_rule = BreakRule::marshall;
   std::map<std::string, double, std::less<>> declared;  // coefficients sub-models declare, by key
+  // > 0: E* and G* of a pair of two different materials (material.hpp), used by estar() and gstar().
+  double pair_estar = 0.0, pair_gstar = 0.0;
 
   // The value of a declared coefficient: as read from the case, else its default.
   double value(const contact::Coefficient& c) const;
 
-  double estar() const;  // like materials: E / (2 (1 - nu^2))
-  double gstar() const;  // like materials: G / (2 (2 - nu)), G = E / (2 (1 + nu))
+  double estar() const;  // like materials: E / (2 (1 - nu^2)); else pair_estar
+  double gstar() const;  // like materials: G / (2 (2 - nu)), G = E / (2 (1 + nu)); else pair_gstar
 };
 
 }  // namespace agglo::dem

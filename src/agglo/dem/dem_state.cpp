@@ -20,13 +20,16 @@ DemState DemSystem::state() const {
 
 void DemSystem::restore(const DemState& s) {
   p_ = s.particles;
+  p_.mat.resize(p_.size(), 0);
   nl_.restore(s.neighbors, p_.size());
+  for (auto& pr : nl_.pairs()) pr.kind = mats_.kind(p_.mat[pr.i], p_.mat[pr.j]);
   dt_ = s.dt;
   skin_ = s.skin;
   time_ = s.time;
   step_ = s.step;
   forces_ready_ = s.forces_ready;
   walls_ = s.walls;
+  for (auto& wc : walls_) wc.kind.clear();  // recomputed by attach() from the particles' materials
   decay_.clear();
   lag_.clear();
   attach();

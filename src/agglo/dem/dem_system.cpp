@@ -9,16 +9,17 @@
 
 namespace agglo::dem {
 
-double reference_period(const Particles& p, const ContactParams& c) {
+namespace {
+
+std::uint32_t material_id(const Particles& p, std::size_t q) { return q < p.mat.size() ? p.mat[q] : 0; }
+
+// Smallest period of the pairs among the particles `idx` (material pairs of `mats`).
+double pair_period(const Particles& p, const std::vector<std::size_t>& idx, const MaterialPairs& mats) {
   double best = 1e300;
-  // The smallest period belongs to the lightest, smallest particles; check the two smallest radii.
-  std::vector<std::size_t> idx(p.size());
-  for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
-  std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return p.m[a] < p.m[b]; });
-  std::size_t lim = std::min<std::size_t>(idx.size(), 3);
-  for (std::size_t a = 0; a < lim; ++a)
-    for (std::size_t b = a; b < lim; ++b) {
+  for (std::size_t a = 0; a < idx.size(); ++a)
+    for (std::size_t b = a; b < idx.size(); ++b) {
       auto i = idx[a], j = idx[b];
+      const ContactParams& c = mats.at(material_id(p, i), material_id(p, j));
       double R = p.r[i] * p.r[j] / (p.r[i] + p.r[j]);
       auto jkr = JkrPair::make(R, c.estar(), c.surface_energy);
       double mstar = p.m[i] * p.m[j] / (p.m[i] + p.m[j]);
@@ -28,19 +29,42 @@ double reference_period(const Particles& p, const ContactParams& c) {
   return best;
 }
 
+// The three lightest particles (the smallest period belongs to the lightest, smallest particles), then
+// the lightest of each further material.
+std::vector<std::size_t> period_candidates(const Particles& p, std::size_t materials) {
+  std::vector<std::size_t> idx(p.size());
+  for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
+  std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return p.m[a] < p.m[b]; });
+  const std::size_t lim = std::min<std::size_t>(idx.size(), 3);
+  std::vector<std::size_t> out(idx.begin(), idx.begin() + lim);
+  if (materials <= 1) return out;
+  std::vector<bool> seen(materials, false);
+  for (std::size_t q : out) seen[material_id(p, q)] = true;
+  for (std::size_t q : idx)
+    if (!seen[material_id(p, q)]) {
+      seen[material_id(p, q)] = true;
+      out.push_back(q);
+    }
+  return out;
+}
+
+}  // namespace
+
+double reference_period(const Particles& p, const ContactParams& c) {
+  return pair_period(p, period_candidates(p, 1), MaterialPairs(c, {}));
+}
+
 double reference_period(const Particles& p, const DemParams& d) {
-  double best = reference_period(p, d.contact);
+  const MaterialPairs mats(d.contact, d.materials);
+  double best = pair_period(p, period_candidates(p, mats.count), mats);
   if (p.size() == 0) return best;
-  // The lightest particle has the shortest wall period (R* = r, m* = m).
-  std::size_t light = 0;
-  for (std::size_t q = 1; q < p.size(); ++q)
-    if (p.m[q] < p.m[light]) light = q;
-  for (const Wall& w : d.walls) {
-    const double estar = wall_estar(w.material, d.contact.youngs_modulus, d.contact.poisson_ratio);
-    const auto jkr = JkrPair::make(p.r[light], estar, d.contact.surface_energy);
-    const double k0 = 0.9905 * jkr.Fc / jkr.deltaC;
-    best = std::min(best, 2.0 * constants::pi * std::sqrt(p.m[light] / k0));
-  }
+  // The lightest particle of each material has the shortest wall period (R* = r, m* = m).
+  for (std::size_t light : period_candidates(p, mats.count))
+    for (const Wall& w : d.walls) {
+      const auto jkr = wall_jkr(w, mats, material_id(p, light), p.r[light]);
+      const double k0 = 0.9905 * jkr.Fc / jkr.deltaC;
+      best = std::min(best, 2.0 * constants::pi * std::sqrt(p.m[light] / k0));
+    }
   return best;
 }
 
@@ -48,17 +72,18 @@ DemSystem::DemSystem(Particles particles, DemParams params)
     : DemSystem(std::move(particles), params, params.contact.models) {}
 
 DemSystem::DemSystem(Particles particles, DemParams params, const contact::ModelNames& models)
-    : p_(std::move(particles)), params_(params), law_(params_.contact, models) {
+    : p_(std::move(particles)),
+      params_(params),
+      mats_(params_.contact, params_.materials),
+      law_(mats_, models) {
+  p_.mat.resize(p_.size(), 0);
   dt_ = params_.dt > 0.0 ? params_.dt : reference_period(p_, params_) / params_.steps_per_period;
   double rmin = p_.size() ? *std::min_element(p_.r.begin(), p_.r.end()) : 1.0;
   skin_ = params_.skin > 0.0 ? params_.skin : 0.1 * rmin;
   attach();
 }
 
-JkrPair DemSystem::wall_jkr(std::uint32_t i, const Wall& w) const {
-  const auto& c = params_.contact;
-  return JkrPair::make(p_.r[i], wall_estar(w.material, c.youngs_modulus, c.poisson_ratio), c.surface_energy);
-}
+JkrPair DemSystem::wall_jkr(std::uint32_t i, const Wall& w) const { return dem::wall_jkr(w, mats_, p_.mat[i], p_.r[i]); }
 
 void DemSystem::attach() {
   const std::size_t n = p_.size();
@@ -68,6 +93,7 @@ void DemSystem::attach() {
     wc.state.resize(n);
     for (std::size_t i = wc.jkr.size(); i < n; ++i)
       wc.jkr.push_back(wall_jkr(static_cast<std::uint32_t>(i), params_.walls[k]));
+    for (std::size_t i = wc.kind.size(); i < n; ++i) wc.kind.push_back(wall_kind(params_.walls[k], mats_, p_.mat[i]));
   }
   if (!params_.gas.enabled) return;
   for (std::size_t i = decay_.size(); i < n; ++i) {
@@ -103,14 +129,18 @@ void DemSystem::kick(std::int64_t q, double h) {
 }
 
 JkrPair DemSystem::jkr_for(std::uint32_t i, std::uint32_t j) const {
+  const ContactParams& c = mats_.at(p_.mat[i], p_.mat[j]);
   double R = p_.r[i] * p_.r[j] / (p_.r[i] + p_.r[j]);
-  return JkrPair::make(R, params_.contact.estar(), params_.contact.surface_energy);
+  return JkrPair::make(R, c.estar(), c.surface_energy);
 }
 
 void DemSystem::compute_forces() {
   const std::size_t n = p_.size();
   if (nl_.needs_rebuild(p_.x, skin_))
-    nl_.build(p_.x, p_.r, skin_, [this](std::uint32_t i, std::uint32_t j) { return jkr_for(i, j); });
+    nl_.build(p_.x, p_.r, skin_, [this](Pair& pr) {
+      pr.kind = mats_.kind(p_.mat[pr.i], p_.mat[pr.j]);
+      pr.jkr = jkr_for(pr.i, pr.j);
+    });
   law_.evaluate_pairs(nl_.pairs(), p_, dt_, pair_forces_);
   const auto& off = nl_.offsets();
   const auto& ent = nl_.entries();

@@ -11,6 +11,7 @@
 #include "agglo/dem/dem_state.hpp"
 #include "agglo/dem/external_force.hpp"
 #include "agglo/dem/gas_drag.hpp"
+#include "agglo/dem/material.hpp"
 #include "agglo/dem/neighbor_list.hpp"
 #include "agglo/dem/particles.hpp"
 #include "agglo/dem/wall.hpp"
@@ -30,7 +31,8 @@ struct DemInstability : NumericalError {
 inline constexpr double kMaxDtOverPeriod = 0.1;
 
 struct DemParams {
-  ContactParams contact;
+  ContactParams contact;    // [contact] options and the default material (id 0)
+  std::vector<Material> materials;  // named materials, ids 1, 2, ... (material.hpp)
   double dt = 0.0;          // time step [s]; <= 0: T0 / steps_per_period (see reference_period)
   double steps_per_period = 50.0;
   double skin = 0.0;        // neighbour skin [m]; <= 0: 0.1 * smallest radius
@@ -50,8 +52,9 @@ class DemSystem {
     forces_ready_ = false;
   }
   // Adds a particle (largest index); existing contacts keep their state.
-  void add_particle(const Vec3& x, double radius, double density, const Vec3& v, double charge, double kappa) {
-    p_.add(x, radius, density, v, charge, kappa);
+  void add_particle(const Vec3& x, double radius, double density, const Vec3& v, double charge, double kappa,
+                    std::uint32_t material = 0) {
+    p_.add(x, radius, density, v, charge, kappa, material);
     attach();
     forces_ready_ = false;
   }
@@ -65,6 +68,7 @@ class DemSystem {
   long steps() const { return step_; }
   const DemParams& params() const { return params_; }
   const ContactLaw& contact_law() const { return law_; }
+  const MaterialPairs& material_pairs() const { return mats_; }
   const Particles& particles() const { return p_; }
   Particles& particles() { return p_; }
   const std::vector<Pair>& pairs() const { return nl_.pairs(); }
@@ -105,6 +109,7 @@ class DemSystem {
 
   Particles p_;
   DemParams params_;
+  MaterialPairs mats_;  // pair values of the materials (before law_, which is built from them)
   ContactLaw law_;
   NeighborList nl_;
   ExternalForce* ext_ = nullptr;
@@ -119,7 +124,8 @@ class DemSystem {
 
 // Reference contact period T0 = 2 pi sqrt(m*/k0), k0 = 0.9905 F_C/delta_C, for the smallest pair.
 double reference_period(const Particles& p, const ContactParams& c);
-// The same including the sphere-wall contacts of the lightest particles (m* = m, R* = r, wall E*).
+// The same with the materials of d (pairs of the three lightest particles and of the lightest of
+// each material) and the sphere-wall contacts of the lightest particles (m* = m, R* = r, wall E*).
 double reference_period(const Particles& p, const DemParams& d);
 
 }  // namespace agglo::dem

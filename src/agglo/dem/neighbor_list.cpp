@@ -15,7 +15,7 @@ bool NeighborList::needs_rebuild(const std::vector<Vec3>& x, double skin) const 
 }
 
 void NeighborList::build(const std::vector<Vec3>& x, const std::vector<double>& r, double skin,
-                         const std::function<JkrPair(std::uint32_t, std::uint32_t)>& make_jkr) {
+                         const std::function<void(Pair&)>& init_pair) {
   const std::size_t n = x.size();
   ++builds_;
   x_at_build_ = x;
@@ -74,7 +74,7 @@ void NeighborList::build(const std::vector<Vec3>& x, const std::vector<double>& 
       Pair p;
       p.i = i;
       p.j = j;
-      p.jkr = make_jkr(i, j);
+      init_pair(p);
       fresh.push_back(p);
     }
   }

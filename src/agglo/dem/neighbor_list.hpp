@@ -17,7 +17,8 @@ struct NeighborState;
 struct Pair {
   std::uint32_t i = 0, j = 0;
   ContactState state;
-  JkrPair jkr;  // per-pair JKR constants (depend on the radii)
+  std::uint32_t kind = 0;  // material pair (MaterialPairs::kind of the two material ids)
+  JkrPair jkr;  // per-pair JKR constants (depend on the radii and the materials)
 };
 
 class NeighborList {
@@ -25,7 +26,7 @@ class NeighborList {
   // Rebuild from positions/radii; carries the states of pairs that stay listed.
   // Active contacts are always kept even if they moved beyond the list range.
   void build(const std::vector<Vec3>& x, const std::vector<double>& r, double skin,
-             const std::function<JkrPair(std::uint32_t, std::uint32_t)>& make_jkr);
+             const std::function<void(Pair&)>& init_pair);  // sets kind and jkr of a new pair (i, j)
   bool needs_rebuild(const std::vector<Vec3>& x, double skin) const;
 
   std::vector<Pair>& pairs() { return pairs_; }

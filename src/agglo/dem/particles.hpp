@@ -1,6 +1,7 @@
 #pragma once
 // Particle state in structure-of-arrays form. Spheres; SI units.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "agglo/core/constants.hpp"
@@ -19,11 +20,12 @@ struct Particles {
   std::vector<double> I;    // moment of inertia (2/5) m r^2 [kg m^2]
   std::vector<double> q;    // free charge [C]
   std::vector<double> kappa;  // relative permittivity [-]
+  std::vector<std::uint32_t> mat;  // material id (0: the default material; dem/material.hpp)
 
   std::size_t size() const { return x.size(); }
 
   void add(const Vec3& pos, double radius, double density, const Vec3& vel = {}, double charge = 0.0,
-           double permittivity = 1.0) {
+           double permittivity = 1.0, std::uint32_t material = 0) {
     x.push_back(pos);
     v.push_back(vel);
     w.push_back({});
@@ -35,6 +37,7 @@ struct Particles {
     I.push_back(0.4 * mass * radius * radius);
     q.push_back(charge);
     kappa.push_back(permittivity);
+    mat.push_back(material);
   }
 };
 

@@ -14,7 +14,12 @@ namespace agglo::impact {
 
 // Agglomerate only (index 0..N-1), at rest, centroid at the origin.
 dem::Particles build_agglomerate(const ImpactCase& c);
-// Appends the projectile (index N) for speed v [m/s].
+// Appends the projectile (index N; an aggregate projectile: indices N .. N + primaries - 1, all at
+// speed v along +x, its surface gap_radii r_p before the agglomerate's, its centroid offset along y).
 void add_projectile(dem::Particles& p, const ImpactCase& c, double speed);
+
+// The k-th sampled orientation of an aggregate projectile (breakup.orientations; k = 0 also for
+// projectile.orientation = "random"): a uniform random rotation drawn from projectile.seed and k.
+Rotation projectile_orientation(const ImpactCase& c, int k);
 
 }  // namespace agglo::impact

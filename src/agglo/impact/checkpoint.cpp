@@ -15,12 +15,14 @@ namespace {
 void write_particles(CheckpointWriter& w, const dem::Particles& p) {
   for (const auto* v : {&p.x, &p.v, &p.w, &p.f, &p.t}) w.pod_vector(*v);
   for (const auto* v : {&p.r, &p.m, &p.I, &p.q, &p.kappa}) w.pod_vector(*v);
+  w.pod_vector(p.mat);
 }
 
 dem::Particles read_particles(CheckpointReader& r) {
   dem::Particles p;
   for (auto* v : {&p.x, &p.v, &p.w, &p.f, &p.t}) *v = r.pod_vector<Vec3>();
   for (auto* v : {&p.r, &p.m, &p.I, &p.q, &p.kappa}) *v = r.pod_vector<double>();
+  p.mat = r.pod_vector<std::uint32_t>();
   return p;
 }
 

@@ -7,7 +7,7 @@
 namespace agglo::impact {
 
 // Layout version of the payload; a payload of another layout is refused.
-inline constexpr std::uint64_t kImpactPayloadLayout = 2;  // 2: + the launch agglomerate
+inline constexpr std::uint64_t kImpactPayloadLayout = 3;  // 2: + the launch agglomerate; 3: + material ids
 
 void write_impact_state(io::CheckpointWriter& w, const ImpactState& s);
 // ConfigError naming the file when the payload is of another layout or malformed.

@@ -6,6 +6,7 @@
 #include "agglo/electrostatics/estimate.hpp"
 #include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/experiment.hpp"
+#include "agglo/impact/structure_target.hpp"
 
 namespace agglo::impact {
 
@@ -30,8 +31,13 @@ struct Term {
   std::vector<std::string> keys;
 };
 
+// Particles of a run: the agglomerate's (built-in shapes 4, a list or structure its entries or
+// primaries) and the projectile's (1, or an aggregate projectile's primaries).
 double particles(const ImpactCase& c) {
-  return (c.agglomerate.shape == "list" ? static_cast<double>(c.agglomerate.particles.size()) : 4.0) + 1.0;
+  const auto& a = c.agglomerate;
+  const std::size_t target = a.shape == "list" ? a.particles.size() : is_structure_shape(a.shape) ? a.structure.size() : 4;
+  const std::size_t projectile = c.projectile.shape == "sphere" ? 1 : c.projectile.body.structure.size();
+  return static_cast<double>(target + projectile);
 }
 
 double approach_bound(const ImpactCase& c, double speed) {

@@ -1,6 +1,9 @@
 #include "agglo/impact/impact_case.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -39,6 +42,49 @@ double parse_material_contact(const ConfigSection& root, ImpactCase& c) {
   return real_modulus;
 }
 
+// Names a [[materials]] entry may not take: the default material and the wall's own choices.
+constexpr std::array<std::string_view, 3> kReservedMaterialNames = {"default", "same", "rigid"};
+
+// [[materials]]: the named materials, ids 1, 2, ... in the order of the entries; every value not given
+// is the [material] one.
+void parse_materials(const ConfigSection& root, ImpactCase& c) {
+  const auto& k = impact_keys().materials;
+  const auto& cp = c.dem.contact;
+  for (const auto& e : k.t.elements(root)) {
+    dem::Material m;
+    m.name = k.name.read(e);
+    if (std::find(kReservedMaterialNames.begin(), kReservedMaterialNames.end(), m.name) !=
+        kReservedMaterialNames.end())
+      k.name.reject(e, fmt::format("is reserved (default = the [material] table; same, rigid = {} choices)",
+                                   impact_keys().wall.material.dotted()));
+    for (const auto& other : c.dem.materials)
+      if (other.name == m.name) k.name.reject(e, "is declared twice: each material needs a unique name");
+    m.density = k.density.read_or(e, c.agglomerate.density);
+    m.youngs_modulus = k.youngs_modulus.read_or(e, cp.youngs_modulus);
+    m.poisson_ratio = k.poisson_ratio.read_or(e, cp.poisson_ratio);
+    m.surface_energy = k.surface_energy.read_or(e, cp.surface_energy);
+    m.restitution = k.restitution.read_or(e, cp.restitution);
+    m.friction = k.friction.read_or(e, cp.friction);
+    c.dem.materials.push_back(m);
+  }
+}
+
+std::optional<std::uint32_t> find_material(const ImpactCase& c, std::string_view name) {
+  if (name == "default") return 0;
+  for (std::size_t k = 0; k < c.dem.materials.size(); ++k)
+    if (c.dem.materials[k].name == name) return static_cast<std::uint32_t>(k + 1);
+  return std::nullopt;
+}
+
+// The material id `key` names in `section`; `fallback` when the key is absent.
+std::uint32_t read_material(const settings::Text& key, const ConfigSection& section, const ImpactCase& c,
+                            std::uint32_t fallback) {
+  if (!key.present(section)) return fallback;
+  const auto id = find_material(c, key.read(section));
+  if (!id) key.reject(section, fmt::format("unknown material; allowed: {}", material_names(c)));
+  return *id;
+}
+
 void parse_time(const ConfigSection& root, ImpactCase& c) {
   const auto& k = impact_keys().time;
   auto ts = k.t.open(root);
@@ -62,11 +108,12 @@ constexpr double kMaxListOverlap = 2.0;
 void check_list_overlaps(const ConfigSection& root, const ImpactCase& c) {
   const auto& particles = settings::electrostatics_settings().particles.t;
   const auto& lp = c.agglomerate.particles;
-  const auto& cp = c.dem.contact;
+  const dem::MaterialPairs mats(c.dem.contact, c.dem.materials);
   for (std::size_t i = 0; i < lp.size(); ++i)
     for (std::size_t k = i + 1; k < lp.size(); ++k) {
       const double ri = lp[i].radius, rk = lp[k].radius;
       const double overlap = ri + rk - norm(lp[i].position - lp[k].position);
+      const auto& cp = mats.at(c.agglomerate.material_of(i), c.agglomerate.material_of(k));
       const double delta0 = dem::JkrPair::make(ri * rk / (ri + rk), cp.estar(), cp.surface_energy).delta_equilibrium();
       if (!(overlap <= kMaxListOverlap * delta0))
         particles.fail(root, fmt::format("[[{}]] entries {} and {} overlap by {:.3g} m, more than {:g} x their JKR "
@@ -127,6 +174,56 @@ AgglomerateSpec parse_agglomerate(const ConfigSection& root, const std::string& 
 
 namespace {
 
+// The materials of a structure file's material column (`file`: the key of the file, in `sec`).
+void column_materials(const settings::Setting& file, const ConfigSection& sec, const ImpactCase& c,
+                      AgglomerateSpec& a) {
+  const auto& names = a.structure.material;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const auto id = find_material(c, names[k]);
+    if (!id)
+      file.reject(sec, fmt::format("primary {} (data row {}): unknown material \"{}\" in the material column; "
+                                   "allowed: {}",
+                                   k, k + 1, names[k], material_names(c)));
+    a.materials.push_back(*id);
+  }
+}
+
+// An aggregate projectile (projectile.shape other than "sphere"): its structure, orientation and materials.
+void parse_projectile_body(const ConfigSection& pj, const std::string& case_file, ImpactCase& c) {
+  const auto& kp = impact_keys().projectile;
+  auto& p = c.projectile;
+  if (kp.shape.present(pj)) p.shape = kp.shape.read(pj);
+  p.body.shape = p.shape;
+  p.body.radius = p.radius;
+  p.body.permittivity = p.permittivity;
+  p.body.material = p.material;
+  parse_structure(pj, case_file, p.body, {kp.shape, kp.builder});  // refuses the builder keys with a sphere
+  const bool aggregate = p.shape != "sphere";
+  if (!aggregate && kp.orientation.present(pj))
+    kp.orientation.reject(pj, fmt::format("applies to an aggregate projectile ({} other than \"sphere\")", kp.shape.dotted()));
+  if (!aggregate) return;
+  if (p.charge != 0.0)
+    kp.charge.reject(pj, fmt::format("applies to a sphere projectile; an aggregate projectile takes the charge column of "
+                                     "{} = \"file\"",
+                                     kp.shape.dotted()));
+  column_materials(kp.builder.file, pj, c, p.body);
+  if (kp.orientation.present(pj) && kp.orientation.read(pj) == "random") p.rotation = projectile_orientation(c, 0);
+}
+
+// The materials of the agglomerate's primaries: agglomerate.material, particles.material of each
+// [[particles]] entry, the material column of a structure file.
+void parse_body_materials(const ConfigSection& root, ImpactCase& c) {
+  const auto& ka = impact_keys().agglomerate;
+  auto& a = c.agglomerate;
+  auto ag = ka.t.open(root);
+  a.material = read_material(ka.material, ag, c, 0);
+  if (a.shape == "list") {
+    const auto& kl = settings::electrostatics_settings().particles;
+    for (const auto& e : kl.t.elements(root)) a.materials.push_back(read_material(kl.material, e, c, a.material));
+  }
+  column_materials(ka.file, ag, c, a);
+}
+
 // [agglomerate], [[particles]] (shape = "list") and [projectile].
 void parse_bodies(const ConfigSection& root, const std::string& case_file, ImpactCase& c) {
   const double density = c.agglomerate.density;  // [material]
@@ -143,6 +240,9 @@ void parse_bodies(const ConfigSection& root, const std::string& case_file, Impac
   p.radius = kp.radius.read_or(pj, a.radius);
   p.charge = kp.charge.read(pj);
   p.permittivity = kp.permittivity.read(pj);
+  parse_body_materials(root, c);
+  p.material = read_material(kp.material, pj, c, c.agglomerate.material);
+  parse_projectile_body(pj, case_file, c);
 }
 
 // [wall]: read only when present (cases without it resolve as before); the wall goes to c.dem.walls.
@@ -156,7 +256,13 @@ void parse_wall(const ConfigSection& root, ImpactCase& c) {
   const Vec3 n = kw.normal.read(ws);
   if (!(norm(n) > 0.0)) kw.normal.reject(ws, "must not be the zero vector");
   w.normal = n / norm(n);
-  w.material = kw.material.read(ws) == "rigid" ? dem::WallMaterial::rigid : dem::WallMaterial::same;
+  const std::string wm = kw.material.read(ws);
+  w.material = wm == "rigid" ? dem::WallMaterial::rigid : wm == "same" ? dem::WallMaterial::same : dem::WallMaterial::named;
+  if (w.material == dem::WallMaterial::named) {
+    const auto id = find_material(c, wm);
+    if (!id) kw.material.reject(ws, fmt::format("unknown material; allowed: \"same\", \"rigid\", {}", material_names(c)));
+    w.material_id = *id;
+  }
   const bool impact = kw.impact.read(ws);
   const bool grounded = kw.grounded.read(ws);
   if (!on) return;
@@ -195,12 +301,11 @@ void check_walls(const ConfigSection& root, const ImpactCase& c) {
   dem::Particles p = build_agglomerate(c);
   if (!c.wall_impact) add_projectile(p, c, c.projectile.speed);
   const auto& kw = impact_keys().wall;
-  const auto& cp = c.dem.contact;
+  const dem::MaterialPairs mats(c.dem.contact, c.dem.materials);
   const std::size_t n_agg = c.wall_impact ? p.size() : p.size() - 1;
   for (const auto& w : c.dem.walls)
     for (std::size_t q = 0; q < p.size(); ++q) {
-      const double estar = dem::wall_estar(w.material, cp.youngs_modulus, cp.poisson_ratio);
-      const double delta0 = dem::JkrPair::make(p.r[q], estar, cp.surface_energy).delta_equilibrium();
+      const double delta0 = dem::wall_jkr(w, mats, p.mat[q], p.r[q]).delta_equilibrium();
       const double overlap = p.r[q] - w.height(p.x[q]);
       if (!(overlap <= kMaxListOverlap * delta0))
         kw.position.reject(kw.t.open(root),
@@ -234,6 +339,7 @@ void parse_searches(const ConfigSection& root, ImpactCase& c) {
                                         "nothing physical and approaches the spacing of doubles)",
                                         kMinRelativeTolerance, kv.v_max.dotted(), kMinRelativeTolerance * c.vcrit.v_max));
   c.vcrit.points_per_round = static_cast<int>(kv.points_per_round.read(vc));
+  if (kv.criterion.present(vc)) c.vcrit.sticking = kv.criterion.read(vc) == "sticking";
 
   const auto& kb = impact_keys().breakup;
   auto bu = kb.t.open(root);
@@ -300,11 +406,22 @@ void check_time_step(const ConfigSection& root, const ImpactCase& c) {
 
 }  // namespace
 
+double material_density(const ImpactCase& c, std::uint32_t id) {
+  return id == 0 ? c.agglomerate.density : c.dem.materials[id - 1].density;
+}
+
+std::string material_names(const ImpactCase& c) {
+  std::string out = "\"default\"";
+  for (const auto& m : c.dem.materials) out += fmt::format(", \"{}\"", m.name);
+  return out;
+}
+
 ImpactCase parse_impact_case(Config& cfg) {
   ImpactCase c;
   auto root = cfg.root();
   c.name = impact_keys().top.name.read(root);
   const double real_modulus = parse_material_contact(root, c);
+  parse_materials(root, c);
   parse_time(root, c);
   parse_wall(root, c);
   parse_gas(root, c);

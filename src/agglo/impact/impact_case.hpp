@@ -2,11 +2,13 @@
 // The agglomerate-collision experiment of Ruan & Li (2022), docs/model.md §A.3: a particle hits a small
 // agglomerate at speed v_in; break-up is classified at the end. This header holds the validated
 // case description (parsed from TOML by parse_impact_case; every key listed in docs/config.md).
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "agglo/core/config.hpp"
+#include "agglo/core/rotation.hpp"
 #include "agglo/core/settings_impact.hpp"
 #include "agglo/core/vec3.hpp"
 #include "agglo/impact/electrostatic_coupling.hpp"
@@ -41,6 +43,11 @@ struct AgglomerateSpec {
   std::string file;                                                                      // resolved path
   long long seed = impact_keys().agglomerate.seed.def();
   structure::Aggregate structure;
+  // Materials (dem/material.hpp): `material` of every primary (agglomerate.material), or per primary
+  // of the list and file shapes (particles.material, the file's material column); empty: all `material`.
+  std::uint32_t material = 0;
+  std::vector<std::uint32_t> materials;
+  std::uint32_t material_of(std::size_t k) const { return k < materials.size() ? materials[k] : material; }
 };
 
 struct ProjectileSpec {
@@ -50,6 +57,13 @@ struct ProjectileSpec {
   double radius = impact_keys().agglomerate.radius.def();             // [m]; default: the agglomerate radius
   double charge = impact_keys().projectile.charge.def();              // [C]
   double permittivity = impact_keys().projectile.permittivity.def();  // kappa_p
+  std::uint32_t material = 0;                                         // material id (dem/material.hpp)
+  // An aggregate projectile (projectile.shape fractal | bpca | bcca | file; "sphere": the sphere above):
+  // the builder's request and structure in `body` (radius = the primary radius a_g above, materials),
+  // turned about its centroid by `rotation` (projectile.orientation = "random": drawn from the seed).
+  std::string shape = "sphere";
+  AgglomerateSpec body;
+  Rotation rotation;
 };
 
 struct TimeSpec {
@@ -75,6 +89,7 @@ struct VcritSpec {
   double tolerance = impact_keys().vcrit.tolerance.def();                       // bisection tolerance [m/s]
   // Speeds tried per bisection round: fixed by configuration so v_crit never depends on the core count.
   int points_per_round = static_cast<int>(impact_keys().vcrit.points_per_round.def());
+  bool sticking = false;  // vcrit.criterion = "sticking" (vcrit.hpp); false: "breakup"
 };
 
 // Break-up probability (agglo breakup): at each speed, `samples` runs whose projectile offset is
@@ -110,5 +125,10 @@ AgglomerateSpec parse_agglomerate(const ConfigSection& root, const std::string& 
 
 // Reads every section; throws ConfigError naming file, key, value and the allowed range.
 ImpactCase parse_impact_case(Config& cfg);
+
+// Density of material id `id` [kg/m^3]: 0 = [material], k >= 1 = c.dem.materials[k - 1].
+double material_density(const ImpactCase& c, std::uint32_t id);
+// The names a material key accepts, "default" first, quoted and comma-separated (messages).
+std::string material_names(const ImpactCase& c);
 
 }  // namespace agglo::impact

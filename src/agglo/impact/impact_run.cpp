@@ -80,7 +80,8 @@ ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double spe
   if (c.wall_impact) return;
   dem::Particles tmp = sys_.particles();
   add_projectile(tmp, c, speed);
-  sys_.add_particle(tmp.x.back(), tmp.r.back(), c.agglomerate.density, tmp.v.back(), tmp.q.back(), tmp.kappa.back());
+  for (std::size_t q = n_agg_; q < tmp.size(); ++q)
+    sys_.add_particle(tmp.x[q], tmp.r[q], material_density(c, tmp.mat[q]), tmp.v[q], tmp.q[q], tmp.kappa[q], tmp.mat[q]);
 }
 
 ImpactRun::~ImpactRun() = default;
@@ -280,8 +281,8 @@ void ImpactRun::check_energy() const {
 
 bool ImpactRun::projectile_touches() const {
   if (c_.wall_impact) return sys_.wall_contacts() > 0;
-  for (const auto& pr : sys_.pairs())
-    if (pr.state.active && (pr.i == n_agg_ || pr.j == n_agg_)) return true;
+  for (const auto& pr : sys_.pairs())  // a contact between the agglomerate and the projectile's particles
+    if (pr.state.active && (pr.i < n_agg_) != (pr.j < n_agg_)) return true;
   return false;
 }
 

@@ -57,7 +57,7 @@ class ImpactRun {
   const ImpactCase& c_;
   double speed_;  // launch speed of the projectile [m/s]
   dem::DemSystem sys_;
-  std::size_t n_agg_;  // the projectile is particle n_agg_
+  std::size_t n_agg_;  // the projectile is particle n_agg_ (an aggregate projectile: n_agg_ and above)
   Recorder* rec_;
   ProgressFn progress_;
   std::unique_ptr<dem::ExternalForce> es_;

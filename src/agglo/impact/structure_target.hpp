@@ -21,11 +21,21 @@ namespace agglo::impact {
 
 bool is_structure_shape(std::string_view shape);  // fractal, bpca, bcca, file
 
+// The keys that choose and build a structure: [agglomerate]'s or [projectile]'s.
+struct StructureKeys {
+  const settings::Setting& shape;
+  const settings::BuilderKeys& builder;
+};
+
 // Reads the keys of the shape from [agglomerate], builds or reads the structure
 // into a.structure and checks it. `case_file`: relative agglomerate.file paths start from its folder.
 void parse_structure(const ConfigSection& ag, const std::string& case_file, AgglomerateSpec& a);
+// The same from the section `sec` with `keys` (an aggregate projectile: [projectile]).
+void parse_structure(const ConfigSection& sec, const std::string& case_file, AgglomerateSpec& a,
+                     const StructureKeys& keys);
 
-// Appends the structure's primaries to p, scaled to the JKR equilibrium overlap (above).
-void place_structure(const AgglomerateSpec& a, const dem::ContactParams& contact, dem::Particles& p);
+// Appends the structure's primaries to p, scaled to the JKR equilibrium overlap (above; delta0 of the
+// material of a's first primary), with the materials and densities of c.
+void place_structure(const AgglomerateSpec& a, const ImpactCase& c, dem::Particles& p);
 
 }  // namespace agglo::impact

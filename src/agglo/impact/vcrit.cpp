@@ -17,27 +17,34 @@ std::vector<double> scan_grid(const VcritSpec& spec) {
   return scan;
 }
 
-// Sets the bracket from the highest non-breaking speed; true when it is narrow enough.
+// The event the bisection brackets: a break-up, or (sticking) an impact that does not stay. A run
+// without contact counts as no event (and is warned about).
+bool event(const VcritSpec& spec, const ImpactOutcome& r) {
+  return spec.sticking ? r.contact && !stays(r) : r.broken;
+}
+
+// Sets the bracket from the highest speed without the event; true when it is narrow enough.
 bool update_bracket(const VcritSpec& spec, VcritResult& res) {
   const ImpactOutcome* last_nb = nullptr;
   for (const auto& r : res.runs)
-    if (!r.broken) last_nb = &r;
+    if (!event(spec, r)) last_nb = &r;
   if (!last_nb)
-    throw NumericalError(fmt::format("vcrit: every speed from {} m/s breaks the agglomerate; lower the scan's "
-                                     "lowest speed", spec.v_min));
+    throw NumericalError(fmt::format("vcrit: every speed from {} m/s {}; lower the scan's lowest speed", spec.v_min,
+                                     spec.sticking ? "rebounds" : "breaks the agglomerate"));
   auto it = std::find_if(res.runs.begin(), res.runs.end(), [&](const auto& r) { return r.speed > last_nb->speed; });
   if (it == res.runs.end())
-    throw NumericalError(fmt::format("vcrit: no break-up up to {} m/s; raise the scan's highest speed", spec.v_max));
+    throw NumericalError(fmt::format("vcrit: {} up to {} m/s; raise the scan's highest speed",
+                                     spec.sticking ? "every speed stays" : "no break-up", spec.v_max));
   res.lo = last_nb->speed;
   res.hi = it->speed;
   return res.hi - res.lo <= spec.tolerance;
 }
 
-void add_warnings(VcritResult& res) {
+void add_warnings(const VcritSpec& spec, VcritResult& res) {
   for (const auto& r : res.runs) {
-    if (r.broken && r.speed < res.lo)
-      res.warnings.push_back(fmt::format("non-monotonic: v = {:.6g} m/s breaks but v = {:.6g} m/s does not",
-                                         r.speed, res.lo));
+    if (event(spec, r) && r.speed < res.lo)
+      res.warnings.push_back(fmt::format("non-monotonic: v = {:.6g} m/s {} but v = {:.6g} m/s does not", r.speed,
+                                         spec.sticking ? "rebounds" : "breaks", res.lo));
     if (r.undecided)
       res.warnings.push_back(fmt::format("undecided outcome at v = {:.6g} m/s (counted as not broken)", r.speed));
     if (!r.contact) res.warnings.push_back(fmt::format("no contact at v = {:.6g} m/s", r.speed));
@@ -45,6 +52,23 @@ void add_warnings(VcritResult& res) {
 }
 
 }  // namespace
+
+bool stays(const ImpactOutcome& o) {
+  if (!o.contact) return false;
+  if (o.breakage.wall != WallOutcome::none) return o.breakage.wall == WallOutcome::stuck;
+  // The agglomerate's primaries are the first n_agg particles, n_agg = the primaries of all fragments.
+  int n_agg = 0;
+  for (int s : o.breakage.fragment_sizes) n_agg += s;
+  int last = -1;
+  const std::vector<int>* with_last = nullptr;
+  for (const auto& g : o.components)
+    for (int k : g)
+      if (k > last) {
+        last = k;
+        with_last = &g;
+      }
+  return with_last && last >= n_agg && with_last->front() < n_agg;  // components are sorted
+}
 
 VcritResult find_vcrit(const VcritSpec& spec, const SpeedBatch& run_batch, const std::function<void(double)>& progress) {
   VcritResult res;
@@ -72,8 +96,9 @@ VcritResult find_vcrit(const VcritSpec& spec, const SpeedBatch& run_batch, const
     ++res.rounds;
     if (progress) progress(std::min(0.99, res.rounds / std::max(1.0, expected_rounds)));
   }
-  res.v_crit = res.hi;
-  add_warnings(res);
+  res.sticking = spec.sticking;
+  res.v_crit = spec.sticking ? res.lo : res.hi;
+  add_warnings(spec, res);
   return res;
 }
 

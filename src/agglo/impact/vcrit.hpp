@@ -5,6 +5,9 @@
 // highest non-breaking speed, until the bracket is narrower than the tolerance. The speeds tried
 // depend only on the configuration and the outcomes, never on the number of cores. Non-monotonic
 // outcomes (a break below a non-break) are reported, not hidden.
+// vcrit.criterion = "sticking" bisects the same way on "does not stay" instead of "breaks" (stays():
+// the agglomerate on the wall with wall.impact, else the projectile on the target) and reports the
+// largest speed that stays, v_crit = the bracket's lower end.
 #include <functional>
 #include <string>
 #include <vector>
@@ -14,7 +17,9 @@
 namespace agglo::impact {
 
 struct VcritResult {
-  double v_crit = 0.0;           // = bracket hi: lowest speed with all higher tested speeds breaking
+  bool sticking = false;         // the criterion (VcritSpec::sticking)
+  double v_crit = 0.0;           // breakup: bracket hi, lowest speed with all higher tested speeds breaking;
+                                 // sticking: bracket lo, highest speed that stays below all rebounds
   double lo = 0.0, hi = 0.0;     // bracket [m/s]
   std::vector<ImpactOutcome> runs;  // every run, sorted by speed
   std::vector<std::string> warnings;   // non-monotonic or undecided outcomes
@@ -24,6 +29,11 @@ struct VcritResult {
 // Runs a batch of independent impacts at the given speeds and returns their outcomes in the same
 // order (e.g. run::ensemble_impacts: in parallel, journaled).
 using SpeedBatch = std::function<std::vector<ImpactOutcome>(const std::vector<double>& speeds)>;
+
+// The impact stayed: with a wall impact no fragment rebounded (Breakage::wall, breakage.hpp); else the
+// projectile (its particle of highest index) is in contact with the agglomerate (some of its first
+// n_agg particles, n_agg = the primaries of all fragments) at the end. False without contact.
+bool stays(const ImpactOutcome& o);
 
 VcritResult find_vcrit(const VcritSpec& spec, const SpeedBatch& run_batch,
                        const std::function<void(double)>& progress = {});

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
+#include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/orientation_set.hpp"
 #include "agglo/writers/impact.hpp"
 
@@ -25,7 +26,10 @@ impact::ImpactBatch impact_batch(const impact::ImpactCase& c, const dem::Particl
                         if (b.orientations <= 1)
                           return writers::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &relaxed));
                         // Rigid rotation of the relaxed agglomerate: contact overlaps and pair
-                        // distances are unchanged, so it is still relaxed (no external field).
+                        // distances are unchanged, so it is still relaxed (no external field). An
+                        // aggregate projectile takes a random orientation of its own for each.
+                        if (ck.projectile.shape != "sphere")
+                          ck.projectile.rotation = impact::projectile_orientation(ck, b.orientation);
                         dem::Particles turned = relaxed;
                         impact::rotate_about_centroid(
                             turned, impact::stratified_orientation(b.orientation, b.orientations).rotation);

@@ -22,7 +22,7 @@ std::vector<std::string> split_csv_line(const std::string& line) {
   return out;
 }
 
-constexpr std::array<const char*, 6> kColumns = {"x", "y", "z", "radius", "charge", "permittivity"};
+constexpr std::array<const char*, 7> kColumns = {"x", "y", "z", "radius", "charge", "permittivity", "material"};
 
 struct CsvContext {
   const std::string& source;
@@ -32,8 +32,8 @@ struct CsvContext {
   }
 };
 
-std::array<int, 6> column_positions(const std::vector<std::string>& header, const CsvContext& ctx, std::size_t line) {
-  std::array<int, 6> pos;
+std::array<int, 7> column_positions(const std::vector<std::string>& header, const CsvContext& ctx, std::size_t line) {
+  std::array<int, 7> pos;
   pos.fill(-1);
   for (std::size_t c = 0; c < header.size(); ++c)
     for (std::size_t k = 0; k < kColumns.size(); ++k)
@@ -41,7 +41,7 @@ std::array<int, 6> column_positions(const std::vector<std::string>& header, cons
   for (std::size_t k = 0; k < 4; ++k)
     if (pos[k] < 0)
       ctx.fail(line, fmt::format("the header has no column '{}' (needed: x, y, z, radius; optional: charge, "
-                                 "permittivity)",
+                                 "permittivity, material)",
                                  kColumns[k]));
   return pos;
 }
@@ -56,12 +56,19 @@ double number_at(const std::vector<std::string>& cells, int c, const CsvContext&
   return v;
 }
 
+// A text cell (a material name): not empty.
+std::string text_at(const std::vector<std::string>& cells, int c, const CsvContext& ctx, std::size_t line) {
+  if (c >= static_cast<int>(cells.size()) || cells[static_cast<std::size_t>(c)].empty())
+    ctx.fail(line, fmt::format("has no value in column {} (material)", c + 1));
+  return cells[static_cast<std::size_t>(c)];
+}
+
 }  // namespace
 
 Aggregate read_aggregate_csv(std::istream& in, const std::string& source, const std::string& key) {
   const CsvContext ctx{source, key};
   Aggregate a;
-  std::array<int, 6> pos{};
+  std::array<int, 7> pos{};
   bool have_header = false;
   std::string line;
   for (std::size_t n = 1; std::getline(in, line); ++n) {
@@ -78,6 +85,7 @@ Aggregate read_aggregate_csv(std::istream& in, const std::string& source, const 
           number_at(cells, pos[3], ctx, n));
     if (pos[4] >= 0) a.charge.push_back(number_at(cells, pos[4], ctx, n));
     if (pos[5] >= 0) a.permittivity.push_back(number_at(cells, pos[5], ctx, n));
+    if (pos[6] >= 0) a.material.push_back(text_at(cells, pos[6], ctx, n));
   }
   if (!have_header) ctx.fail(1, "empty file: expected a header line x,y,z,radius");
   return a;

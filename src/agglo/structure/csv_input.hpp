@@ -1,6 +1,7 @@
 #pragma once
 // Aggregate from CSV text (docs/model.md §S.5): a header line naming the columns, then one primary per
-// line. Required columns x, y, z, radius [m]; optional charge [C] and permittivity (relative); other
+// line. Required columns x, y, z, radius [m]; optional charge [C], permittivity (relative) and material
+// (a name, resolved by the impact case against its [[materials]]); other
 // columns (e.g. coordination, as agglo aggregate writes it) are ignored. Lines starting with '#' and
 // blank lines are skipped. The structure is then checked by validate_structure (validate.hpp).
 #include <istream>

@@ -152,10 +152,14 @@ ImpactOutcome outcome_from_json(const nlohmann::json& j) {
 
 nlohmann::json vcrit_json(const VcritResult& r) {
   nlohmann::json runs = nlohmann::json::array();
-  for (const auto& o : r.runs)
+  for (const auto& o : r.runs) {
     runs.push_back({{"v", o.speed}, {"broken", o.broken}, {"undecided", o.undecided}, {"contact", o.contact}});
-  return {{"v_crit", r.v_crit}, {"bracket", {r.lo, r.hi}}, {"rounds", r.rounds}, {"runs", runs},
-          {"warnings", r.warnings}};
+    if (r.sticking) runs.back()["stuck"] = impact::stays(o);
+  }
+  nlohmann::json j = {{"v_crit", r.v_crit}, {"bracket", {r.lo, r.hi}}, {"rounds", r.rounds}, {"runs", runs},
+                      {"warnings", r.warnings}};
+  if (r.sticking) j["criterion"] = "sticking";  // (cases without vcrit.criterion keep their vcrit.json)
+  return j;
 }
 
 namespace {

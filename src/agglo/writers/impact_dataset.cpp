@@ -137,7 +137,14 @@ Dataset vcrit_dataset(const impact::VcritResult& r) {
   d.add_ints("contact", {"run"}, "1", "the projectile touched the agglomerate",
              ints_of(r.runs, [](const O& o) { return o.contact; }))
       .attributes = kFlag;
-  d.add("v_crit", {}, "m s-1", "critical break-up speed (upper end of the bracket)", {r.v_crit});
+  if (r.sticking) {  // vcrit.criterion = "sticking" (cases without it keep their results.nc)
+    d.add_ints("stuck", {"run"}, "1", "the impact stayed (on the wall or the target)",
+               ints_of(r.runs, [](const O& o) { return impact::stays(o); }))
+        .attributes = kFlag;
+    d.add("v_crit", {}, "m s-1", "sticking speed: largest speed that stays (lower end of the bracket)", {r.v_crit});
+  } else {
+    d.add("v_crit", {}, "m s-1", "critical break-up speed (upper end of the bracket)", {r.v_crit});
+  }
   d.add("bracket_lo", {}, "m s-1", "lower end of the v_crit bracket", {r.lo});
   d.add("bracket_hi", {}, "m s-1", "upper end of the v_crit bracket", {r.hi});
   d.add_ints("rounds", {}, "1", "bisection rounds", {r.rounds});

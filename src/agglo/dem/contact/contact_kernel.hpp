@@ -1,6 +1,7 @@
 #pragma once
 // The selected contact law as the DEM engine calls it: one virtual call per step evaluates every
 // listed pair (the loop itself is compiled for the chosen sub-models, see pair_kernel.hpp).
+#include <cstdint>
 #include <vector>
 
 #include "agglo/dem/contact/pair_state.hpp"
@@ -17,15 +18,15 @@ class ContactKernel {
   // Forces of every pair into out[k] (resized to pairs.size()); updates the pair states.
   virtual void evaluate_pairs(std::vector<Pair>& pairs, const Particles& p, double dt,
                               std::vector<PairForce>& out) const = 0;
-  // One pair (tests and diagnostics; a virtual call per pair).
-  virtual PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
-                                  double dt) const = 0;
+  // One pair of material pair `kind` (tests and diagnostics; a virtual call per pair).
+  virtual PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
+                                  std::uint32_t kind) const = 0;
   // Forces of every particle against wall `w` into out[k] (resized to p.size()); updates wc.state.
   virtual void evaluate_wall(const Wall& w, WallContacts& wc, const Particles& p, double dt,
                              std::vector<PairForce>& out) const = 0;
-  // One sphere against a wall (tests).
-  virtual PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s,
-                                          double dt) const = 0;
+  // One sphere against a wall, material pair `kind` (tests).
+  virtual PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s, double dt,
+                                          std::uint32_t kind) const = 0;
 };
 
 }  // namespace agglo::dem::contact

@@ -9,8 +9,11 @@
 //      models declaring `inactive` are skipped), finally the lever torques l_i n x F_t, l_j n x F_t.
 // A sphere against a wall (wall.hpp) runs steps 2-4 unchanged with n = -wall normal, m* = m, l_i = h
 // (the centre height), l_j = 0 and the wall at rest: the same sub-models, R* = r in its JkrPair.
-// The interface each sub-model implements is the call made on it below.
+// The kernel holds one set of sub-models per ordered pair of material ids (dem/material.hpp) and
+// evaluates pair k with the set Pair::kind names (a wall contact: WallContacts::kind); with a single
+// material there is one set. The interface each sub-model implements is the call made on it below.
 #include <cstdint>
+#include <vector>
 
 #include "agglo/dem/contact/contact_kernel.hpp"
 #include "agglo/dem/contact/contact_point.hpp"
@@ -30,8 +33,11 @@ class PairKernel final : public ContactKernel {
                 Twisting::category == Category::twisting);
 
  public:
-  explicit PairKernel(const ContactParams& p)
-      : normal_(p), damping_(p), tangential_(p), rolling_(p), twisting_(p) {}
+  // One set of sub-models per pair of material ids (material.hpp): table[k] for Pair::kind == k.
+  explicit PairKernel(const std::vector<ContactParams>& table) {
+    models_.reserve(table.size());
+    for (const auto& p : table) models_.emplace_back(p);
+  }
 
   void evaluate_pairs(std::vector<Pair>& pairs, const Particles& p, double dt,
                       std::vector<PairForce>& out) const override {
@@ -40,13 +46,13 @@ class PairKernel final : public ContactKernel {
       Pair& pr = pairs[k];
       const PairKinematics kin{p.x[pr.i], p.x[pr.j], p.v[pr.i], p.v[pr.j], p.w[pr.i], p.w[pr.j],
                                p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
-      out[k] = force(pr.jkr, kin, pr.state, dt);
+      out[k] = models_[pr.kind].force(pr.jkr, kin, pr.state, dt);
     });
   }
 
-  PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
-                          double dt) const override {
-    return force(jkr, k, s, dt);
+  PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
+                          std::uint32_t kind) const override {
+    return models_[kind].force(jkr, k, s, dt);
   }
 
   void evaluate_wall(const Wall& w, WallContacts& wc, const Particles& p, double dt,
@@ -54,110 +60,117 @@ class PairKernel final : public ContactKernel {
     out.resize(p.size());
     parallel_for(static_cast<std::int64_t>(p.size()), [&](std::int64_t k) {
       const WallKinematics kin{w.height(p.x[k]), -w.normal, p.v[k], p.w[k], p.r[k], p.m[k]};
-      out[k] = wall_force(wc.jkr[k], kin, wc.state[k], dt);
+      out[k] = models_[wc.kind[k]].wall_force(wc.jkr[k], kin, wc.state[k], dt);
     });
   }
 
-  PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s,
-                                  double dt) const override {
-    return wall_force(jkr, k, s, dt);
+  PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s, double dt,
+                                  std::uint32_t kind) const override {
+    return models_[kind].wall_force(jkr, k, s, dt);
   }
 
  private:
-  // Step 1: true while the contact is (or becomes) active.
-  bool engaged(const JkrPair& jkr, double delta, ContactState& s) const {
-    s.delta = delta;
-    if (!s.active) {
-      if (delta < 0.0) return false;
-      s = ContactState{};
-      s.active = true;
+  // The sub-models of one pair of materials and the contact they compute.
+  struct Models {
+    explicit Models(const ContactParams& p) : normal_(p), damping_(p), tangential_(p), rolling_(p), twisting_(p) {}
+
+    // Step 1: true while the contact is (or becomes) active.
+    bool engaged(const JkrPair& jkr, double delta, ContactState& s) const {
       s.delta = delta;
-    } else if (delta < -normal_.break_separation(jkr)) {
-      s = ContactState{};
-      s.delta = delta;
-      return false;
+      if (!s.active) {
+        if (delta < 0.0) return false;
+        s = ContactState{};
+        s.active = true;
+        s.delta = delta;
+      } else if (delta < -normal_.break_separation(jkr)) {
+        s = ContactState{};
+        s.delta = delta;
+        return false;
+      }
+      return true;
     }
-    return true;
-  }
 
-  // flatten: the sub-model calls are inlined into one body (as fast as a hand-written law; without it
-  // GCC keeps them out of line and a step costs ~25 % more).
-  [[gnu::flatten]] PairForce force(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt) const {
-    const Vec3 d = k.xj - k.xi;
-    const double dist = norm(d);
-    const double delta = k.ri + k.rj - dist;
-    if (!engaged(jkr, delta, s)) return PairForce{};
-    Geometry g;
-    g.n = d / dist;  // from i to j
-    g.mstar = k.mi * k.mj / (k.mi + k.mj);
-    g.li = (dist * dist + k.ri * k.ri - k.rj * k.rj) / (2.0 * dist);
-    g.lj = dist - g.li;
-    g.vrel = k.vi - k.vj + cross(g.li * k.wi + g.lj * k.wj, g.n);
-    g.w_rel = k.wi - k.wj;
-    return respond(jkr, delta, g, s, dt);
-  }
+    // flatten: the sub-model calls are inlined into one body (as fast as a hand-written law; without it
+    // GCC keeps them out of line and a step costs ~25 % more).
+    [[gnu::flatten]] PairForce force(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt) const {
+      const Vec3 d = k.xj - k.xi;
+      const double dist = norm(d);
+      const double delta = k.ri + k.rj - dist;
+      if (!engaged(jkr, delta, s)) return PairForce{};
+      Geometry g;
+      g.n = d / dist;  // from i to j
+      g.mstar = k.mi * k.mj / (k.mi + k.mj);
+      g.li = (dist * dist + k.ri * k.ri - k.rj * k.rj) / (2.0 * dist);
+      g.lj = dist - g.li;
+      g.vrel = k.vi - k.vj + cross(g.li * k.wi + g.lj * k.wj, g.n);
+      g.w_rel = k.wi - k.wj;
+      return respond(jkr, delta, g, s, dt);
+    }
 
-  // A sphere against a wall (wall.hpp): the partner of infinite radius and mass, at rest.
-  [[gnu::flatten]] PairForce wall_force(const JkrPair& jkr, const WallKinematics& k, ContactState& s,
-                                        double dt) const {
-    const double delta = k.r - k.h;
-    if (!engaged(jkr, delta, s)) return PairForce{};
-    Geometry g;
-    g.n = k.n;
-    g.mstar = k.m;
-    g.li = k.h;
-    g.lj = 0.0;
-    g.vrel = k.v + cross(g.li * k.w, g.n);
-    g.w_rel = k.w;
-    return respond(jkr, delta, g, s, dt);
-  }
+    // A sphere against a wall (wall.hpp): the partner of infinite radius and mass, at rest.
+    [[gnu::flatten]] PairForce wall_force(const JkrPair& jkr, const WallKinematics& k, ContactState& s,
+                                          double dt) const {
+      const double delta = k.r - k.h;
+      if (!engaged(jkr, delta, s)) return PairForce{};
+      Geometry g;
+      g.n = k.n;
+      g.mstar = k.m;
+      g.li = k.h;
+      g.lj = 0.0;
+      g.vrel = k.v + cross(g.li * k.w, g.n);
+      g.w_rel = k.w;
+      return respond(jkr, delta, g, s, dt);
+    }
 
-  // Steps 2-4 of an engaged contact: normal n (from i to its partner), reduced mass, levers to the
-  // contact plane, relative velocity of i at the contact and relative angular velocity.
-  struct Geometry {
-    Vec3 n;
-    double mstar = 0.0, li = 0.0, lj = 0.0;
-    Vec3 vrel, w_rel;
+    // Steps 2-4 of an engaged contact: normal n (from i to its partner), reduced mass, levers to the
+    // contact plane, relative velocity of i at the contact and relative angular velocity.
+    struct Geometry {
+      Vec3 n;
+      double mstar = 0.0, li = 0.0, lj = 0.0;
+      Vec3 vrel, w_rel;
+    };
+
+    PairForce respond(const JkrPair& jkr, double delta, const Geometry& g, ContactState& s, double dt) const {
+      PairForce out;
+      ContactPoint c;
+      c.n = g.n;
+      s.a = normal_.contact_radius(jkr, delta, s.a);
+      c.a = s.a;
+      c.f_ne = normal_.force(jkr, c.a);
+      c.eta_n = damping_.coefficient(g.mstar, normal_.stiffness(jkr, c.a));
+      const double ddelta_dt = dot(g.vrel, c.n);
+      c.vs = g.vrel - ddelta_dt * c.n;
+      c.f_n = c.f_ne + c.eta_n * ddelta_dt;  // > 0 repulsive
+      c.w_rel = g.w_rel;
+      c.dt = dt;
+      out.f_on_i = -c.f_n * c.n;
+      const Vec3 ft = tangential_.force(c, jkr, s);
+      add_moment(twisting_, c, jkr, s, out);
+      add_moment(rolling_, c, jkr, s, out);
+      out.f_on_i += ft;
+      out.t_on_i += g.li * cross(c.n, ft);
+      out.t_on_j += g.lj * cross(c.n, ft);
+      return out;
+    }
+
+    template <class Resistance>
+    static void add_moment(const Resistance& model, const ContactPoint& c, const JkrPair& jkr, ContactState& s,
+                           PairForce& out) {
+      if constexpr (!Inactive<Resistance>) {
+        const Vec3 m = model.torque(c, jkr, s);
+        out.t_on_i += m;
+        out.t_on_j -= m;
+      }
+    }
+
+    Normal normal_;
+    Damping damping_;
+    Tangential tangential_;
+    Rolling rolling_;
+    Twisting twisting_;
   };
 
-  PairForce respond(const JkrPair& jkr, double delta, const Geometry& g, ContactState& s, double dt) const {
-    PairForce out;
-    ContactPoint c;
-    c.n = g.n;
-    s.a = normal_.contact_radius(jkr, delta, s.a);
-    c.a = s.a;
-    c.f_ne = normal_.force(jkr, c.a);
-    c.eta_n = damping_.coefficient(g.mstar, normal_.stiffness(jkr, c.a));
-    const double ddelta_dt = dot(g.vrel, c.n);
-    c.vs = g.vrel - ddelta_dt * c.n;
-    c.f_n = c.f_ne + c.eta_n * ddelta_dt;  // > 0 repulsive
-    c.w_rel = g.w_rel;
-    c.dt = dt;
-    out.f_on_i = -c.f_n * c.n;
-    const Vec3 ft = tangential_.force(c, jkr, s);
-    add_moment(twisting_, c, jkr, s, out);
-    add_moment(rolling_, c, jkr, s, out);
-    out.f_on_i += ft;
-    out.t_on_i += g.li * cross(c.n, ft);
-    out.t_on_j += g.lj * cross(c.n, ft);
-    return out;
-  }
-
-  template <class Resistance>
-  static void add_moment(const Resistance& model, const ContactPoint& c, const JkrPair& jkr, ContactState& s,
-                         PairForce& out) {
-    if constexpr (!Inactive<Resistance>) {
-      const Vec3 m = model.torque(c, jkr, s);
-      out.t_on_i += m;
-      out.t_on_j -= m;
-    }
-  }
-
-  Normal normal_;
-  Damping damping_;
-  Tangential tangential_;
-  Rolling rolling_;
-  Twisting twisting_;
+  std::vector<Models> models_;
 };
 
 }  // namespace agglo::dem::contact

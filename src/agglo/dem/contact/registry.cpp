@@ -91,7 +91,7 @@ bool add_model(Category c, const std::string& name, KernelMaker maker, Traits tr
   return true;
 }
 
-KernelPtr make_kernel(const ModelNames& chosen, const ContactParams& p) {
+KernelPtr make_kernel(const ModelNames& chosen, const std::vector<ContactParams>& p) {
   KernelMaker maker = &make_kernel_with<void>;
   std::optional<Category> owner;  // category of the model registered outside the built-in list
   {

@@ -18,12 +18,12 @@
 namespace agglo::dem::contact {
 
 using KernelPtr = std::shared_ptr<const ContactKernel>;
-using KernelMaker = KernelPtr (*)(const ModelNames&, const ContactParams&);
+using KernelMaker = KernelPtr (*)(const ModelNames&, const std::vector<ContactParams>&);
 
-// The pair loop for the named models. Throws ConfigError naming the category, the unknown name and
+// The pair loop for the named models, one set of sub-models per entry of `p` (material pairs). Throws ConfigError naming the category, the unknown name and
 // the registered ones, the conflict() of the combination, or the two non-built-in models that cannot
 // be combined.
-KernelPtr make_kernel(const ModelNames& names, const ContactParams& p);
+KernelPtr make_kernel(const ModelNames& names, const std::vector<ContactParams>& p);
 
 // What a model declares about the models it combines with (sub_model.hpp); absent members are false.
 struct Traits {
@@ -45,13 +45,13 @@ bool add_model(Category c, const std::string& name, KernelMaker maker, Traits tr
 namespace detail {
 
 template <class... Chosen>
-KernelPtr build(TypeList<Chosen...>, const ModelNames&, const ContactParams& p) {
+KernelPtr build(TypeList<Chosen...>, const ModelNames&, const std::vector<ContactParams>& p) {
   return std::make_shared<const PairKernel<Chosen...>>(p);
 }
 
 // Picks the type named for the next category from its list, then recurses (null if none matches).
 template <class... Chosen, class... Ts, class... Lists>
-KernelPtr build(TypeList<Chosen...>, const ModelNames& names, const ContactParams& p, TypeList<Ts...>,
+KernelPtr build(TypeList<Chosen...>, const ModelNames& names, const std::vector<ContactParams>& p, TypeList<Ts...>,
                 Lists... rest) {
   const std::string& want = names[static_cast<Category>(sizeof...(Chosen))];
   KernelPtr k;
@@ -74,7 +74,7 @@ constexpr auto candidates() {
 
 // Kernel maker for combinations of `Model` (void: none) with the built-in models.
 template <class Model>
-KernelPtr make_kernel_with(const ModelNames& names, const ContactParams& p) {
+KernelPtr make_kernel_with(const ModelNames& names, const std::vector<ContactParams>& p) {
   using detail::candidates;
   return detail::build(TypeList<>{}, names, p, candidates<Category::normal, Model>(),
                        candidates<Category::damping, Model>(), candidates<Category::tangential, Model>(),

@@ -50,8 +50,8 @@ class Vcrit final : public ImpactCommand {
     r.summary = {{"v_crit", res.v_crit}, {"bracket_lo", res.lo}, {"bracket_hi", res.hi}, {"rounds", res.rounds},
                  {"runs", res.runs.size()}, {"warnings", res.warnings.size()}};
     r.plot_script = "plot_vcrit.py";
-    ctx.report().info(fmt::format("{}: v_crit = {:.4f} m/s (bracket [{:.5f}, {:.5f}], {} runs)", c.name, res.v_crit,
-                                  res.lo, res.hi, res.runs.size()));
+    ctx.report().info(fmt::format("{}: v_crit = {:.4f} m/s{} (bracket [{:.5f}, {:.5f}], {} runs)", c.name, res.v_crit,
+                                  res.sticking ? " (sticking)" : "", res.lo, res.hi, res.runs.size()));
     for (const auto& w : res.warnings) ctx.report().warning(w);
     return r;
   }
