@@ -16,38 +16,24 @@ namespace {
 constexpr double kPerCm3 = 1e-6;  // 1/m^3 -> 1/cm^3
 using acoustics::AcousticObservations;
 
+// The collision counters of result.json: the keys both selections share, then the meaning each
+// selection gives to the trial, bound and subdivision counters (binned: candidates against the row
+// majorant; Nanbu: trials against the per-step bound P_n).
 nlohmann::json stats_json(const acoustics::CollisionStats& s, acoustics::Selection sel) {
-  if (sel == acoustics::Selection::binned)
-    return {{"particle_steps", s.particle_steps},
-            {"candidates", s.trials},
-            {"kernel_evals", s.kernel_evals},
-            {"collisions", s.collisions},
-            {"coalescences", {{"droplet", s.coalescences[0]}, {"dry", s.coalescences[1]}, {"wet", s.coalescences[2]}}},
-            {"rebounds", {{"droplet", s.rebounds[0]}, {"dry", s.rebounds[1]}, {"wet", s.rebounds[2]}}},
-            {"full_row_rate_computations", s.row_rate_updates},
-            {"max_beta_over_majorant", s.max_pn},
-            {"violations", s.violations},
-            {"cell_steps_subdivided", s.subcycled},
-            {"max_substeps", s.max_subcycles},
-            {"refills", s.refills},
-            {"dead_samples", s.dead},
-            {"energy_lost_J", s.energy_lost},
-            {"energy_returned_J", s.energy_returned}};
-  return {{"particle_steps", s.particle_steps},
-          {"trials", s.trials},
-          {"kernel_evals", s.kernel_evals},
-          {"collisions", s.collisions},
-          {"coalescences", {{"droplet", s.coalescences[0]}, {"dry", s.coalescences[1]}, {"wet", s.coalescences[2]}}},
-          {"rebounds", {{"droplet", s.rebounds[0]}, {"dry", s.rebounds[1]}, {"wet", s.rebounds[2]}}},
-          {"max_bound_pn", s.max_bound_pn},
-          {"subcycled_particle_steps", s.subcycled},
-          {"max_subcycles", s.max_subcycles},
-          {"max_pn_evaluated", s.max_pn},
-          {"violations", s.violations},
-          {"refills", s.refills},
-          {"dead_samples", s.dead},
-          {"energy_lost_J", s.energy_lost},
-          {"energy_returned_J", s.energy_returned}};
+  const auto by_kind = [](const auto& c) { return nlohmann::json{{"droplet", c[0]}, {"dry", c[1]}, {"wet", c[2]}}; };
+  nlohmann::json j{{"particle_steps", s.particle_steps},     {"kernel_evals", s.kernel_evals},
+                   {"collisions", s.collisions},             {"coalescences", by_kind(s.coalescences)},
+                   {"rebounds", by_kind(s.rebounds)},        {"violations", s.violations},
+                   {"refills", s.refills},                   {"dead_samples", s.dead},
+                   {"energy_lost_J", s.energy_lost},         {"energy_returned_J", s.energy_returned}};
+  const bool binned = sel == acoustics::Selection::binned;
+  j[binned ? "candidates" : "trials"] = s.trials;
+  j[binned ? "max_beta_over_majorant" : "max_pn_evaluated"] = s.max_pn;
+  j[binned ? "cell_steps_subdivided" : "subcycled_particle_steps"] = s.subcycled;
+  j[binned ? "max_substeps" : "max_subcycles"] = s.max_subcycles;
+  if (binned) j["full_row_rate_computations"] = s.row_rate_updates;
+  else j["max_bound_pn"] = s.max_bound_pn;
+  return j;
 }
 
 // psd.csv's bins: lower and upper edges and centres (geometric mean of the edges) [m].
