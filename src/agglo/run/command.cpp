@@ -34,6 +34,8 @@ Estimate Command::estimate(Config&, const RunContext&) const { return {}; }
 
 Estimate Command::lower_bound(Config&) const { return {}; }
 
+double Command::seconds_per_step(Config&) const { return 0.0; }
+
 double output_bytes(double csv_estimate, const OutputFormats& f) {
   return (f.csv ? csv_estimate : 0.0) + (f.netcdf ? csv_estimate + kNetcdfOverhead : 0.0);
 }

@@ -86,6 +86,9 @@ class Command {
   // A lower bound of estimate() from the sizes in the case alone, checked before parse() so that a
   // huge case is refused before a slow (e.g. O(N^2)) validation. None by default.
   virtual Estimate lower_bound(Config& cfg) const;
+  // Seconds of one thread per unit of the step estimate, measured on the development machine
+  // (docs/limits.md, "Time estimate"); --dry-run multiplies the steps by it. 0: not calibrated.
+  virtual double seconds_per_step(Config& cfg) const;
   // The random seed a case runs with (recorded in run.json); 0 for deterministic commands.
   virtual long long seed(const Config& cfg) const;
   // The config key of the random seed, for seed ensembles (run/seed_ensemble.hpp, `--seeds N`); null for
