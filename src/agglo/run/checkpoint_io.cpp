@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "agglo/run/budget.hpp"
+
 namespace agglo::run {
 
 CheckpointIO checkpoint_io(const Command& cmd, const Config& cfg, const OutputDir& out, const RunContext& ctx) {
@@ -22,7 +24,7 @@ CheckpointIO checkpoint_io(const Command& cmd, const Config& cfg, const OutputDi
   if (!ctx.resume) return res;
   io::CheckpointHeader found;
   if (io::has_checkpoint(out)) {
-    res.resume.emplace(io::read_checkpoint(out, header, found));
+    res.resume.emplace(io::read_checkpoint(out, header, found, budgets_of(ctx).max_memory_bytes));
   } else {
     ctx.report().warning(fmt::format(
         "--resume: {} has no {} (the run was killed, or stopped before it started stepping): {} starts again from "

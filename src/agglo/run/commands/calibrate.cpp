@@ -70,7 +70,7 @@ struct Request {
   bool widths = false;
   std::string key() const {
     std::string k = fmt::format("{}={} case={} x=", kind, index, hash_hex(target->observable + "\n" + target->resolved));
-    for (double v : x) k += fmt::format("{:.17g};", v);
+    for (double v : x) k += fmt::format("{};", v);  // shortest round-trip digits
     return widths ? k + " widths" : k;
   }
 };
