@@ -31,7 +31,9 @@ void run_seed_ensemble(const agglo::run::Command& cmd, agglo::Config cfg, const 
   const auto ctx = agglo::cli::context(args);
   auto plan = agglo::run::plan_ensemble(
       {std::string(cmd.name()), std::move(cfg), {}, n, agglo::cli::output_path(args, std::string(cmd.name()))}, ctx);
-  if (args.dry_run) return agglo::cli::dry_run(plan.request.base.file(), plan.estimate, ctx);
+  if (args.dry_run)
+    return agglo::cli::dry_run(plan.request.base.file(), plan.estimate,
+                               cmd.seconds_per_step(plan.sweep.configs.front()), ctx);
   agglo::run::execute_ensemble(plan, ctx);
   if (ctx.formats.csv) agglo::cli::run_plot_script("plot_ensemble.py", plan.request.folder);
 }
@@ -64,7 +66,10 @@ void add_subcommand(CLI::App& app, const agglo::run::Command& cmd) {
     if (n != 1) return run_seed_ensemble(cmd, std::move(cfg), *args, n);
     const auto out = agglo::cli::output_path(*args, std::string(cmd.name()));
     const auto ctx = agglo::cli::context(*args);
-    if (args->dry_run) return agglo::cli::dry_run(cfg.file(), agglo::run::plan(cmd, cfg, ctx), ctx);
+    if (args->dry_run) {
+      const auto e = agglo::run::plan(cmd, cfg, ctx);
+      return agglo::cli::dry_run(cfg.file(), e, cmd.seconds_per_step(cfg), ctx);
+    }
     const auto res = agglo::run::execute(cmd, cfg, out, ctx);
     if (ctx.formats.csv) agglo::cli::run_plot_script(res.plot_script, out, res.plot_args);  // plots read the CSV files
   });

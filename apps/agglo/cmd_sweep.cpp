@@ -32,7 +32,9 @@ void run(const SweepArgs& a) {
   const auto ctx = agglo::cli::context(a.common);
   auto plan = agglo::run::plan_ensemble(
       {a.command, agglo::cli::load_case(a.common), axes(a), a.seeds, agglo::cli::output_path(a.common, "sweep")}, ctx);
-  if (a.common.dry_run) return agglo::cli::dry_run(plan.request.base.file(), plan.estimate, ctx);
+  if (a.common.dry_run)
+    return agglo::cli::dry_run(plan.request.base.file(), plan.estimate,
+                               plan.cmd->seconds_per_step(plan.sweep.configs.front()), ctx);
   agglo::run::execute_ensemble(plan, ctx);
   std::vector<std::string> plot_args;  // the swept keys (--seeds: the seed key is the last)
   for (const auto& x : plan.axes) plot_args.push_back(x.key);

@@ -134,11 +134,11 @@ run::RunContext context(const CommonArgs& args) {
   return ctx;
 }
 
-void dry_run(const std::string& what, const Estimate& e, const run::RunContext& ctx) {
+void dry_run(const std::string& what, const Estimate& e, double seconds_per_step, const run::RunContext& ctx) {
   const auto b = run::budgets_of(ctx);
   if (run::is_output_rank())
-    std::printf("%s: valid; estimated cost (dry run: nothing run or written)\n%s", one_line(what).c_str(),
-                run::describe(e, b).c_str());
+    std::printf("%s: valid; estimated cost (dry run: nothing run or written)\n%s%s", one_line(what).c_str(),
+                run::describe(e, b).c_str(), run::describe_time(e.steps.value, seconds_per_step).c_str());
   std::fflush(stdout);
   run::check_budgets(e, b, what);
 }

@@ -45,7 +45,7 @@ run::RunContext context(const CommonArgs& args);
 
 // --dry-run: prints the estimates of `what` (a validated case) against the budgets on stdout; a
 // ConfigError if one is exceeded (exit 2), else returns (exit 0). Nothing is created.
-void dry_run(const std::string& what, const Estimate& e, const run::RunContext& ctx);
+void dry_run(const std::string& what, const Estimate& e, double seconds_per_step, const run::RunContext& ctx);
 
 // Exit code after an interruption: 128 + the signal (130 for SIGINT / Ctrl-C, 143 for SIGTERM).
 int interrupt_exit_code();

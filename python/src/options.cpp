@@ -169,7 +169,8 @@ run::RunContext context_of(const run::Command& cmd, const RunOptions& o) {
   ctx.resume = o.resume;
   ctx.overwrite = o.overwrite;
   ctx.budgets = &o.budgets;
-  ctx.formats = o.out.is_none() ? run::OutputFormats{false, false} : formats_of(o.format);
+  const run::OutputFormats formats = formats_of(o.format);  // checked with or without out (issue 23 item 12)
+  ctx.formats = o.out.is_none() ? run::OutputFormats{false, false} : formats;
   if (o.checkpoint) {
     if (!cmd.restartable())
       throw ConfigError(fmt::format("{}: checkpoint= is only for commands that write checkpoints", cmd.name()));

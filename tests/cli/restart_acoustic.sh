@@ -101,23 +101,36 @@ run --out "$T/other" --resume --set sound.level_db=141 > /dev/null 2> "$T/err"; 
 [ $rc -eq 2 ] && [ "$(wc -l < "$T/err")" -eq 1 ] && grep -q "checkpoint.bin.*config hash.*cannot be resumed" "$T/err" \
   || fail "resume with another config: exit $rc: $(cat "$T/err")"
 echo "ok   other config refused: $(cat "$T/err")"
-printf '\x07' | dd of="$T/other/checkpoint.bin" bs=1 seek=8 conv=notrunc 2> /dev/null
+printf '\x07' | dd of="$T/other/checkpoint.bin" bs=1 seek=40 conv=notrunc 2> /dev/null  # in the header strings
 run --out "$T/other" --resume > /dev/null 2> "$T/err"; rc=$?
 [ $rc -eq 2 ] && [ "$(wc -l < "$T/err")" -eq 1 ] && grep -q "checksum mismatch" "$T/err" \
   || fail "corrupted checkpoint: exit $rc: $(cat "$T/err")"
 echo "ok   corrupted checkpoint refused: $(cat "$T/err")"
-# Another format version with a valid checksum (FNV-1a 64 over the bytes before it).
-/usr/bin/python3 - "$T/kill3/checkpoint.bin" "$T/other/checkpoint.bin" <<'EOF'
+# Another format version with a valid checksum (FNV-1a 64 over the bytes before it: offset basis
+# 14695981039346656037), and a format-1 file (summed with the basis a digit short that format 1 used):
+# both refused by their format number, before the checksum.
+for fmt in 99:14695981039346656037 1:1469598103934665603; do
+  /usr/bin/python3 - "$T/kill3/checkpoint.bin" "$T/other/checkpoint.bin" "${fmt%%:*}" "${fmt##*:}" <<'EOF'
 import struct, sys
 b = bytearray(open(sys.argv[1], "rb").read()[:-8])
-b[8:12] = struct.pack("<I", 99)
-h = 1469598103934665603
+b[8:12] = struct.pack("<I", int(sys.argv[3]))
+h = int(sys.argv[4])
 for c in b:
     h = ((h ^ c) * 1099511628211) % 2**64
 open(sys.argv[2], "wb").write(bytes(b) + struct.pack("<Q", h))
 EOF
-run --out "$T/other" --resume > /dev/null 2> "$T/err"; rc=$?
-[ $rc -eq 2 ] && [ "$(wc -l < "$T/err")" -eq 1 ] && grep -q "format version 99, this run has format version 1" "$T/err" \
-  || fail "checkpoint of another format: exit $rc: $(cat "$T/err")"
-echo "ok   other format refused: $(cat "$T/err")"
+  run --out "$T/other" --resume > /dev/null 2> "$T/err"; rc=$?
+  [ $rc -eq 2 ] && [ "$(wc -l < "$T/err")" -eq 1 ] && grep -q "format version ${fmt%%:*}, this run has format version 2" "$T/err" \
+    || fail "checkpoint of format ${fmt%%:*}: exit $rc: $(cat "$T/err")"
+  echo "ok   format ${fmt%%:*} refused: $(cat "$T/err")"
+done
+# The checksum is FNV-1a 64 with its real offset basis: recomputed here over a valid checkpoint.
+/usr/bin/python3 - "$T/kill3/checkpoint.bin" <<'EOF' || fail "the checkpoint's checksum is not FNV-1a 64"
+import struct, sys
+b = open(sys.argv[1], "rb").read()
+h = 14695981039346656037
+for c in b[:-8]:
+    h = ((h ^ c) * 1099511628211) % 2**64
+sys.exit(0 if struct.unpack("<Q", b[-8:])[0] == h else 1)
+EOF
 echo "all restart checks passed"

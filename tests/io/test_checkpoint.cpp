@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -39,6 +40,19 @@ std::string payload(double x) {
 
 CheckpointHeader header(std::uint64_t step = 7) { return {"acoustic", config_hash("a = 1\n"), step, 0.25}; }
 
+constexpr double kCap = 1e9;  // the largest checkpoint read (the memory budget in a run)
+
+// The refusal's message of reading out's checkpoint ("" when it is read).
+std::string refusal(const OutputDir& out, double cap = kCap) {
+  CheckpointHeader found;
+  try {
+    (void)read_checkpoint(out, header(), found, cap);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 }  // namespace
 
 TEST(Checkpoint, RoundTripReturnsEveryValueAndTheHeader) {
@@ -46,7 +60,7 @@ TEST(Checkpoint, RoundTripReturnsEveryValueAndTheHeader) {
   const OutputDir out(d.path);
   write_checkpoint(out, header(), payload(0.5));
   CheckpointHeader found;
-  auto r = read_checkpoint(out, header(), found);
+  auto r = read_checkpoint(out, header(), found, kCap);
   EXPECT_EQ(found.step, 7u);
   EXPECT_EQ(found.time, 0.25);
   EXPECT_EQ(r.u64(), 42u);
@@ -65,11 +79,11 @@ TEST(Checkpoint, AnotherConfigOrCommandIsRefused) {
   CheckpointHeader found;
   auto other = header();
   other.config_hash = config_hash("a = 2\n");
-  EXPECT_THROW(read_checkpoint(out, other, found), ConfigError);
+  EXPECT_THROW(read_checkpoint(out, other, found, kCap), ConfigError);
   other = header();
   other.command = "collide";
   try {
-    read_checkpoint(out, other, found);
+    read_checkpoint(out, other, found, kCap);
     FAIL() << "accepted another command's checkpoint";
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("command acoustic"), std::string::npos) << e.what();
@@ -94,14 +108,14 @@ TEST(Checkpoint, AnyFlippedByteOrTruncationIsDetected) {
       o << bytes;
     }
     CheckpointHeader found;
-    EXPECT_THROW(read_checkpoint(out, header(), found), ConfigError) << "byte " << at;
+    EXPECT_THROW(read_checkpoint(out, header(), found, kCap), ConfigError) << "byte " << at;
     bytes[at] ^= 0x10;  // restore
     std::ofstream o(file, std::ios::binary | std::ios::trunc);
     o << bytes;
   }
   fs::resize_file(file, size - 3);
   CheckpointHeader found;
-  EXPECT_THROW(read_checkpoint(out, header(), found), ConfigError);
+  EXPECT_THROW(read_checkpoint(out, header(), found, kCap), ConfigError);
 }
 
 TEST(Checkpoint, KilledInTheMiddleOfAWriteLeavesThePreviousCheckpoint) {
@@ -125,8 +139,33 @@ TEST(Checkpoint, KilledInTheMiddleOfAWriteLeavesThePreviousCheckpoint) {
     tmp_files += e.path().filename().string().find(".tmp-") != std::string::npos;
   EXPECT_EQ(tmp_files, 1);  // the half-written file of the killed write
   CheckpointHeader found;
-  auto r = read_checkpoint(out, header(), found);
+  auto r = read_checkpoint(out, header(), found, kCap);
   EXPECT_EQ(found.step, 3u);  // the previous checkpoint, intact
   EXPECT_EQ(r.u64(), 42u);
   EXPECT_EQ(r.f64(), 0.5);
+}
+
+// Issue 23 item 11: what is not a checkpoint file is refused before it is read (a FIFO blocked for
+// ever, a symlink to /dev/zero grew to 1.4 GB), and a file larger than the cap is refused unread.
+TEST(Checkpoint, NotARegularFileIsRefusedUnread) {
+  TmpDir d;
+  const OutputDir out(d.path);
+  const auto file = out.file(kCheckpointFile);
+  fs::create_symlink("/dev/zero", file);
+  EXPECT_NE(refusal(out).find("a character device, not a checkpoint file"), std::string::npos) << refusal(out);
+  fs::remove(file);
+  ASSERT_EQ(::mkfifo(file.c_str(), 0600), 0);
+  EXPECT_NE(refusal(out).find("a FIFO, not a checkpoint file"), std::string::npos) << refusal(out);
+  fs::remove(file);
+  fs::create_directory(file);
+  EXPECT_NE(refusal(out).find("a directory"), std::string::npos) << refusal(out);
+}
+
+TEST(Checkpoint, LargerThanTheCapIsRefused) {
+  TmpDir d;
+  const OutputDir out(d.path);
+  write_checkpoint(out, header(), payload(0.5));
+  const auto size = static_cast<double>(fs::file_size(out.file(kCheckpointFile)));
+  EXPECT_EQ(refusal(out, size), "");
+  EXPECT_NE(refusal(out, size - 1).find("more than the memory budget"), std::string::npos);
 }

@@ -133,3 +133,25 @@ def test_index_into_missing_array_is_refused_at_set(agglo_module):
     two = agglo.Case.load(CASES / "electrostatics_two_spheres.toml")
     with pytest.raises(agglo.ConfigError, match=r"'99' is not a valid index \(array has 2 elements\)"):
         two.set("particles.99.radius", 1e-6)
+
+
+def test_format_is_checked_without_out(agglo_module):
+    """Issue 23 item 12: format= was validated only when out= was given."""
+    agglo = agglo_module
+    with pytest.raises(agglo.ConfigError) as err:
+        agglo.collide(short(agglo), format="xml")
+    assert "xml" in one_line(err)
+    with pytest.raises(agglo.ConfigError, match="xml"):
+        agglo.sweep(short(agglo), {"projectile.speed": [0.1]}, command="collide", format="xml")
+    assert agglo.collide(short(agglo), format="netcdf").summary  # a valid one still runs without out
+
+
+def test_huge_key_is_cut_in_the_error_line(agglo_module):
+    """Issue 23 item 12: a 1 MB key was echoed whole in the error line; now its first 80 characters and '…'."""
+    agglo = agglo_module
+    case = short(agglo)
+    with pytest.raises(agglo.ConfigError) as err:
+        case.set("projectile." + "k" * 1_000_000, 1.0)
+        agglo.collide(case)
+    text = one_line(err)
+    assert len(text) < 1000 and "k" * 69 + "\u2026" in text, text[:300]

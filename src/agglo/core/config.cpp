@@ -229,10 +229,11 @@ void Config::check_unknown_keys() const {
       std::string full = p.empty() ? std::string(k.str()) : p + "." + std::string(k.str());
       if (!used.count(full)) {
         auto known = known_in(p);
-        throw ConfigError(fmt::format("{}: unknown key '{}'{}", file_, full,
+        throw ConfigError(fmt::format("{}: unknown key '{}'{}", file_, cut_for_message(full),  // a 1 MB key: cut
                                       known.empty() ? std::string(" (this section takes no keys)")
                                                     : fmt::format(" (allowed{}: {})",
-                                                                  p.empty() ? "" : " in [" + p + "]", join(known))));
+                                                                  p.empty() ? "" : " in [" + cut_for_message(p) + "]",
+                                                                  join(known))));
       }
       if (auto sub = node.as_table()) walk(*sub, full);
       if (auto arr = node.as_array()) {

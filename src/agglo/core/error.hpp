@@ -22,6 +22,13 @@ struct LimitError : ConfigError {
   using ConfigError::ConfigError;
 };
 
+// An output file that cannot be written (a full or read-only disk, a quota): an unusable output folder,
+// bad input like any ConfigError (exit 2), one line naming the file and the system's reason
+// (io/output_dir.hpp, output_error). The run's folder is marked failed and keeps no temporary file.
+struct OutputError : ConfigError {
+  using ConfigError::ConfigError;
+};
+
 struct NumericalError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -36,6 +43,15 @@ struct InvalidRunError : NumericalError {
 struct InterruptedError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// `text` cut for an error line: its first `max` characters (UTF-8 sequences kept whole) and "…" when it
+// is longer, so that a huge key or value (a 1 MB --set) is not echoed whole.
+inline std::string cut_for_message(std::string_view text, std::size_t max = 80) {
+  if (text.size() <= max) return std::string(text);
+  std::size_t n = max;
+  while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xc0) == 0x80) --n;  // not inside a UTF-8 sequence
+  return std::string(text.substr(0, n)) + "\u2026";
+}
 
 // `text` on one line: control characters (a raw newline, tab, ESC, U+0085...) and the Unicode
 // line and paragraph separators U+2028/U+2029 copied from the input are shown escaped (\n, \t, \x1b, \u2028).

@@ -26,7 +26,8 @@
 namespace agglo::io {
 
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
-inline constexpr std::uint32_t kCheckpointFormat = 1;
+// 2: the checksum and config hash are FNV-1a 64 with its real offset basis (1: a basis a digit short).
+inline constexpr std::uint32_t kCheckpointFormat = 2;
 
 // Serialises values in order into a byte string.
 class CheckpointWriter {
@@ -140,7 +141,10 @@ int checkpoint_writes();
 bool has_checkpoint(const OutputDir& out);
 
 // Reads and checks out/checkpoint.bin against `expect` (command and config hash; step and time are
-// returned in `found`); ConfigError on any mismatch or corruption. Returns the payload reader.
-CheckpointReader read_checkpoint(const OutputDir& out, const CheckpointHeader& expect, CheckpointHeader& found);
+// returned in `found`); ConfigError on any mismatch or corruption, and before reading anything when it
+// is not a regular file (through symlinks: a FIFO, /dev/zero, a directory) or larger than `max_bytes`
+// (the memory budget: the whole file is held in memory). Returns the payload reader.
+CheckpointReader read_checkpoint(const OutputDir& out, const CheckpointHeader& expect, CheckpointHeader& found,
+                                 double max_bytes);
 
 }  // namespace agglo::io

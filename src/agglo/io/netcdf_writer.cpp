@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 #include <netcdf.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <filesystem>
 #include <mutex>
@@ -13,14 +16,48 @@ namespace agglo::io {
 
 namespace {
 
-// Throws, naming the file and the operation, unless a netCDF call returned NC_NOERR.
+// True when the folder of `file` is read-only or has no free block left.
+bool disk_unusable(const std::filesystem::path& file) {
+  struct statvfs s {};
+  if (::statvfs(file.parent_path().c_str(), &s) != 0) return false;
+  return (s.f_flag & ST_RDONLY) != 0 || s.f_bavail == 0;
+}
+
+// Throws, naming the file and the operation, unless a netCDF call returned NC_NOERR: OutputError (exit 2)
+// for a system error (netCDF's positive codes are errno values) or a full or read-only disk (HDF5
+// reports ENOSPC as a generic NC_EHDFERR), else an internal error.
 struct Check {
   const std::filesystem::path& file;
   void operator()(int status, const std::string& what) const {
-    if (status != NC_NOERR)
-      throw std::runtime_error(fmt::format("cannot write {}: {}: {}", file.string(), what, nc_strerror(status)));
+    if (status == NC_NOERR) return;
+    if (status > 0) throw output_error(file, status);
+    if (disk_unusable(file)) throw output_error(file, ENOSPC);
+    throw std::runtime_error(fmt::format("cannot write {}: {}: {}", file.string(), what, nc_strerror(status)));
   }
 };
+
+// Bytes the file takes at most: 8 per value, the attributes' text, 1 KiB of HDF5 metadata per variable
+// and 64 KiB for the file (the collide file of the tetrahedron: 41.6 KB for 27 variables, 31 KB of
+// them metadata; estimated 105 KB).
+double netcdf_bytes(const Dataset& d, const nlohmann::json& extra) {
+  double b = 64.0 * 1024.0 + static_cast<double>(extra.dump().size() + d.attributes.dump().size());
+  for (const auto& v : d.variables)
+    b += 8.0 * static_cast<double>(v.size()) + 1024.0 + static_cast<double>(v.attributes.dump().size());
+  return b;
+}
+
+// OutputError before HDF5 touches the disk when the folder is read-only or has less free space than the
+// file may need: HDF5 meeting ENOSPC inside a write leaves its file in a state where nc_abort, or its
+// own clean-up at exit, crashes (SIGSEGV, issue 23).
+void check_space(const std::filesystem::path& file, double bytes) {
+  struct statvfs s {};
+  if (::statvfs(file.parent_path().c_str(), &s) != 0) return;
+  if ((s.f_flag & ST_RDONLY) != 0) throw output_error(file, EROFS);
+  const double free = static_cast<double>(s.f_bavail) * static_cast<double>(s.f_frsize);
+  if (free < bytes)
+    throw output_error(file, fmt::format("No space left on device ({:.0f} KiB free, it needs up to {:.0f} KiB)",
+                                         free / 1024.0, bytes / 1024.0));
+}
 
 bool all_numbers(const nlohmann::json& a) {
   if (!a.is_array() || a.empty()) return false;
@@ -117,6 +154,7 @@ void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& nam
   auto tmp = path;
   tmp += fmt::format(".tmp-{}", static_cast<long>(::getpid()));
   const Check ok{path};
+  check_space(path, netcdf_bytes(d, extra_attributes));
   int nc = -1;
   const std::lock_guard lock(library_mutex());
   try {
@@ -128,13 +166,25 @@ void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& nam
     const int status = nc_close(nc);
     nc = -1;
     ok(status, "close");
+  } catch (const OutputError&) {
+    // The disk failed under HDF5 after check_space (another writer filled it): no nc_abort, which crashes
+    // there; the handle stays open (HDF5 may still crash when it closes it at exit: not avoidable here).
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    throw;
   } catch (...) {
     if (nc >= 0) nc_abort(nc);
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
     throw;
   }
-  std::filesystem::rename(tmp, path);
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    const int err = ec.value();
+    std::filesystem::remove(tmp, ec);
+    throw output_error(path, err);
+  }
 }
 
 }  // namespace agglo::io

@@ -17,26 +17,38 @@
 
 namespace agglo {
 
+OutputError output_error(const std::filesystem::path& file, const std::string& reason) {
+  return OutputError(fmt::format("cannot write {}: {} (free space, or choose another --out)", file.string(), reason));
+}
+
+OutputError output_error(const std::filesystem::path& file, int err) {
+  return output_error(file, err != 0 ? std::generic_category().message(err) : std::string("write failed"));
+}
+
 void write_file_atomic(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body) {
   auto tmp = path;
   tmp += fmt::format(".tmp-{}", static_cast<long>(::getpid()));
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(fmt::format("cannot write {}", tmp.string()));
-    try {
-      body(out);
-    } catch (...) {
-      out.close();
-      std::filesystem::remove(tmp);
-      throw;
-    }
-    out.flush();
-    if (!out) {
-      std::filesystem::remove(tmp);
-      throw std::runtime_error(fmt::format("error while writing {}", tmp.string()));
-    }
+  std::error_code ec;
+  errno = 0;
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  if (!out) throw output_error(path, errno);
+  try {
+    body(out);
+  } catch (...) {
+    out.close();
+    std::filesystem::remove(tmp, ec);
+    throw;
   }
-  std::filesystem::rename(tmp, path);
+  out.flush();
+  int err = out ? 0 : errno;
+  out.close();  // the last buffered bytes: a full disk may fail only here
+  if (out.fail() && err == 0) err = errno != 0 ? errno : EIO;
+  if (err == 0) std::filesystem::rename(tmp, path, ec);
+  if (err == 0 && ec) err = ec.value();
+  if (err != 0) {
+    std::filesystem::remove(tmp, ec);
+    throw output_error(path, err);
+  }
 }
 
 namespace {

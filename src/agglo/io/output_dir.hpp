@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "agglo/core/error.hpp"
+
 namespace agglo {
 
 class OutputDir {
@@ -45,7 +47,14 @@ enum class FolderPolicy {
 // Temporary "*.tmp-<pid>" files do not count.
 void claim_output_folder(const std::filesystem::path& dir, FolderPolicy policy, std::string_view command);
 
-// Atomic write to an arbitrary path.
+// The OutputError of a file that cannot be written, from the errno of the failed call (0: unknown):
+// "cannot write FILE: No space left on device (free space or choose another --out)".
+OutputError output_error(const std::filesystem::path& file, int err);
+// The same with the reason in words ("40 KiB free, it needs up to 100 KiB").
+OutputError output_error(const std::filesystem::path& file, const std::string& reason);
+
+// Atomic write to an arbitrary path. A failed write, close or rename (e.g. a full disk) removes the
+// temporary file and throws output_error.
 void write_file_atomic(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body);
 
 // Metadata common to every run (run.json): version, git hash, command, case, seed, threads, time.

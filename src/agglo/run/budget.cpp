@@ -165,6 +165,22 @@ std::string describe(const Estimate& e, const Budgets& b) {
          line("output", e.output, format_bytes(e.output.value), format_bytes(b.max_output_bytes), b.max_output_bytes);
 }
 
+std::string format_duration(double seconds) {
+  if (seconds < 60.0) return fmt::format("{:.3g} s", seconds);
+  if (seconds < 3600.0) return fmt::format("{:.3g} min", seconds / 60.0);
+  if (seconds < 86400.0) return fmt::format("{:.3g} h", seconds / 3600.0);
+  return fmt::format("{:.3g} d", seconds / 86400.0);
+}
+
+std::string describe_time(double steps, double seconds_per_step) {
+  if (!(seconds_per_step > 0.0)) return "  time    not estimated for this command\n";
+  const double t = steps * seconds_per_step;
+  const char* cost_class = t < 60.0 ? "seconds" : t < 3600.0 ? "minutes" : t < 86400.0 ? "hours"
+                         : t < 30 * 86400.0 ? "days" : "months or more";
+  return fmt::format("  time    at most {:<18} cost class {:<15} ({:.3g} s of one thread: {:.2g} s per step, "
+                     "measured; n threads at best 1/n)\n", format_duration(t), cost_class, t, seconds_per_step);
+}
+
 void check_budgets(const Estimate& e, const Budgets& b, std::string_view what) {
   check_one(e.steps, b.max_steps, what, "steps", "--max-steps", "AGGLO_MAX_STEPS", format_steps(e.steps.value),
             format_steps(b.max_steps));

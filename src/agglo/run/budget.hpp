@@ -71,6 +71,14 @@ void check_budgets(const Estimate& e, const Budgets& b, std::string_view what);
 // The estimates against the budgets, one line per quantity with its driving keys (--dry-run).
 std::string describe(const Estimate& e, const Budgets& b);
 
+// The time line of --dry-run: steps x seconds_per_step (Command::seconds_per_step, seconds of one
+// thread per step unit, measured) as CPU time of one thread and its cost class, "seconds" (< 1 min),
+// "minutes" (< 1 h), "hours" (< 1 day), "days" (< 30 days) or "months or more". An upper bound like the
+// steps; the wall time on n threads is at best 1/n of it. "not estimated" when the rate is 0.
+std::string describe_time(double steps, double seconds_per_step);
+// "12.3 s", "4.5 min", "2.1 h", "3.2 d".
+std::string format_duration(double seconds);
+
 // "2.1e+09 particle-steps", "3.4 GiB": human-readable values for messages and --dry-run.
 std::string format_bytes(double bytes);
 std::string format_steps(double steps);

@@ -1,8 +1,9 @@
 #pragma once
 // Checkpoints of a restartable command in its output folder (docs/restart.md): a writer of
-// out/checkpoint.bin under the command's name and the hash of its resolved config (--checkpoint), and
-// under --resume the reader of the folder's checkpoint when it has one (ConfigError when it belongs to
-// another command, config, build or format).
+// out/checkpoint.bin under the command's name and the hash of its resolved config (every --checkpoint
+// interval; without --checkpoint only where an interrupted run stops), and under --resume the reader of
+// the folder's checkpoint when it has one (ConfigError when it belongs to another command, config,
+// build or format; a warning that the run starts again when the folder has none).
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -15,9 +16,10 @@
 namespace agglo::run {
 
 struct CheckpointIO {
-  // Writes the payload of the state at (step, simulated time [s]); empty without --checkpoint.
+  // Writes the payload of the state at (step, simulated time [s]); without --checkpoint it writes only
+  // once the run is cancelled (the forced write where it stops).
   std::function<void(std::uint64_t step, double t, const std::string& payload)> write;
-  double interval = 0.0;                        // [s] (--checkpoint)
+  double interval = 0.0;                        // [s] (--checkpoint; infinity without)
   std::optional<io::CheckpointReader> resume;   // the payload to continue from; empty: from the start
 };
 

@@ -34,6 +34,8 @@ Estimate Command::estimate(Config&, const RunContext&) const { return {}; }
 
 Estimate Command::lower_bound(Config&) const { return {}; }
 
+double Command::seconds_per_step(Config&) const { return 0.0; }
+
 double output_bytes(double csv_estimate, const OutputFormats& f) {
   return (f.csv ? csv_estimate : 0.0) + (f.netcdf ? csv_estimate + kNetcdfOverhead : 0.0);
 }
@@ -80,7 +82,7 @@ const Command& find_command(std::string_view name) {
     if (c->name() == name) return *c;
   std::string list;
   for (const auto& n : command_names()) list += (list.empty() ? "" : ", ") + n;
-  throw ConfigError(fmt::format("command '{}' does not exist (available: {})", name, list));
+  throw ConfigError(fmt::format("command '{}' does not exist (available: {})", cut_for_message(name), list));
 }
 
 std::vector<std::string> command_names() {
@@ -94,22 +96,46 @@ FolderPolicy folder_policy(const RunContext& ctx) {
   return ctx.overwrite ? FolderPolicy::overwrite : FolderPolicy::fresh;
 }
 
-void write_run_started(const OutputDir& out, std::string_view command, const std::string& case_file) {
-  out.write_json("run.json", {{"program", "agglo"},
-                              {"command", command},
-                              {"case", case_file},
-                              {"status", "running"},
-                              {"pid", static_cast<long>(::getpid())}});
+void write_run_started(const OutputDir& out, std::string_view command, const std::string& case_file,
+                       const nlohmann::json& details) {
+  nlohmann::json j = {{"program", "agglo"},
+                      {"command", command},
+                      {"case", case_file},
+                      {"status", "running"},
+                      {"pid", static_cast<long>(::getpid())}};
+  if (!details.is_null() && !details.empty()) j["details"] = details;
+  out.write_json("run.json", j);
 }
 
-void write_run_files(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
-                     double wall_time_s, const nlohmann::json& details, std::string_view status) {
-  out.write_text("config.resolved.toml", cfg.resolved_toml());
+namespace {
+nlohmann::json run_json(const Config& cfg, std::string_view command, long long seed, double wall_time_s,
+                        const nlohmann::json& details, std::string_view status) {
   auto meta = run_metadata(std::string(command), cfg.file(), seed, wall_time_s);
   meta["status"] = status;
   meta["ranks"] = rank_count();  // MPI processes of the run (1 without mpirun)
   if (!details.is_null() && !details.empty()) meta["details"] = details;
-  out.write_json("run.json", meta);
+  return meta;
+}
+}  // namespace
+
+void write_run_files(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
+                     double wall_time_s, const nlohmann::json& details, std::string_view status) {
+  out.write_text("config.resolved.toml", cfg.resolved_toml());
+  out.write_json("run.json", run_json(cfg, command, seed, wall_time_s, details, status));
+}
+
+void write_stopped_run_files(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
+                             double wall_time_s, const nlohmann::json& details, std::string_view status) noexcept {
+  try {
+    write_run_files(out, cfg, command, seed, wall_time_s, details, status);
+    return;
+  } catch (const std::exception&) {  // e.g. the disk is full: run.json in place, over its own blocks
+  }
+  try {
+    std::ofstream f(out.file("run.json"), std::ios::binary | std::ios::trunc);
+    f << run_json(cfg, command, seed, wall_time_s, details, status).dump(2) << '\n';
+  } catch (const std::exception&) {  // nothing more can be done; the error itself is reported
+  }
 }
 
 void write_results_nc(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
@@ -176,24 +202,29 @@ CommandResult execute_planned(const Command& cmd, Config& cfg, const Estimate& p
     return details;
   };
   CommandResult res;
+  auto stopped = [&](const char* what, const std::exception& e, std::string_view status) {
+    write_stopped_run_files(out, cfg, cmd.name(), cmd.seed(cfg), seconds(), merged({{what, e.what()}}), status);
+  };
   try {
     const CancelScope cancel_scope(ctx.cancel);  // the engines poll it (core/cancel.hpp)
     res = cmd.run(cfg, out, ctx);
+    if (ctx.formats.netcdf && res.data) write_results_nc(out, cfg, cmd.name(), res.seed, *res.data);
+    write_run_files(out, cfg, cmd.name(), res.seed, seconds(), merged(res.details));
+  } catch (const OutputError& e) {  // a full or read-only disk: the folder stays, marked failed
+    stopped("error", e, "failed");
+    throw;
   } catch (const ConfigError& e) {  // input found invalid only by the engine: leave no new folder behind
     if (!existed) std::filesystem::remove_all(folder, ec);
     else if (!previous_run.empty()) out.write_text("run.json", previous_run);
-    else write_run_files(out, cfg, cmd.name(), cmd.seed(cfg), seconds(), merged({{"error", e.what()}}), "failed");
+    else stopped("error", e, "failed");
     throw;
   } catch (const InterruptedError& e) {
-    write_run_files(out, cfg, cmd.name(), cmd.seed(cfg), seconds(), merged({{"interrupted", e.what()}}),
-                    "incomplete");
+    stopped("interrupted", e, "incomplete");
     throw;
   } catch (const std::exception& e) {
-    write_run_files(out, cfg, cmd.name(), cmd.seed(cfg), seconds(), merged({{"error", e.what()}}), "failed");
+    stopped("error", e, "failed");
     throw;
   }
-  if (ctx.formats.netcdf && res.data) write_results_nc(out, cfg, cmd.name(), res.seed, *res.data);
-  write_run_files(out, cfg, cmd.name(), res.seed, seconds(), merged(res.details));
   return res;
 }
 

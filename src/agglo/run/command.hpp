@@ -86,6 +86,9 @@ class Command {
   // A lower bound of estimate() from the sizes in the case alone, checked before parse() so that a
   // huge case is refused before a slow (e.g. O(N^2)) validation. None by default.
   virtual Estimate lower_bound(Config& cfg) const;
+  // Seconds of one thread per unit of the step estimate, measured on the development machine
+  // (docs/limits.md, "Time estimate"); --dry-run multiplies the steps by it. 0: not calibrated.
+  virtual double seconds_per_step(Config& cfg) const;
   // The random seed a case runs with (recorded in run.json); 0 for deterministic commands.
   virtual long long seed(const Config& cfg) const;
   // The config key of the random seed, for seed ensembles (run/seed_ensemble.hpp, `--seeds N`); null for
@@ -139,8 +142,10 @@ CommandResult execute_planned(const Command& cmd, Config& cfg, const Estimate& p
 // The folder policy a run context asks for (resume wins over overwrite; the CLI forbids both).
 FolderPolicy folder_policy(const RunContext& ctx);
 
-// run.json of a run that has started: command, case, "status": "running", pid.
-void write_run_started(const OutputDir& out, std::string_view command, const std::string& case_file);
+// run.json of a run that has started: command, case, "status": "running", pid, and `details` when not
+// empty (an ensemble's command, swept keys and values, and seeds: what --resume checks).
+void write_run_started(const OutputDir& out, std::string_view command, const std::string& case_file,
+                       const nlohmann::json& details = {});
 
 // results.nc (io/netcdf_writer.hpp) of a complete run: `data` plus the global attributes Conventions
 // ("CF-1.8"), title, agglo_version, git_hash, command, seed and config (the resolved TOML text).
@@ -154,5 +159,10 @@ void write_results_nc(const OutputDir& out, const Config& cfg, std::string_view 
 // used by sweep for its own folder).
 void write_run_files(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
                      double wall_time_s, const nlohmann::json& details, std::string_view status = "complete");
+// The same for a run that stopped on an error or an interruption, as far as the disk allows: when the
+// files cannot be written (a full disk) run.json is rewritten in place over its own blocks. Never
+// throws: the error that stopped the run is the one reported.
+void write_stopped_run_files(const OutputDir& out, const Config& cfg, std::string_view command, long long seed,
+                             double wall_time_s, const nlohmann::json& details, std::string_view status) noexcept;
 
 }  // namespace agglo::run

@@ -1,6 +1,8 @@
 #include "agglo/run/ensemble_request.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <string>
 
 #include <fmt/format.h>
@@ -153,15 +155,63 @@ void write_points(const EnsemblePlan& p, const OutputDir& out, EnsembleResult& r
 
 }  // namespace
 
+namespace {
+
+// "--param K --values V" (each axis), "--command C", "--seeds N" of an ensemble's details (run.json).
+std::string describe_ensemble(const nlohmann::json& d) {
+  std::string s = fmt::format("--command {}", d.value("command", std::string("?")));
+  auto text = [](const nlohmann::json& v) {
+    if (v.is_string()) return v.get<std::string>();
+    std::string joined;
+    for (const auto& x : v) {
+      if (!joined.empty()) joined += ',';
+      joined += x.is_string() ? x.get<std::string>() : x.dump();
+    }
+    return joined;
+  };
+  if (d.contains("param")) {
+    const bool grid = d["param"].is_array();
+    for (std::size_t k = 0; k < (grid ? d["param"].size() : 1); ++k)
+      s += fmt::format(" --param {} --values {}", text(grid ? d["param"][k] : d["param"]),
+                       grid ? text(d["values"][k]) : text(d["values"]));
+  }
+  if (d.contains("members")) s += fmt::format(" --seeds {} (seeds {})", d["members"].dump(), text(d["seeds"]));
+  return cut_for_message(s);
+}
+
+// Under --resume: the folder's ensemble (its run.json details, written at the start) must be this one;
+// another --param, --values, --command or --seeds would mix the case folders of two ensembles
+// (issue 23 item 11). A folder of an older agglo, whose run.json has no details, is not checked.
+void check_same_ensemble(const EnsemblePlan& p, const std::filesystem::path& folder) {
+  std::ifstream in(folder / "run.json");
+  if (!in) return;
+  const auto j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("details") || !j["details"].contains("command")) return;
+  nlohmann::json had = nlohmann::json::object();
+  for (const char* k : {"command", "param", "values", "ensemble", "members", "seeds"})
+    if (j["details"].contains(k)) had[k] = j["details"][k];
+  // A seed ensemble without axes may grow (--seeds 4 after --seeds 3): member k keeps its seed and folder.
+  const bool grows = !had.contains("param") && !p.details.contains("param") && had.contains("seeds") &&
+                     p.details.contains("seeds") && had["seeds"].size() <= p.details["seeds"].size() &&
+                     std::equal(had["seeds"].begin(), had["seeds"].end(), p.details["seeds"].begin());
+  if (had != p.details && !grows)
+    throw ConfigError(fmt::format("output folder {}: holds the ensemble {} (run.json); --resume continues only the same "
+                                  "ensemble, this one is {}; give the same options, or choose another --out",
+                                  folder.string(), describe_ensemble(had), describe_ensemble(p.details)));
+}
+
+}  // namespace
+
 EnsembleResult execute_ensemble(EnsemblePlan& p, const RunContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
   const auto& base = p.request.base;
   check_budgets(p.estimate, budgets_of(ctx), base.file());
   const auto& path = p.request.folder;
+  if (ctx.resume) check_same_ensemble(p, path);
   const auto folder = claim_run_folder(path, folder_policy(ctx), p.recorded);  // rank 0's, or a scratch folder
   const ScratchFolder scratch(folder, path);
   const OutputDir out(folder);
-  write_run_started(out, p.recorded, base.file());
+  write_run_started(out, p.recorded, base.file(), p.details);
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   EnsembleResult res;
   p.sweep.cases_root = path;  // under MPI every rank writes the cases it runs there (not into its scratch folder)
@@ -170,13 +220,15 @@ EnsembleResult execute_ensemble(EnsemblePlan& p, const RunContext& ctx) {
     write_runs(p, out, res.runs, ctx);
     res.data = res.runs.data;
     if (!p.seeds.empty() && is_output_rank()) write_points(p, out, res, ctx);
+    write_run_files(out, p.resolved, p.recorded, p.seed, seconds(), p.details);
   } catch (const std::exception& e) {  // the journal keeps the finished runs; run.json says why it stopped
     const bool stopped = dynamic_cast<const InterruptedError*>(&e) != nullptr;
-    write_run_files(out, p.resolved, p.recorded, p.seed, seconds(), {{stopped ? "interrupted" : "error", e.what()}},
-                    stopped ? "incomplete" : "failed");
+    nlohmann::json details = p.details;  // kept for the check of a later --resume
+    details[stopped ? "interrupted" : "error"] = e.what();
+    write_stopped_run_files(out, p.resolved, p.recorded, p.seed, seconds(), details,
+                            stopped ? "incomplete" : "failed");
     throw;
   }
-  write_run_files(out, p.resolved, p.recorded, p.seed, seconds(), p.details);
   return res;
 }
 

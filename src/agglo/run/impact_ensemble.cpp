@@ -10,7 +10,8 @@
 namespace agglo::run {
 
 std::string impact_job_key(const impact::ImpactJob& b) {
-  std::string key = fmt::format("v={:.17g} offset={:.17g}", b.speed, b.offset_radii);
+  // The shortest digits that read back as the same double ("v=0.3", not "v=0.29999999999999999").
+  std::string key = fmt::format("v={} offset={}", b.speed, b.offset_radii);
   if (b.orientations > 1) key += fmt::format(" orientation={}/{}", b.orientation, b.orientations);
   return key;
 }

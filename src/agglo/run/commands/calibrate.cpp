@@ -70,7 +70,7 @@ struct Request {
   bool widths = false;
   std::string key() const {
     std::string k = fmt::format("{}={} case={} x=", kind, index, hash_hex(target->observable + "\n" + target->resolved));
-    for (double v : x) k += fmt::format("{:.17g};", v);
+    for (double v : x) k += fmt::format("{};", v);  // shortest round-trip digits
     return widths ? k + " widths" : k;
   }
 };
@@ -132,6 +132,8 @@ class Calibrate final : public Command {
   }
   bool resumable() const override { return true; }
   void parse(Config& cfg) const override { (void)parse_calibrate_case(cfg); }
+  // Its jobs are impact runs: the rate of run/commands/impact_command.hpp.
+  double seconds_per_step(Config&) const override { return 2e-8; }
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
     const CalibrateCase c = parse_calibrate_case(cfg);

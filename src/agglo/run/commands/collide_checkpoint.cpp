@@ -19,7 +19,7 @@ std::optional<impact::ImpactState> CollideCheckpoints::resume_state() {
 void CollideCheckpoints::at_boundary(const impact::ImpactRun& run) {
   const double interval = ctx_.checkpoint_interval;
   if (ctx_.cancel && ctx_.cancel->cancelled()) {
-    if (interval > 0.0) save(run);
+    save(run);  // also without --checkpoint: --resume continues an interrupted run (docs/restart.md)
     throw_if_cancelled(ctx_.cancel);
   }
   if (interval <= 0.0) return;

@@ -2,7 +2,7 @@
 // Checkpoints of `agglo collide` (docs/restart.md, "Collide"): with --checkpoint INTERVAL a checkpoint of the
 // whole collision state (impact/checkpoint.hpp) is written each time the simulated time since
 // launch crosses a multiple of INTERVAL, when the run is interrupted (at the step boundary where the
-// cancellation is seen) and at the end. Under --resume the run continues from the folder's checkpoint
+// cancellation is seen; also without --checkpoint) and at the end. Under --resume the run continues from the folder's checkpoint
 // (none: from the launch); a checkpoint of another build or config is refused (ConfigError).
 #include <optional>
 
@@ -20,8 +20,8 @@ class CollideCheckpoints {
   CollideCheckpoints(const Command& collide, const Config& cfg, const OutputDir& out, const RunContext& ctx);
   // The state to continue from under --resume when the folder has a checkpoint.
   std::optional<impact::ImpactState> resume_state();
-  // Called at every step boundary: checkpoint when due; on cancellation checkpoint (with an interval)
-  // and throw InterruptedError.
+  // Called at every step boundary: checkpoint when due; on cancellation checkpoint (with or without
+  // an interval) and throw InterruptedError.
   void at_boundary(const impact::ImpactRun& run);
   // The checkpoint of the final state (with an interval).
   void at_end(const impact::ImpactRun& run);
