@@ -155,3 +155,14 @@ def test_huge_key_is_cut_in_the_error_line(agglo_module):
         agglo.collide(case)
     text = one_line(err)
     assert len(text) < 1000 and "k" * 69 + "\u2026" in text, text[:300]
+
+
+def test_huge_seed_ensemble_is_refused_at_once(agglo_module):
+    """Issue 23 item 10: seeds=10**9 did not answer in 60 s (every member planned before the budgets)."""
+    import time
+    agglo = agglo_module
+    case = agglo.Case.load(CASES / "seed002_baseline.toml")
+    t0 = time.monotonic()
+    with pytest.raises(agglo.LimitError) as err:
+        agglo.acoustic(case, seeds=10**9)
+    assert "driven by --seeds" in one_line(err) and time.monotonic() - t0 < 10

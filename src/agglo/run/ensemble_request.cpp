@@ -52,6 +52,37 @@ void check_request(const EnsembleRequest& r, const RunContext& ctx) {
                                   r.seeds > 1 ? fmt::format("--seeds {}", r.seeds) : std::string("a sweep")));
 }
 
+// Before the runs of a large ensemble are made (each a parsed case held until the end): one run's step
+// and output estimates times the number of runs, and the planned cases' memory (each holds its
+// config: twice its resolved text and 1 KiB), against the budgets. `acoustic --seeds 1000000000` took
+// minutes and gigabytes before it was refused (issue 23 item 10); now it is refused at once. A base
+// case valid only with the swept values is left to the full plan.
+void check_run_count(const Command& cmd, const EnsembleRequest& r, const RunContext& ctx) {
+  double runs = static_cast<double>(r.seeds);
+  for (const auto& a : r.axes) runs *= static_cast<double>(std::max<std::size_t>(a.values.size(), 1));
+  if (runs < 1000.0) return;  // planned in full within a second
+  Config probe = r.base.clone();
+  Estimate one;
+  try {
+    one = plan(cmd, probe, ctx);
+  } catch (const LimitError&) {
+    throw;
+  } catch (const ConfigError&) {
+    return;
+  }
+  std::vector<std::string> count;  // what multiplies the runs
+  if (r.seeds > 1) count.push_back("--seeds");
+  if (!r.axes.empty()) count.push_back("--values");
+  Estimate all;
+  add_to(all.steps, 0.0, count);
+  add_to(all.steps, one.steps.value * runs, one.steps.keys);
+  add_to(all.output, 0.0, count);
+  add_to(all.output, one.output.value * runs, one.output.keys);
+  add_to(all.memory, one.memory.value + runs * (2.0 * static_cast<double>(probe.resolved_toml().size()) + 1024.0),
+         count);
+  check_budgets(all, budgets_of(ctx), r.base.file());
+}
+
 // The ensemble folder's config.resolved.toml: the base case with every default filled in; the case itself
 // when only the seed varies (member 0 is the base, already parsed); as written when only the swept values
 // make it valid (e.g. a required key given by --param).
@@ -84,6 +115,7 @@ EnsemblePlan plan_ensemble(EnsembleRequest request, const RunContext& ctx) {
   EnsemblePlan p;
   p.cmd = &find_command(request.command);
   check_request(request, ctx);
+  check_run_count(*p.cmd, request, ctx);
   p.axes = request.axes;
   if (request.seeds > 1) {
     p.axes = with_seed_axis(*p.cmd, request.base, std::move(p.axes), request.seeds);
