@@ -127,8 +127,11 @@ TEST(OrientationSet, OneOrientationKeepsJobsAndKeys) {
     EXPECT_EQ(jobs[j].orientations, 1);
     EXPECT_EQ(jobs[j].orientation, 0);
   }
-  // The key format of before: "v=<speed> offset=<offset>", 17 significant digits.
-  EXPECT_EQ(agglo::run::impact_job_key(jobs[1]), fmt::format("v={:.17g} offset={:.17g}", 0.1, jobs[1].offset_radii));
+  // The key format of before: "v=<speed> offset=<offset>", now in the shortest digits that read back
+  // as the same double (issue 23 item 12: "v=0.1", not "v=0.10000000000000001").
+  const std::string key = agglo::run::impact_job_key(jobs[1]);
+  EXPECT_EQ(key, fmt::format("v={} offset={}", 0.1, jobs[1].offset_radii));
+  EXPECT_EQ(std::stod(key.substr(key.find("offset=") + 7)), jobs[1].offset_radii);
 
   spec.orientations = 3;
   const auto turned = breakup_jobs(spec, 0.05);
@@ -139,7 +142,7 @@ TEST(OrientationSet, OneOrientationKeepsJobsAndKeys) {
     EXPECT_EQ(turned[j].offset_radii, jobs[j % 2].offset_radii);
   }
   EXPECT_EQ(agglo::run::impact_job_key(turned[3]),
-            fmt::format("v={:.17g} offset={:.17g} orientation=1/3", 0.1, turned[3].offset_radii));
+            fmt::format("v={} offset={} orientation=1/3", 0.1, turned[3].offset_radii));
 }
 
 TEST(OrientationSet, OneOrientationGivesTheOutcomesOfBefore) {
