@@ -13,13 +13,15 @@ namespace {
 
 std::uint32_t material_id(const Particles& p, std::size_t q) { return q < p.mat.size() ? p.mat[q] : 0; }
 
-// Smallest period of the pairs among the particles `idx` (material pairs of `mats`).
+// Smallest period of the pairs among the particles `idx` (material pairs of `mats`; a table of one
+// material serves every particle whatever its material id).
 double pair_period(const Particles& p, const std::vector<std::size_t>& idx, const MaterialPairs& mats) {
+  const auto id = [&](std::size_t q) { return mats.count > 1 ? material_id(p, q) : 0u; };
   double best = 1e300;
   for (std::size_t a = 0; a < idx.size(); ++a)
     for (std::size_t b = a; b < idx.size(); ++b) {
       auto i = idx[a], j = idx[b];
-      const ContactParams& c = mats.at(material_id(p, i), material_id(p, j));
+      const ContactParams& c = mats.at(id(i), id(j));
       double R = p.r[i] * p.r[j] / (p.r[i] + p.r[j]);
       auto jkr = JkrPair::make(R, c.estar(), c.surface_energy);
       double mstar = p.m[i] * p.m[j] / (p.m[i] + p.m[j]);

@@ -122,7 +122,8 @@ class DemSystem {
   bool forces_ready_ = false;
 };
 
-// Reference contact period T0 = 2 pi sqrt(m*/k0), k0 = 0.9905 F_C/delta_C, for the smallest pair.
+// Reference contact period T0 = 2 pi sqrt(m*/k0), k0 = 0.9905 F_C/delta_C, for the smallest pair, every
+// particle of the one material c (its material id ignored).
 double reference_period(const Particles& p, const ContactParams& c);
 // The same with the materials of d (pairs of the three lightest particles and of the lightest of
 // each material) and the sphere-wall contacts of the lightest particles (m* = m, R* = r, wall E*).
