@@ -5,7 +5,8 @@ Usage: check_config_keys.py AGGLO_EXECUTABLE SOURCE_DIR
 
 1. Every key printed by `agglo config --list` must appear as a C++ string literal exactly once in
    src/ (its declaration in src/agglo/core/settings_*.hpp, or in the tables the engines declare beside
-   the models they name: src/agglo/dem/contact/settings.*, src/agglo/acoustics/kernels/keys.*). A key
+   the models they name: src/agglo/dem/contact/settings.*, src/agglo/acoustics/kernels/keys.*,
+   src/agglo/electrostatics/keys.*). A key
    whose name is also a quoted value in the listing (the top-level key "seed" and the deprecated contact
    model name "seed") cannot be told apart from that value: it must appear at least once. The keys of
    the structure builder are declared once for several tables (settings::BuilderKeys): "<table>.<leaf>"
@@ -28,7 +29,7 @@ import sys
 
 LITERAL = re.compile(r'"((?:[^"\\\n]|\\.)*)"')
 READER_CALL = re.compile(r'\.(number|integer|boolean|string|choice|numbers|vec3|section|tables|has)\(\s*"')
-TABLES = re.compile(r"src/agglo/(core/settings_[a-z]+\.hpp|dem/contact/settings\.[ch]pp|acoustics/kernels/keys\.[ch]pp)$")
+TABLES = re.compile(r"src/agglo/(core/settings_[a-z]+\.hpp|dem/contact/settings\.[ch]pp|acoustics/kernels/keys\.[ch]pp|electrostatics/keys\.[ch]pp)$")
 
 
 def listed_keys(agglo):

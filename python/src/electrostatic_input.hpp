@@ -5,7 +5,7 @@
 // permittivities N; a scalar radius, charge or permittivity applies to every sphere), converted to
 // float64 and checked (shape, real dtype, finite, radius and permittivity > 0). Solver name, medium
 // permittivity, min_gap and the **options are range-checked by the [electrostatics] settings of the
-// CLI (agglo/core/settings_electrostatics.hpp, parsed by es::parse_electrostatics), so a value is
+// CLI (agglo/electrostatics/keys.hpp, parsed by es::parse_electrostatics), so a value is
 // accepted here exactly when the case file would accept it. With min_gap the radii are shrunk to
 // r_E = r / (1 + min_gap/2) (es::electrostatic_radius, docs/model.md §B.3), as in the DEM coupling and
 // the CLI; without it the spheres are solved as given. Touching or overlapping spheres are refused.

@@ -8,7 +8,7 @@ namespace {
 
 class IsolatedSpheresSolver final : public Solver {
  public:
-  std::string name() const override { return "isolated"; }
+  std::string name() const override { return std::string(kIsolatedSolver); }
 
   Solution solve(const Problem& p) override {
     using constants::eps0, constants::pi;

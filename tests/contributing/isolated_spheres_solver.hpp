@@ -10,6 +10,8 @@
 
 namespace agglo::es {
 
+inline constexpr std::string_view kIsolatedSolver = "isolated";
+
 std::unique_ptr<Solver> make_isolated_spheres_solver(const SolverOptions& opt);
 
 }  // namespace agglo::es

@@ -15,6 +15,8 @@
 #include "agglo/core/constants.hpp"
 #include "agglo/core/settings_catalogue.hpp"
 #include "agglo/dem/contact/registry.hpp"
+#include "agglo/electrostatics/config.hpp"
+#include "agglo/electrostatics/estimate.hpp"
 #include "agglo/impact/impact_case.hpp"
 #include "brownian_free_molecular.hpp"
 #include "constant_rolling.hpp"
@@ -104,7 +106,11 @@ TEST(Contributing, BrownianFreeMolecularKernel) {
   EXPECT_TRUE(set.needs().thermal_speed);
 }
 
-// ---- An electrostatic solver: against its closed form.
+// ---- An electrostatic solver: the files above and this line (or one entry in electrostatics/registry.cpp).
+const bool solver_registered =
+    agglo::es::register_solver({.name = agglo::es::kIsolatedSolver, .make = &agglo::es::make_isolated_spheres_solver});
+
+// Against its closed form.
 TEST(Contributing, IsolatedSpheresSolver) {
   const auto solver = es::make_isolated_spheres_solver({});
   es::Problem p;
@@ -121,6 +127,28 @@ TEST(Contributing, IsolatedSpheresSolver) {
   }();
   EXPECT_NEAR(s.energy, self - 0.5 * (-1e-15) * 1e5 * 3e-6, 1e-12 * self);
   EXPECT_EQ(solver->surface().size(), 2u);
+}
+
+// Selected from a case file by its name, listed by `agglo config`, with the default (point-charge)
+// cost model in the budgets; a name nobody registered is refused naming the registered ones.
+TEST(Contributing, IsolatedSpheresSolverFromACaseFile) {
+  ASSERT_TRUE(solver_registered);
+  auto cfg = Config::from_string("[electrostatics]\nsolver = \"isolated\"\n\n[[particles]]\nposition = [0.0, 0.0, 0.0]\n"
+                                 "radius = 1e-6\ncharge = 1e-15\n", "case.toml");
+  const es::EsCase c = es::parse_electrostatics_case(cfg);
+  EXPECT_EQ(c.settings.options.solver, "isolated");
+  EXPECT_EQ(es::make_solver(c.settings.options)->name(), "isolated");
+  EXPECT_NE(settings::list_text("electrostatics").find("isolated"), std::string::npos);
+  const Estimate e = es::static_solve_estimate(c.settings.options, c.problem);
+  EXPECT_EQ(e.steps.value, 1.0);  // N^2 interactions, N = 1
+  EXPECT_TRUE(es::induces_charges(c.settings.options));
+  auto bad = Config::from_string("[electrostatics]\nsolver = \"isolate\"\n", "case.toml");
+  try {
+    es::parse_electrostatics(es::solver_keys().t.open(bad.root()));
+    FAIL() << "an unknown solver was accepted";
+  } catch (const ConfigError& err) {
+    EXPECT_NE(std::string(err.what()).find("isolated"), std::string::npos) << err.what();
+  }
 }
 
 // ---- A command: run through run::execute like every command (folder, config.resolved.toml, run.json).

@@ -1,7 +1,7 @@
 #pragma once
 // Settings tables of the DEM impact commands (collide, vcrit, breakup): the one declaration of each
 // key, its unit, default, range and meaning (docs/dem.md describes the experiment, docs/config.md
-// lists these tables). [electrostatics] and [[particles]] are in settings_electrostatics.hpp.
+// lists these tables). [[particles]] is in settings_electrostatics.hpp, [electrostatics] in electrostatics/keys.hpp.
 #include <array>
 #include <cstdint>
 #include <string>

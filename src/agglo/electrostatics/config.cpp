@@ -50,7 +50,7 @@ EsCase parse_electrostatics_case(Config& cfg) {
   const auto& keys = settings::electrostatics_settings();
   auto root = cfg.root();
   EsCase c;
-  c.settings = parse_electrostatics(keys.solver.t.open(root));
+  c.settings = parse_electrostatics(es_keys().t.open(root));
   auto elements = keys.particles.t.elements(root);
   if (elements.empty()) keys.particles.t.fail(root, "at least one [[particles]] entry is required");
   std::vector<Vec3> x;

@@ -1,7 +1,7 @@
 #pragma once
 // The [electrostatics] section and the [[particles]] entries of a case file, and the
 // electrostatic-radius helper (docs/model.md §B.3). The keys, defaults and ranges are declared once in
-// agglo/core/settings_electrostatics.hpp (listed in docs/config.md).
+// keys.hpp and agglo/core/settings_electrostatics.hpp (listed in docs/config.md).
 //
 // Usage (DEM coupling):
 //   EsConfig ec = parse_electrostatics(cfg.root().section("electrostatics"));
@@ -13,12 +13,13 @@
 #include "agglo/core/config.hpp"
 #include "agglo/core/settings_electrostatics.hpp"
 #include "agglo/core/vec3.hpp"
+#include "agglo/electrostatics/keys.hpp"
 #include "agglo/electrostatics/solver.hpp"
 
 namespace agglo::es {
 
 // The declared [electrostatics] settings (defaults of EsConfig come from them).
-inline const settings::ElectrostaticsSettings::Solver& es_keys() { return settings::electrostatics_settings().solver; }
+inline const SolverKeys& es_keys() { return solver_keys(); }
 
 struct EsConfig {
   SolverOptions options;  // solver name and solver options

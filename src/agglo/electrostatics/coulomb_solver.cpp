@@ -18,7 +18,7 @@ using constants::pi;
 class CoulombSolver final : public Solver {
  public:
   explicit CoulombSolver(const SolverOptions& opt) : opt_(opt) {}
-  std::string name() const override { return "coulomb"; }
+  std::string name() const override { return std::string(kCoulombSolver); }
 
   Solution solve(const Problem& p) override {
     auto t0 = std::chrono::steady_clock::now();
@@ -91,5 +91,16 @@ class CoulombSolver final : public Solver {
 }  // namespace
 
 std::unique_ptr<Solver> make_coulomb_solver(const SolverOptions& opt) { return std::make_unique<CoulombSolver>(opt); }
+
+// O(N) memory, N^2 interactions (the registry's defaults); surface samples of an icosphere of at
+// most 642 vertices per sphere.
+SolverType coulomb_solver_type() {
+  return {.name = kCoulombSolver,
+          .make = &make_coulomb_solver,
+          .samples_per_sphere = [](const SolverOptions& opt) {
+            return static_cast<double>(icosphere_vertices_for(std::min(opt.patches_per_sphere, 642)));
+          },
+          .induced_charges = false};
+}
 
 }  // namespace agglo::es

@@ -8,8 +8,13 @@
 // Invalid input (validate_spheres.hpp) throws InvalidSpheres.
 #include <memory>
 
-#include "agglo/electrostatics/solver.hpp"
+#include "agglo/electrostatics/registry.hpp"
 
 namespace agglo::es {
+inline constexpr std::string_view kCoulombSolver = "coulomb";
+
 std::unique_ptr<Solver> make_coulomb_solver(const SolverOptions& opt);
+
+// Its entry in the solver registry (registry.hpp), with its cost model.
+SolverType coulomb_solver_type();
 }  // namespace agglo::es

@@ -6,11 +6,12 @@
 // Output: force [N] and torque [N m] on each sphere (about its centre), the energy
 // U = 1/2 \int phi sigma_f dS [J] (docs/model.md §B.1), and solver statistics.
 //
-// Solvers are selected by name ("coulomb", "spectral", "bem") through make_solver().
+// Solvers are selected by name through make_solver(); the names are those of registry.hpp.
 #include <array>
 #include <compare>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -81,8 +82,11 @@ class Solver {
 
 // Every field is a solver setting. The defaulted comparison covers all fields, present and future
 // (caches of solver results, e.g. impact/pair_table.hpp, key on the whole struct through it).
+// The solver a case gets when it names none (electrostatics.solver); the spectral solver's name.
+inline constexpr std::string_view kDefaultSolver = "spectral";
+
 struct SolverOptions {
-  std::string solver = "spectral";  // "coulomb" | "spectral" | "bem"
+  std::string solver{kDefaultSolver};  // a registered name (registry.hpp)
   // spectral
   int max_degree = 0;               // 0 = choose L from the smallest gap for `target_accuracy`
   double target_accuracy = 1e-4;    // relative force accuracy used to pick L
@@ -98,6 +102,7 @@ struct SolverOptions {
   friend auto operator<=>(const SolverOptions&, const SolverOptions&) = default;
 };
 
+// The solver opt.solver names (registry.cpp); throws agglo::ConfigError for an unknown name.
 std::unique_ptr<Solver> make_solver(const SolverOptions& opt);
 
 }  // namespace agglo::es

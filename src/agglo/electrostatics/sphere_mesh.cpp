@@ -42,10 +42,16 @@ UnitSphereMesh icosphere(int level) {
   return m;
 }
 
+namespace {
+int vertices_at(int level) { return 10 * (1 << (2 * level)) + 2; }
+}  // namespace
+
 int icosphere_level_for(int n) {
   int k = 0;
-  while (k < 6 && 10 * (1 << (2 * k)) + 2 < n) ++k;
+  while (k < 6 && vertices_at(k) < n) ++k;
   return k;
 }
+
+int icosphere_vertices_for(int n) { return vertices_at(icosphere_level_for(n)); }
 
 }  // namespace agglo::es

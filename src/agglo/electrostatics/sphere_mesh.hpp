@@ -18,4 +18,7 @@ UnitSphereMesh icosphere(int level);
 // Smallest level whose vertex count is >= n (capped at 6).
 int icosphere_level_for(int n);
 
+// Vertices of the icosphere icosphere_level_for(n) picks: 10*4^k + 2.
+int icosphere_vertices_for(int n);
+
 }  // namespace agglo::es

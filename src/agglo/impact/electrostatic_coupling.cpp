@@ -9,7 +9,8 @@
 
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
-#include "agglo/core/settings_electrostatics.hpp"
+#include "agglo/electrostatics/coulomb_solver.hpp"
+#include "agglo/electrostatics/keys.hpp"
 
 namespace agglo::impact {
 
@@ -20,7 +21,7 @@ namespace {
 // the dipoles it induces in touching spheres (~ 4 pi eps0 kappa_0 r^2 E^2), exceeds the largest Coulomb
 // force between two of the charges at contact, q_i q_k / (4 pi eps0 kappa_0 (r_i + r_k)^2).
 std::string overlap_advice(const dem::Particles& p, const es::EsConfig& es) {
-  const auto& keys = settings::electrostatics_settings().solver;
+  const auto& keys = es::solver_keys();
   const double E = norm(es.external_field);
   const double k = 4.0 * constants::pi * constants::eps0 * es.medium_permittivity;
   double field = 0.0, charges = 0.0;
@@ -42,7 +43,7 @@ ElectrostaticForce::ElectrostaticForce(const CouplingSettings& s) : s_(s), solve
 
 void ElectrostaticForce::make_fast_path() {
   es::SolverOptions o = s_.es.options;
-  o.solver = "coulomb";
+  o.solver = es::kCoulombSolver;
   coulomb_ = es::make_solver(o);
 }
 

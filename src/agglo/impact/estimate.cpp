@@ -67,10 +67,10 @@ std::vector<Term> run_time_terms(const ImpactCase& c, double speed, const std::s
   return t;
 }
 
-// True when the run solves for induced charges (a solver other than coulomb and a permittivity that
+// True when the run solves for induced charges (a solver that induces them and a permittivity that
 // differs from the medium's); with kappa = kappa_0 every solver reduces to point charges.
 bool induced_charges(const ImpactCase& c) {
-  if (!c.electrostatics || c.coupling.es.options.solver == "coulomb") return false;
+  if (!c.electrostatics || !es::induces_charges(c.coupling.es.options)) return false;
   bool differs = c.projectile.permittivity != c.medium_permittivity;
   if (c.agglomerate.shape == "list")
     for (const auto& p : c.agglomerate.particles) differs = differs || p.permittivity != c.medium_permittivity;

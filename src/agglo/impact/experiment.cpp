@@ -14,6 +14,7 @@
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_electrostatics.hpp"
+#include "agglo/electrostatics/keys.hpp"
 
 namespace agglo::impact {
 
@@ -57,7 +58,7 @@ void check_relaxed_contacts(const dem::DemSystem& sys, const ImpactCase& c,
   std::vector<std::pair<std::uint32_t, std::uint32_t>> broken, made;
   std::set_difference(before.begin(), before.end(), after.begin(), after.end(), std::back_inserter(broken));
   std::set_difference(after.begin(), after.end(), before.begin(), before.end(), std::back_inserter(made));
-  const auto& es = settings::electrostatics_settings().solver;
+  const auto& es = es::solver_keys();
   const Vec3 e = c.coupling.es.external_field;
   const std::string cause =
       norm(e) > 0.0 ? fmt::format("the applied field {} = [{:g}, {:g}, {:g}] V/m (lower it)", es.external_field.dotted(),

@@ -27,7 +27,7 @@ using constants::pi;
 class BemSolver final : public Solver {
  public:
   explicit BemSolver(const SolverOptions& o) : opt_(o), unit_(bem::fibonacci_sphere(o.patches_per_sphere)) {}
-  std::string name() const override { return "bem"; }
+  std::string name() const override { return std::string(kBemSolver); }
   Solution solve(const Problem& p) override;
   std::vector<SurfaceSample> surface() const override { return surface_; }
   // The convex hull of the patch centres of each sphere (cached per patch count), indices offset

@@ -5,7 +5,7 @@
 // converging throws agglo::NumericalError.
 #include <memory>
 
-#include "agglo/electrostatics/solver.hpp"
+#include "agglo/electrostatics/registry.hpp"
 
 namespace agglo::es {
 
@@ -15,6 +15,11 @@ namespace bem {
 inline constexpr int kMinPatchesPerSphere = 12;
 }  // namespace bem
 
+inline constexpr std::string_view kBemSolver = "bem";
+
 std::unique_ptr<Solver> make_bem_solver(const SolverOptions& opt);
+
+// Its entry in the solver registry (registry.hpp), with its cost model.
+SolverType bem_solver_type();
 
 }  // namespace agglo::es

@@ -10,7 +10,7 @@
 #include "agglo/core/cancel.hpp"
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
-#include "agglo/core/settings_electrostatics.hpp"
+#include "agglo/electrostatics/keys.hpp"
 #include "agglo/electrostatics/gmres.hpp"
 #include "agglo/electrostatics/spectral/degree.hpp"
 #include "agglo/electrostatics/spectral/harmonics.hpp"
@@ -33,7 +33,7 @@ using constants::pi;
 class SpectralSolver final : public Solver {
  public:
   explicit SpectralSolver(const SolverOptions& opt) : opt_(opt) {}
-  std::string name() const override { return "spectral"; }
+  std::string name() const override { return std::string(kSpectralSolver); }
   Solution solve(const Problem& p) override;
   std::vector<SurfaceSample> surface() const override;
   std::vector<std::array<int, 3>> surface_triangles() const override;
@@ -233,7 +233,7 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const std::vector
     throw NumericalError(fmt::format(
         "spectral: GMRES did not converge in {} iterations (relative residual {:.3g} > {:.3g}); raise "
         "{} or check the configuration",
-        gr.iterations, gr.residual, tol, settings::electrostatics_settings().solver.max_iterations.dotted()));
+        gr.iterations, gr.residual, tol, solver_keys().max_iterations.dotted()));
   return gr;
 }
 

@@ -22,8 +22,14 @@
 // agglo::NumericalError.
 #include <memory>
 
-#include "agglo/electrostatics/solver.hpp"
+#include "agglo/electrostatics/registry.hpp"
 
 namespace agglo::es {
+// The default solver (solver.hpp).
+inline constexpr std::string_view kSpectralSolver = kDefaultSolver;
+
 std::unique_ptr<Solver> make_spectral_solver(const SolverOptions& opt);
+
+// Its entry in the solver registry (registry.hpp), with its cost model.
+SolverType spectral_solver_type();
 }  // namespace agglo::es

@@ -27,21 +27,17 @@ class Electrostatics final : public Command {
   }
 
   // Per solver, one thread, against the bound with every GMRES iteration allowed (real solves stop
-  // earlier, so the time is an upper bound too): spectral 6e-10 s per pair coefficient (the shipped
-  // tetrahedron 0.10 s for 1.77e8; the 30-sphere cluster of tests/cli/interrupt_phases.sh 0.51 s for
-  // 2.32e9), bem with the FMM 1.3e-8 s per near-field interaction (that cluster, 2000 patches: 272 s
-  // for 2.07e10), bem direct 1.3e-9 s per interaction (400 patches: 38 s for 2.88e10), coulomb the same.
+  // earlier, so the time is an upper bound too): each solver type's measured rate (registry.hpp).
   double seconds_per_step(Config& cfg) const override {
     auto root = cfg.root();
-    const es::EsConfig ec = es::parse_electrostatics(settings::electrostatics_settings().solver.t.open(root));
-    if (ec.options.solver == "spectral") return 6e-10;
-    return ec.options.solver == "bem" && ec.options.matvec == "fmm" ? 1.3e-8 : 1.3e-9;
+    const es::EsConfig ec = es::parse_electrostatics(es::solver_keys().t.open(root));
+    return es::seconds_per_interaction(ec.options);
   }
 
   Estimate lower_bound(Config& cfg) const override {
     const auto& keys = settings::electrostatics_settings();
     auto root = cfg.root();
-    const es::EsConfig ec = es::parse_electrostatics(keys.solver.t.open(root));
+    const es::EsConfig ec = es::parse_electrostatics(es::solver_keys().t.open(root));
     return es::static_solve_lower_bound(ec.options, static_cast<double>(keys.particles.t.elements(root).size()),
                                         keys.output.surface.read(keys.output.t.open(root)));
   }

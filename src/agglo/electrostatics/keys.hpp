@@ -1,0 +1,66 @@
+#pragma once
+// The [electrostatics] settings table (solver and coupling options, read by the electrostatics
+// command and by charged impact cases), declared beside the solvers it names: the allowed values of
+// electrostatics.solver are the names of the solver registry (registry.hpp), so a registered solver
+// is selectable from a case file with no further edit.
+#include "agglo/core/settings.hpp"
+#include "agglo/electrostatics/bem/bem_solver.hpp"
+#include "agglo/electrostatics/registry.hpp"
+
+namespace agglo::es {
+
+struct SolverKeys {
+  settings::Table t{"electrostatics", "electrostatics, collide, vcrit, breakup", "electrostatic solver and coupling"};
+  settings::Choice solver{
+      t, {"electrostatics.solver", "", "solver of the induced charges"}, kDefaultSolver, &solver_names};
+  settings::Real medium_permittivity{
+      t,
+      {"electrostatics.medium_permittivity", "", "relative permittivity kappa_0 of the medium"},
+      1.0,
+      Range::positive()};
+  settings::Real min_gap{t,
+                         {"electrostatics.min_gap", "", "g_min: electrostatic radius r_E = r / (1 + g_min/2)"},
+                         0.01,
+                         Range::closed_open(0.0, 1.0)};
+  settings::Real update_fraction{t,
+                                 {"electrostatics.update_fraction", "",
+                                  "re-solve after a move of this fraction of the smallest electrostatic gap"},
+                                 0.01,
+                                 Range::open_closed(0.0, 1.0)};
+  settings::Integer update_interval{
+      t, {"electrostatics.update_interval", "steps", "also re-solve every N steps (0 = off)"}, 0, 0, 1000000000};
+  settings::Vector3 external_field{
+      t, {"electrostatics.external_field", "V/m", "uniform external field"}, Vec3{0, 0, 0}, Range::any()};
+  settings::Bool force_scale_chi{
+      t, {"electrostatics.force_scale_chi", "", "scale forces by chi^(2/5) (reduced modulus)"}, false};
+  settings::Choice hold{t,
+                        {"electrostatics.hold", "", "forces between solves: held, or corrected pairwise"},
+                        "constant",
+                        {"constant", "pair_corrected"}};
+  settings::Integer max_degree{
+      t, {"electrostatics.max_degree", "", "spectral: fixed degree (0 = adaptive)"}, 0, 0, 200};
+  settings::Real target_accuracy{t,
+                                 {"electrostatics.target_accuracy", "", "spectral: accuracy of the adaptive degree"},
+                                 1e-4,
+                                 Range::closed_open(1e-12, 1.0)};
+  settings::Integer max_degree_limit{
+      t, {"electrostatics.max_degree_limit", "", "spectral: highest adaptive degree"}, 80, 2, 200};
+  settings::Integer patches_per_sphere{t,
+                                       {"electrostatics.patches_per_sphere", "", "bem: surface patches per sphere"},
+                                       2000,
+                                       bem::kMinPatchesPerSphere,
+                                       10000000};
+  settings::Real tolerance{
+      t, {"electrostatics.tolerance", "", "bem, spectral: relative GMRES tolerance"}, 1e-6, Range::open(0.0, 1.0)};
+  settings::Integer max_iterations{t, {"electrostatics.max_iterations", "", "most GMRES iterations"}, 200, 1, 100000};
+  settings::Choice matvec{t, {"electrostatics.matvec", "", "bem: matrix-vector product"}, "fmm", {"fmm", "direct"}};
+  settings::Integer fmm_order{
+      t, {"electrostatics.fmm_order", "", "bem: FMM expansion order (0 = automatic)"}, 0, 0, 40};
+  settings::Integer fmm_leaf_size{
+      t, {"electrostatics.fmm_leaf_size", "", "bem: patches per FMM leaf box"}, 64, 1, 100000};
+};
+
+// The keys, listed in the settings catalogue (agglo config) before [[particles]].
+const SolverKeys& solver_keys();
+
+}  // namespace agglo::es
