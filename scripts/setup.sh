@@ -7,9 +7,20 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=scripts/packages.sh
 source scripts/packages.sh
-install_missing $RUN_PKGS
+install_missing $BUILD_PKGS
+# The Python packages (mostly downloads) are installed while the build compiles.
+py_log=$(mktemp)
+install_missing $PY_PKGS >"$py_log" 2>&1 &
+py_pid=$!
+trap 'kill "$py_pid" 2>/dev/null || true; rm -f "$py_log"' EXIT
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null
 cmake --build build -j"$(nproc)" --target agglo _agglo
+if ! wait "$py_pid"; then
+  cat "$py_log" >&2
+  echo "setup: installing $PY_PKGS failed (output above)" >&2
+  exit 1
+fi
+cat "$py_log"
 # Make `import agglo` work for /usr/bin/python3: a .pth file in the site folder for local packages
 # pointing at this build's module (docs/python.md).
 site=$(/usr/bin/python3 -c 'import sys; print(f"/usr/local/lib/python3.{sys.version_info.minor}/dist-packages")')
