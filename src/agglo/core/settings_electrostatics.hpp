@@ -12,8 +12,9 @@ struct ElectrostaticsSettings {
     Table t{"electrostatics", "electrostatics, collide, vcrit, breakup", "electrostatic solver and coupling"};
     Choice solver{t, {"electrostatics.solver", "", "solver of the induced charges"}, "spectral",
                   {"coulomb", "spectral", "bem"}};
+    // At most 1e6, as particles.permittivity (1e300 was accepted, issue 23 item 10).
     Real medium_permittivity{t, {"electrostatics.medium_permittivity", "", "relative permittivity kappa_0 of the medium"},
-                             1.0, Range::positive()};
+                             1.0, Range::open_closed(0.0, 1e6)};
     Real min_gap{t, {"electrostatics.min_gap", "", "g_min: electrostatic radius r_E = r / (1 + g_min/2)"}, 0.01,
                  Range::closed_open(0.0, 1.0)};
     Real update_fraction{t,
