@@ -103,11 +103,12 @@ class ThreadScope {
 ElectrostaticResult electrostatic_forces(py::object positions, py::object radii, py::object charges,
                                          py::object permittivities, py::object solver_name,
                                          py::object medium_permittivity, py::object external_field,
-                                         py::object min_gap, bool surface, py::object threads, py::kwargs options) {
+                                         py::object min_gap, bool surface, py::object threads, py::object max_steps,
+                                         py::object max_memory, py::kwargs options) {
   const EsInput in = read_es_input({std::move(positions), std::move(radii), std::move(charges),
                                     std::move(permittivities), std::move(solver_name), std::move(medium_permittivity),
                                     std::move(external_field), std::move(min_gap), std::move(threads),
-                                    std::move(options)});
+                                    std::move(max_steps), std::move(max_memory), surface, std::move(options)});
   std::unique_ptr<es::Solver> solver;
   es::Solution sol;
   // On the worker of run_released: Ctrl-C sets the run's cancel token, which the solver polls
@@ -142,13 +143,14 @@ ConfigError naming the pair and the gap.
 Parameters
 ----------
 positions : array_like (N, 3)
-    Sphere centres [m], N >= 1.
+    Sphere centres [m], N >= 1, each coordinate in [-1000, 1000] m.
 radii : array_like (N,) or scalar
-    Sphere radii [m], > 0.
+    Sphere radii [m], in (0, 0.1].
 charges : array_like (N,) or scalar
-    Free charge of each sphere [C], spread uniformly over its surface.
+    Free charge of each sphere [C], in [-1e-3, 1e-3], spread uniformly over its surface.
 permittivities : array_like (N,) or scalar
-    Relative permittivity kappa_p of each sphere, > 0 (1 in vacuum or air = no polarisation).
+    Relative permittivity kappa_p of each sphere, in (0, 1e6] (1 in vacuum or air = no polarisation).
+    (The ranges of the [[particles]] keys of a case file, docs/config.md.)
 solver : str
     "spectral" (default): spherical harmonics up to degree L per sphere, exponentially convergent,
     L chosen from the smallest gap for target_accuracy (docs/model.md §B.2 item 3).
@@ -157,7 +159,7 @@ solver : str
     "coulomb": point charges in the medium, no polarisation, zero torque; exact when every
     kappa_p equals medium_permittivity (docs/model.md §B.2 item 1).
 medium_permittivity : float
-    Relative permittivity kappa_0 of the medium, > 0 (default 1).
+    Relative permittivity kappa_0 of the medium, in (0, 1e6] (default 1).
 external_field : array_like (3,) or None
     Uniform applied field [V/m] (potential -E.x, zero at the origin); None = no field.
 min_gap : float or None
@@ -171,6 +173,12 @@ threads : int or None
     OpenMP threads of the solve (0 = all cores; None = the OpenMP default, e.g. OMP_NUM_THREADS).
     The GIL is released while solving, so other Python threads run meanwhile; Ctrl-C stops the solve
     within a fraction of a second and raises agglo.InterruptedError (a KeyboardInterrupt).
+max_steps, max_memory : number, str or None
+    Budgets of the solve (docs/limits.md), as for the command functions: interaction evaluations
+    (e.g. 2e12) and bytes or a size text ("8G"); None = AGGLO_MAX_STEPS / AGGLO_MAX_MEMORY or the
+    defaults. The solve's estimate (that of `agglo electrostatics`) beyond one raises LimitError
+    before anything is allocated (e.g. patches_per_sphere=10**7, or 1e5 spheres, refused from their
+    count before their positions are checked pair by pair).
 **options
     Solver settings, named and range-checked as the [electrostatics] keys of a case file
     (docs/config.md):
@@ -196,8 +204,11 @@ Raises
 ------
 ConfigError
     Bad input, with a one-line message naming the argument, the value and what is allowed: array
-    shape or dtype, non-finite values, radius or permittivity <= 0, an unknown option or a value
-    outside its range, touching or overlapping spheres.
+    shape or dtype, a value outside its range (non-finite, radius or permittivity <= 0, a radius above
+    0.1 m, a charge above 1e-3 C), an unknown option or a value outside its range, touching or
+    overlapping spheres.
+LimitError
+    The solve's estimated steps or memory exceed a budget (max_steps, max_memory).
 NumericalError
     The solver did not converge (GMRES reached max_iterations).
 InterruptedError
@@ -251,7 +262,8 @@ void bind_electrostatic_forces(py::module_& m) {
   m.def("electrostatic_forces", &electrostatic_forces, kForcesDoc, py::arg("positions"),
         py::arg("radii"), py::arg("charges"), py::arg("permittivities"), py::arg("solver") = "spectral",
         py::arg("medium_permittivity") = 1.0, py::arg("external_field") = py::none(),
-        py::arg("min_gap") = py::none(), py::arg("surface") = false, py::arg("threads") = py::none());
+        py::arg("min_gap") = py::none(), py::arg("surface") = false, py::arg("threads") = py::none(),
+        py::arg("max_steps") = py::none(), py::arg("max_memory") = py::none());
 }
 
 }  // namespace agglo::python

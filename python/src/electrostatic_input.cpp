@@ -11,8 +11,12 @@
 
 #include "agglo/core/config.hpp"
 #include "agglo/core/error.hpp"
+#include "agglo/core/settings_electrostatics.hpp"
 #include "agglo/electrostatics/config.hpp"
+#include "agglo/electrostatics/estimate.hpp"
 #include "agglo/electrostatics/validate_spheres.hpp"
+#include "agglo/run/budget.hpp"
+#include "agglo/run/command.hpp"
 
 namespace py = pybind11;
 
@@ -47,34 +51,43 @@ Array real_array(const py::object& o, const char* name) {
   return Array::ensure(a);
 }
 
+// "(must be in (0, 0.1] m, the range of particles.radius)": the range of the [[particles]] key a CLI case
+// would give the same value with.
+std::string range_rule(const Range& range, std::string_view key) {
+  return fmt::format("(must be in {}, the range of {})", range.describe(), key);
+}
+
 std::vector<Vec3> read_positions(const py::object& o) {
   const Array a = real_array(o, "positions");
   if (a.ndim() != 2 || a.shape(1) != 3 || a.shape(0) < 1)
     fail(fmt::format("positions has shape {} (must be (N, 3) with N >= 1 spheres, in m)", shape_text(a)));
+  const auto& key = settings::electrostatics_settings().particles.position;
   std::vector<Vec3> x(static_cast<std::size_t>(a.shape(0)));
   const double* p = a.data();
   for (std::size_t i = 0; i < x.size(); ++i) {
     x[i] = {p[3 * i], p[3 * i + 1], p[3 * i + 2]};
-    if (!isfinite(x[i]))
-      fail(fmt::format("positions[{}] = [{}, {}, {}] m (must be finite)", i, x[i].x, x[i].y, x[i].z));
+    if (!key.component_range().contains(x[i].x) || !key.component_range().contains(x[i].y) ||
+        !key.component_range().contains(x[i].z))
+      fail(fmt::format("positions[{}] = [{}, {}, {}] m {}", i, x[i].x, x[i].y, x[i].z,
+                       range_rule(key.component_range(), key.dotted())));
   }
   return x;
 }
 
-// One value per sphere (a scalar applies to all); `positive`: must be > 0 (else any finite value).
-std::vector<double> read_per_sphere(const py::object& o, const char* name, const char* unit, std::size_t n,
-                                    bool positive) {
+// One value per sphere (a scalar applies to all), within the range of the [[particles]] key `key`.
+std::vector<double> read_per_sphere(const py::object& o, const char* name, const settings::Real& key, std::size_t n) {
   const Array a = real_array(o, name);
   const bool scalar = a.ndim() == 0;
   if (!scalar && (a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != n))
     fail(fmt::format("{} has shape {} (must be ({},), one value per row of positions, or a scalar)", name,
                      shape_text(a), n));
+  const std::string_view unit = key.info().unit;
   std::vector<double> v(n);
   for (std::size_t i = 0; i < n; ++i) {
     v[i] = a.data()[scalar ? 0 : i];
-    const bool ok = std::isfinite(v[i]) && (!positive || v[i] > 0.0);
-    if (!ok)
-      fail(fmt::format("{}[{}] = {}{} (must be {})", name, i, v[i], unit, positive ? "> 0 and finite" : "finite"));
+    if (!key.range().contains(v[i]))
+      fail(fmt::format("{}[{}] = {}{}{} {}", name, i, v[i], unit.empty() ? "" : " ", unit,
+                       range_rule(key.range(), key.dotted())));
   }
   return v;
 }
@@ -165,6 +178,28 @@ void check_spheres(const es::Problem& p, const std::optional<double>& min_gap) {
   }
 }
 
+// max_steps and max_memory (a number, or a size text such as "8G"), else the environment's or the
+// defaults, as for the command functions (docs/limits.md). No output budget: nothing is written.
+run::Budgets read_budgets(const EsArguments& a) {
+  run::Budgets b = run::resolve_budgets({});
+  auto text = [](const py::object& o, const char* name) -> std::optional<std::string> {
+    if (o.is_none()) return std::nullopt;
+    if (py::isinstance<py::str>(o)) return o.cast<std::string>();
+    if (!py::isinstance<py::bool_>(o) && (PyIndex_Check(o.ptr()) || py::isinstance<py::float_>(o)))
+      return py::str(o).cast<std::string>();
+    fail(fmt::format("argument '{}' = {} (must be a number or a size text such as \"8G\", or None)", name,
+                     py::repr(o).cast<std::string>()));
+  };
+  const auto steps = text(a.max_steps, "max_steps"), memory = text(a.max_memory, "max_memory");
+  try {
+    if (steps) b.max_steps = run::parse_steps(*steps, "max_steps");
+    if (memory) b.max_memory_bytes = run::parse_size(*memory, "max_memory");
+  } catch (const ConfigError& e) {
+    fail(e.what());
+  }
+  return b;
+}
+
 std::optional<int> read_threads(const py::object& o) {
   if (o.is_none()) return std::nullopt;
   const std::string v = toml_value("threads", o);
@@ -188,10 +223,15 @@ EsInput read_es_input(const EsArguments& a) {
   EsInput in;
   const std::vector<Vec3> x = read_positions(a.positions);
   const std::size_t n = x.size();
-  const auto r = read_per_sphere(a.radii, "radii", " m", n, true);
-  const auto q = read_per_sphere(a.charges, "charges", " C", n, false);
-  const auto kappa = read_per_sphere(a.permittivities, "permittivities", "", n, true);
+  const auto& keys = settings::electrostatics_settings().particles;
+  const auto r = read_per_sphere(a.radii, "radii", keys.radius, n);
+  const auto q = read_per_sphere(a.charges, "charges", keys.charge, n);
+  const auto kappa = read_per_sphere(a.permittivities, "permittivities", keys.permittivity, n);
   const es::EsConfig ec = read_settings(a);
+  const run::Budgets budgets = read_budgets(a);
+  const bool surface = a.surface;
+  // Before the O(N^2) check of the positions: the sizes alone (1e5 spheres are refused at once).
+  run::check_budgets(es::static_solve_lower_bound(ec.options, static_cast<double>(n), surface), budgets, kWhere);
   in.options = ec.options;
   if (!a.min_gap.is_none()) in.min_gap = ec.min_gap;
   in.threads = read_threads(a.threads);
@@ -201,6 +241,10 @@ EsInput read_es_input(const EsArguments& a) {
   for (std::size_t i = 0; i < n; ++i)
     in.problem.spheres[i] = {x[i], in.min_gap ? es::electrostatic_radius(r[i], *in.min_gap) : r[i], q[i], kappa[i]};
   check_spheres(in.problem, in.min_gap);
+  Estimate e = es::static_solve_estimate(in.options, in.problem, surface);
+  e.memory.value += run::kProcessBaseBytes;
+  e.output = {};  // nothing is written
+  run::check_budgets(e, budgets, kWhere);
   return in;
 }
 

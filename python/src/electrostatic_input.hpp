@@ -9,7 +9,12 @@
 // accepted here exactly when the case file would accept it. With min_gap the radii are shrunk to
 // r_E = r / (1 + min_gap/2) (es::electrostatic_radius, docs/model.md §B.3), as in the DEM coupling and
 // the CLI; without it the spheres are solved as given. Touching or overlapping spheres are refused.
-// Every failure throws agglo::ConfigError with one line "agglo.electrostatic_forces: ...".
+// Sphere values outside the range of the [[particles]] key a case file would give them with
+// (particles.position, radius, charge, permittivity) are refused as there. The solve's cost is checked
+// against the budgets (max_steps, max_memory, else AGGLO_MAX_* or the defaults) as `agglo electrostatics`
+// checks it: the lower bound from the sphere count before the O(N^2) check of the positions, then the
+// estimate (es::static_solve_estimate; no output budget, nothing is written): agglo::run::LimitError.
+// Every other failure throws agglo::ConfigError with one line "agglo.electrostatic_forces: ...".
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +28,8 @@ namespace agglo::python {
 struct EsArguments {
   pybind11::object positions, radii, charges, permittivities;  // array-likes
   pybind11::object solver, medium_permittivity, external_field, min_gap, threads;
+  pybind11::object max_steps, max_memory;  // budgets (docs/limits.md): None, a number or a size text
+  bool surface = false;                    // the surface samples are returned (counted in the memory)
   pybind11::kwargs options;  // solver options by [electrostatics] key name
 };
 

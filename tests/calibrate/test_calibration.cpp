@@ -170,3 +170,27 @@ TEST(Calibration, LocalScatterMeasuresHowFarSingleRunsFallFromTheTrend) {
   const Result smooth = calibrate(s, synthetic([](const std::vector<double>& x) { return std::vector<double>{0.15 + 0.1 * x[0]}; }));
   EXPECT_LT(smooth.local_scatter[0], 1e-6);
 }
+
+// map_points, which the cost estimate of agglo calibrate multiplies by one vcrit search, is the number of
+// points calibrate() evaluates before its check, in one and two dimensions.
+TEST(Calibration, MapPointsCountsTheEvaluatedPoints) {
+  for (std::size_t d : {1U, 2U}) {
+    Spec s;
+    s.parameters = {{"a", 0.0, 1.0, false}, {"b", 1.0, 10.0, true}};
+    s.parameters.resize(d);
+    s.targets = {{"t", 0.7, 0.05}};
+    s.grid_points = 5;
+    s.refine_rounds = 2;
+    s.refine_points = 4;
+    std::size_t points = 0;
+    const Evaluator count = [&points](const std::vector<std::vector<double>>& pts, bool) {
+      points += pts.size();
+      std::vector<std::vector<Observation>> out;
+      for (const auto& x : pts) out.push_back({{x[0] + (x.size() > 1 ? 0.01 * x[1] : 0.0), 0.0}});
+      return out;
+    };
+    (void)calibrate(s, count);
+    EXPECT_EQ(static_cast<double>(points), map_points(s) + 1.0) << d;  // + the check at the best fit
+    EXPECT_EQ(map_points(s), d == 1 ? 5.0 + 2.0 * 4.0 : 25.0 + 2.0 * 16.0);
+  }
+}

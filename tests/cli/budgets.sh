@@ -55,6 +55,30 @@ PY
 err "[[particles]]" electrostatics "$T/many.toml"
 err "the memory budget" electrostatics "$T/many.toml"
 
+# A list agglomerate of 32 000 touching [[particles]] (a 32 x 32 x 32 lattice less 768): its overlap check
+# is O(N) (the DEM's cell grid), so --dry-run answers at once; the exhaustive pair scan took 34 s of CPU.
+/usr/bin/python3 - "$T/list.toml" << 'PY'
+import sys
+with open(sys.argv[1], "w") as f:
+    f.write('[agglomerate]\nshape = "list"\n')
+    for i in range(32000):
+        f.write("[[particles]]\nposition = [%g, %g, %g]\nradius = 1e-6\n"
+                % (2e-6 * (i % 32), 2e-6 * (i // 32 % 32), 2e-6 * (i // 1024)))
+PY
+/usr/bin/python3 - "$A" "$T/list.toml" << 'PY' || fail "--dry-run of a 32 000-particle list agglomerate"
+import resource, subprocess, sys
+r = subprocess.run([sys.argv[1], "-q", "collide", sys.argv[2], "--dry-run", "--max-output", "1T"],
+                   capture_output=True, text=True, timeout=60)
+cpu = resource.getrusage(resource.RUSAGE_CHILDREN)
+cpu = cpu.ru_utime + cpu.ru_stime
+assert r.returncode == 0 and "valid; estimated cost" in r.stdout, (r.returncode, r.stdout, r.stderr)
+assert cpu < 3.0, f"{cpu:.2f} s of CPU"  # 0.5 s measured
+print(f"ok   --dry-run of 32000 list particles: {cpu:.2f} s of CPU")
+PY
+sed -i 's/^position = \[0, 0, 0\]/position = [1e-6, 0, 0]/' "$T/list.toml"  # entry 0 half inside entry 1
+refusal=$($A -q collide "$T/list.toml" --dry-run 2>&1 >/dev/null)
+[[ "$refusal" == *"[[particles]] entries 0 and 1 overlap by 1e-06 m"* ]] || fail "overlap in a large list: $refusal"
+
 # Budgets: command line before environment before defaults; a low budget refuses a shipped case.
 err "the step budget 1e+03" collide "$DEM" --max-steps 1000
 AGGLO_MAX_STEPS=1000 err "the step budget 1e+03" collide "$DEM"

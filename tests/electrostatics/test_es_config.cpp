@@ -39,9 +39,9 @@ TEST(EsConfig, ValuesAndRangeErrors) {
   EXPECT_EQ(ec.options.matvec, "direct");
   EXPECT_EQ(ec.update_interval, 10);
   EXPECT_TRUE(ec.force_scale_chi);
-  for (const char* bad : {"medium_permittivity=0", "medium_permittivity=-1", "min_gap=-0.1", "update_fraction=0",
-                          "update_fraction=1.5", "solver='fast'", "matvec='gpu'", "tolerance=0", "max_degree=-1",
-                          "max_degree=100", "target_accuracy=2"}) {
+  for (const char* bad : {"medium_permittivity=0", "medium_permittivity=-1", "medium_permittivity=1e300", "min_gap=-0.1",
+                          "update_fraction=0", "update_fraction=1.5", "solver='fast'", "matvec='gpu'", "tolerance=0",
+                          "max_degree=-1", "max_degree=100", "target_accuracy=2"}) {
     auto c = Config::from_string(std::string("[electrostatics]\n") + bad + "\n", "case.toml");
     try {
       parse_electrostatics(c.root().section("electrostatics"));

@@ -179,6 +179,11 @@ class Mutant:
         self.args_tail = []              # further options appended as is
         self.case_arg = None             # replaces the case path when set
         self.notes = []
+        # Oracles of the targeted classes (ISSUE23_CLASSES), checked besides the general ones:
+        self.expect_rc = None            # exit codes the mutant must end with (it is invalid by construction)
+        self.must_name = None            # text an exit 2 or 3 message must hold (the cause of the failure)
+        self.max_message = None          # longest message allowed [characters]
+        self.checkpoint = None           # "fifo", "zero" or "big": checkpoint.bin of a --resume folder
 
 
 def key_of_line(line):
@@ -464,7 +469,140 @@ OPERATORS = [(mut_file_value, 12), (mut_file_scale, 12), (mut_file_lines, 6), (m
              (mut_options, 4), (mut_sweep, 8)]
 
 
+# ---------------------------------------------------------------------------------------------
+# Targeted classes (issue 23): the inputs behind its items, each with an oracle of its own, since the
+# defects they found were slow refusals, silent acceptance or misleading words rather than crashes.
+# A fraction ISSUE23_SHARE of the mutants (drawn from a stream of their own, so that every other mutant
+# stays what it was) is one of these classes alone, in place of the ordinary mutant of that index.
+ISSUE23_SHARE = 0.06
+SLOW_REFUSAL_S = 20.0  # an exit 2 after this long did work before its checks (45 s for --seeds 100000)
+CALIBRATION = "calibrate_seed000_tetrahedron"
+HUGE_SEEDS = ["100000", "1000000000", "18446744073709551616", "1e9", "99999999999", "-1", "0", "2.5", ""]
+ARRAY_VALUES = ["[{}]", "[[{}]]", "[]", "[{}, {}]", "[{}, 0.0, 0.0]"]
+LIST_TARGET = ("\n[[particles]]\nposition = [0.0, 0.0, 0.0]\nradius = 10e-6\n"
+               "\n[[particles]]\nposition = [0.0, 0.0, 1.9999e-5]\nradius = 10e-6\n"
+               "\n[[particles]]\nposition = [0.0, 1.9999e-5, 0.0]\nradius = 10e-6\n"
+               "\n[[particles]]\nposition = [0.0, 0.0, {}]\nradius = 10e-6\n")  # the last one alone
+
+
+def issue23_seeds(rng, m, source_dir):
+    """Huge or malformed --seeds (acoustic --seeds 1e9 planned every member before the budget check)."""
+    m.args_tail += ["--seeds", rng.choice(HUGE_SEEDS)]
+    m.notes.append("issue23 --seeds")
+
+
+def issue23_array(rng, m, source_dir, schema):
+    """A NumPy-like array for a scalar key (np.array([1.5]) became 1 through Case.set): refused."""
+    keys = [(k, t) for k, t, _ in schema.get(m.command, []) if t in ("real", "integer", "boolean")]
+    key, typ = rng.choice(keys) if keys else ("material.density", "real")
+    v = rng.choice(["1.5", "3.7", "1", "0.5", "2500"])
+    m.sets.append(f"{key}={rng.choice(ARRAY_VALUES).format(v, v)}")
+    m.expect_rc = {2}
+    m.notes.append(f"issue23 array --set {key}")
+
+
+def issue23_long_key(rng, m, source_dir):
+    """An over-long unknown key in the case file (a 1 MB key was echoed whole in the error line)."""
+    n = rng.choice([1000, 100000, 1000000])
+    m.text = m.text + b"\n" + (b"k" * n) + b" = 1\n"
+    m.expect_rc, m.max_message = {2}, 2000
+    m.notes.append(f"issue23 key of {n} bytes")
+
+
+def issue23_checkpoint(rng, m, source_dir):
+    """--resume into a folder whose checkpoint.bin is a FIFO, /dev/zero or larger than the memory budget
+    (the FIFO blocked for ever, /dev/zero grew to 1.4 GB): refused in one line."""
+    if m.command not in ("collide", "acoustic"):
+        return issue23_seeds(rng, m, source_dir)
+    m.checkpoint = rng.choice(["fifo", "zero", "big"])
+    m.out = "@checkpoint"
+    m.args_tail += ["--resume"]
+    m.expect_rc = {2}
+    m.notes.append(f"issue23 checkpoint {m.checkpoint}")
+
+
+def issue23_calibrate(rng, m, source_dir):
+    """agglo calibrate --dry-run with the same [[parameter]] key twice, an integer key, or a grid beyond
+    the step budget (all three were accepted: two best values for one key, a best scan_points of 5.4,
+    and "0 steps"). Its target cases are named by absolute path (the case is copied elsewhere)."""
+    with open(os.path.join(source_dir, "cases", CALIBRATION + ".toml"), "rb") as f:
+        text = f.read()
+    cases = os.path.join(source_dir, "cases").encode()
+    text = re.sub(rb'(?m)^case = "', b'case = "' + cases + b"/", text)
+    m.case, m.command, m.extra, m.sets = Case("calibrate", CALIBRATION, []), "calibrate", [], []
+    op = rng.choice(["duplicate", "integer", "grid"])
+    if op == "duplicate":  # the second parameter (material.restitution) fits the first one's key again
+        m.sets = ['parameter.1.key="material.youngs_modulus"', "parameter.1.lower=1e9", "parameter.1.upper=1e10"]
+        m.must_name = "is also the key of [[parameter]] 0"
+    elif op == "integer":
+        key = rng.choice(["vcrit.scan_points", "time.max_extensions", "breakup.samples", "vcrit.points_per_round"])
+        m.sets = [f"parameter.1.key={json.dumps(key)}", "parameter.1.lower=4", "parameter.1.upper=12"]
+        m.must_name = "is a key of type integer"
+    else:
+        m.sets = ["calibrate.grid_points=101", "calibrate.refine_points=101",
+                  f"calibrate.refine_rounds={rng.choice([3, 10])}"]
+        m.must_name = "step budget"
+    m.text = text
+    m.args_tail += ["--dry-run"]
+    m.expect_rc = {2}
+    m.notes.append(f"issue23 calibrate {op}")
+
+
+def issue23_isolated(rng, m, source_dir):
+    """A list agglomerate with a primary that touches nothing: an error (exit 3, naming it), never an
+    outcome (it ended "undecided", exit 0)."""
+    stem = rng.choice(["seed000_neutral_tetrahedron", "seed000_neutral_square"])
+    with open(os.path.join(source_dir, "cases", stem + ".toml"), "rb") as f:
+        text = f.read()
+    text = re.sub(rb'(?m)^shape = "\w+"', b'shape = "list"', text)
+    text = re.sub(rb"(?m)^orientation = .*$", b"", text)
+    far = rng.choice(["1e-3", "5e-5", "-2e-4"])
+    m.case = Case(rng.choice(["collide", "vcrit", "breakup"]), stem, SHORT_DEM)
+    m.command = m.case.command
+    m.sets = SHORT_DEM + {"vcrit": VCRIT, "breakup": BREAKUP}.get(m.command, [])
+    m.extra = []
+    m.text = text + LIST_TARGET.format(far).encode()
+    m.expect_rc, m.must_name = {2, 3}, "not one agglomerate"
+    m.notes.append(f"issue23 isolated primary {m.command}")
+
+
+def issue23_field(rng, m, source_dir):
+    """A charged run in a field of 1e9 V/m fails; the message must name the field (it advised to raise
+    electrostatics.min_gap or lower the impact speed)."""
+    stem = rng.choice(["seed000_charged_tetrahedron_k1", "seed000_charged_square_k1"])
+    with open(os.path.join(source_dir, "cases", stem + ".toml"), "rb") as f:
+        m.text = f.read()
+    m.case = Case("collide", stem, SHORT_CHARGED)
+    m.command, m.extra = "collide", []
+    e = rng.choice(["1e9", "-1e9", "5e8"])
+    m.sets = SHORT_CHARGED + [f"electrostatics.external_field={rng.choice(['[{}, 0.0, 0.0]', '[0.0, {}, 0.0]']).format(e)}"]
+    m.must_name = "electrostatics.external_field"
+    m.notes.append("issue23 field")
+
+
+ISSUE23_CLASSES = ["seeds", "array", "long_key", "checkpoint", "calibrate", "isolated", "field"]
+
+
+def issue23_mutant(seed, index, runs, source_dir, schema):
+    """Mutant `index` as one targeted class, or None (the ordinary mutant of that index)."""
+    rng = random.Random(f"agglo-fuzz-issue23/{seed}/{index}")
+    if rng.random() >= ISSUE23_SHARE:
+        return None
+    case = rng.choice([r for r in runs if r.command != "sweep"] + [r for r in runs if r.command == "sweep"][:1])
+    with open(os.path.join(source_dir, "cases", case.stem + ".toml"), "rb") as f:
+        m = Mutant(case, f.read())
+    kind = rng.choice(ISSUE23_CLASSES)
+    if kind == "array":
+        issue23_array(rng, m, source_dir, schema)
+    else:
+        globals()["issue23_" + kind](rng, m, source_dir)
+    return m
+
+
 def make_mutant(seed, index, runs, source_dir, schema):
+    targeted = issue23_mutant(seed, index, runs, source_dir, schema)
+    if targeted is not None:
+        return targeted
     rng = random.Random(f"agglo-fuzz/{seed}/{index}")
     command = rng.choice(["collide", "vcrit", "breakup", "electrostatics", "acoustic", "sweep"])
     case = rng.choice([r for r in runs if r.command == command])
@@ -510,6 +648,20 @@ def resolve_out(m, work):
         os.makedirs(d)
         os.chmod(d, 0o555)
         return os.path.join(d, "out")
+    if o == "@checkpoint":  # the folder of an interrupted run whose checkpoint.bin is not one
+        d = os.path.join(work, "resumed")
+        os.makedirs(d)
+        with open(os.path.join(d, "run.json"), "w") as f:
+            json.dump({"program": "agglo", "command": m.command, "status": "incomplete"}, f)
+        ck = os.path.join(d, "checkpoint.bin")
+        if m.checkpoint == "fifo":
+            os.mkfifo(ck)
+        elif m.checkpoint == "zero":
+            os.symlink("/dev/zero", ck)
+        else:  # sparse: 4 GiB on no disk blocks, above the memory budget of BUDGET_ENV
+            with open(ck, "wb") as f:
+                f.truncate(4 << 30)
+        return d
     if o == "@dots":
         return os.path.join(work, "a", "..", "..", os.path.basename(work), "dots")
     if o == "@unicode":
@@ -658,6 +810,7 @@ def run_one(args, runs, schema, index, keep=None):
                 finding = f"exit 0 with a non-finite output: {bad}"
         elif not (msg.endswith("\n") and not LINE_BREAKS.search(msg[:-1])):
             finding = f"exit {rc} with a message of {len(msg.splitlines())} lines/control characters: {msg[:200]!r}"
+        finding = finding or targeted_finding(m, rc, wall, msg)
         engine = rc in (0, 3) or rc is None or started_engine(work)
         if keep:
             os.makedirs(keep, exist_ok=True)
@@ -674,11 +827,26 @@ def run_one(args, runs, schema, index, keep=None):
         shutil.rmtree(work, ignore_errors=True)
 
 
+def targeted_finding(m, rc, wall, msg):
+    """The oracles of the targeted classes (and a slow refusal, for every mutant), or None."""
+    if m.expect_rc and rc not in m.expect_rc:
+        return f"exit {rc} where the mutation must be refused (exit {'/'.join(map(str, sorted(m.expect_rc)))}): " \
+               f"{first_line(msg)}"
+    if m.must_name and rc in (2, 3) and m.must_name not in msg:
+        return f"exit {rc} without naming {m.must_name}: {first_line(msg)}"
+    if m.max_message and len(msg) > m.max_message:
+        return f"a message of {len(msg)} characters: {msg[:200]!r}"
+    if rc == 2 and wall > SLOW_REFUSAL_S:
+        return f"slow refusal: exit 2 after {wall:.0f} s: {first_line(msg)}"
+    return None
+
+
 def signature(r):
     """Findings of one kind (crash by signal, exit code, non-finite column, long message, hang) from
     the same kinds of mutation are reported together."""
     f = r["finding"]
-    m = re.match(r"crash: killed by signal \w+|crash: exit \d+|hang|exit \d+ with a message", f)
+    m = re.match(r"crash: killed by signal \w+|crash: exit \d+|hang|exit \d+ with a message|exit \d+ where the "
+                 r"mutation must be refused|exit \d+ without naming \S+|a message of|slow refusal", f)
     if m:
         kind = m.group(0)
     else:  # exit 0 with a non-finite output: FOLDER/FILE: line N column 'C' = V
@@ -702,8 +870,8 @@ def case_diff(source, m):
         orig = f.read()
     if orig == m.text:
         return ""
-    a = [ascii(l) for l in orig.split(b"\n")]
-    b = [ascii(l) for l in m.text.split(b"\n")]
+    a = [ascii(l)[:300] for l in orig.split(b"\n")]
+    b = [ascii(l)[:300] for l in m.text.split(b"\n")]
     d = list(difflib.unified_diff(a, b, "case", "mutant", n=0, lineterm=""))[2:]
     return "\n".join(d[:12]) + ("\n..." if len(d) > 12 else "")
 

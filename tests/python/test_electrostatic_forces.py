@@ -2,6 +2,7 @@
 import json
 import math
 import subprocess
+import time
 import tomllib
 
 import numpy as np
@@ -176,11 +177,11 @@ GOOD = dict(positions=[[0.0, 0.0, 0.0], [0.0, 0.0, 30e-6]], radii=[10e-6, 10e-6]
 
 @pytest.mark.parametrize("change, expected", [
     (dict(positions=[[0.0, 0.0], [0.0, 1.0]]), "positions has shape (2, 2) (must be (N, 3)"),
-    (dict(positions=[[0.0, 0.0, math.nan], [0.0, 0.0, 30e-6]]), "positions[0] = [0, 0, nan] m (must be finite)"),
-    (dict(radii=[10e-6, -1e-6]), "radii[1] = -1e-06 m (must be > 0 and finite)"),
+    (dict(positions=[[0.0, 0.0, math.nan], [0.0, 0.0, 30e-6]]), "positions[0] = [0, 0, nan] m (must be in [-1000, 1000] m, the range of particles.position)"),
+    (dict(radii=[10e-6, -1e-6]), "radii[1] = -1e-06 m (must be in (0, 0.1] m, the range of particles.radius)"),
     (dict(radii=[10e-6, 10e-6, 10e-6]), "radii has shape (3,) (must be (2,)"),
-    (dict(charges=[1e-14, math.inf]), "charges[1] = inf C (must be finite)"),
-    (dict(permittivities=[0.0, 5.0]), "permittivities[0] = 0 (must be > 0 and finite)"),
+    (dict(charges=[1e-14, math.inf]), "charges[1] = inf C (must be in [-0.001, 0.001] C, the range of particles.charge)"),
+    (dict(permittivities=[0.0, 5.0]), "permittivities[0] = 0 (must be in (0, 1e+06], the range of particles.permittivity)"),
     (dict(charges=["a", "b"]), "charges has dtype <U1 (must be real numbers"),
     (dict(radii=np.array([1e-5, 1e-5], dtype=complex)), "radii has dtype complex128"),
     (dict(external_field=[1.0, 2.0]), "external_field has shape (2,) (must be (3,), in V/m, or None)"),
@@ -194,6 +195,14 @@ GOOD = dict(positions=[[0.0, 0.0, 0.0], [0.0, 0.0, 30e-6]], radii=[10e-6, 10e-6]
     (dict(degree=10), "unknown option 'degree' (allowed: max_degree, target_accuracy, max_degree_limit, "
                       "patches_per_sphere, tolerance, max_iterations, matvec, fmm_order, fmm_leaf_size)"),
     (dict(threads=-1), "argument 'threads' = -1 (must be a whole number >= 0"),
+    # The physical ranges of the CLI's [[particles]] and [electrostatics] keys (issue 23 item 10: all ran).
+    (dict(radii=10.0), "radii[0] = 10 m (must be in (0, 0.1] m, the range of particles.radius)"),
+    (dict(charges=1.0), "charges[0] = 1 C (must be in [-0.001, 0.001] C"),
+    (dict(positions=[[0.0, 0.0, 0.0], [0.0, 0.0, 2e3]]), "positions[1] = [0, 0, 2000] m (must be in [-1000, 1000] m"),
+    (dict(permittivities=1e7), "permittivities[0] = 10000000 (must be in (0, 1e+06]"),
+    (dict(medium_permittivity=1e300), "argument 'medium_permittivity' = 1e+300: out of range, allowed (0, 1e+06]"),
+    (dict(max_steps="lots"), "max_steps = 'lots': not a step count"),
+    (dict(max_memory=True), "argument 'max_memory' = True (must be a number or a size text"),
 ])
 def test_bad_input_one_line_message(agglo_module, change, expected):
     with pytest.raises(config_error(agglo_module)) as err:
@@ -201,6 +210,41 @@ def test_bad_input_one_line_message(agglo_module, change, expected):
     msg = str(err.value)
     assert msg.startswith(WHERE) and "\n" not in msg
     assert expected in msg
+
+
+def _many_spheres(n):
+    k = np.arange(n)
+    return np.stack([k % 100, k // 100 % 100, k // 10000], -1) * 3e-5, 1e-5, 1e-15, 3.0
+
+
+@pytest.mark.parametrize("args, options, expected", [
+    ((), dict(solver="bem", patches_per_sphere=10**7), "the estimated memory"),  # 26 GiB
+    ("many", {}, "the estimated memory"),                                        # 1e5 spheres: 4.7 TiB
+    ((), dict(max_steps=1), "exceeds the step budget 1 steps"),
+    ((), dict(max_memory="1K"), "exceeds the memory budget 1 KiB"),
+])
+def test_budgets(agglo_module, args, options, expected):
+    """The budgets of `agglo electrostatics` (issue 23 item 10: patches_per_sphere=10**7 and 1e5 spheres
+    ran): a LimitError in one line naming the keyword that raises the budget, before any allocation and,
+    for 1e5 spheres, from their count before their positions are compared pair by pair (about 10 s)."""
+    call = dict(GOOD)
+    if args == "many":
+        call.update(zip(("positions", "radii", "charges", "permittivities"), _many_spheres(100000)))
+    start = time.monotonic()
+    with pytest.raises(agglo_module.LimitError) as err:
+        agglo_module.electrostatic_forces(**call, **options)
+    assert time.monotonic() - start < 2.0
+    msg = str(err.value)
+    assert msg.startswith(WHERE) and "\n" not in msg and expected in msg, msg
+    assert ("max_steps=" if "step" in expected else "max_memory=") in msg and "--max" not in msg
+
+
+def test_budget_keywords_raise_the_environment(agglo_module, monkeypatch):
+    """max_steps= wins over AGGLO_MAX_STEPS, which wins over the default."""
+    monkeypatch.setenv("AGGLO_MAX_STEPS", "1")
+    with pytest.raises(agglo_module.LimitError, match="AGGLO_MAX_STEPS"):
+        agglo_module.electrostatic_forces(**GOOD)
+    assert agglo_module.electrostatic_forces(**GOOD, max_steps=1e9).energy != 0.0
 
 
 def test_input_conversion_and_scalars(agglo_module):

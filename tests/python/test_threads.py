@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from agglo_cases import short
+from conftest import BUILD
 
 LONG = {"time.after_contact": 0.1, "time.early_stop": False}  # about a second on one thread
 
@@ -164,3 +165,65 @@ def _cpu_seconds():
     """User + system CPU time of the process, all threads [s]."""
     r = resource.getrusage(resource.RUSAGE_SELF)
     return r.ru_utime + r.ru_stime
+
+
+_SIGINT_CHILD = r"""
+import sys, time
+import numpy as np
+import agglo
+k = np.arange(4)
+x = np.stack(np.meshgrid(k, k, k, indexing="ij"), -1).reshape(-1, 3) * 2.02e-5
+q = np.where(np.arange(len(x)) % 2 == 0, 1.0, -1.0) * 1e-14
+print("solving", flush=True)
+start = time.monotonic()
+try:
+    agglo.electrostatic_forces(x, 1e-5, q, 3.8, min_gap=0.01, threads=1, target_accuracy=1e-6)
+except agglo.InterruptedError:
+    print(f"interrupted after {time.monotonic() - start:.2f} s", flush=True)
+    raise
+print("finished", flush=True)
+"""
+
+
+def test_sigint_stops_electrostatic_forces_in_a_subprocess(agglo_module, tmp_path):
+    """A real SIGINT (the terminal's Ctrl-C) sent to a Python process inside electrostatic_forces: Python's
+    handler sets its flag, the waiting thread sees it (PyErr_CheckSignals) and cancels the solve, which
+    polls the token; the process ends with KeyboardInterrupt (agglo.InterruptedError) after at most one
+    second of CPU time (one solver thread) instead of finishing the solve (tens of seconds)."""
+    import subprocess
+    import sys
+    path = [str(BUILD / "python"), os.environ.get("PYTHONPATH", "")]
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in path if p))
+    children = _children_cpu()
+    child = subprocess.Popen([sys.executable, "-c", _SIGINT_CHILD], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True, env=env)
+    try:
+        assert child.stdout.readline().strip() == "solving"
+        time.sleep(1.0)  # inside the solve (its set-up alone takes longer)
+        before = _child_cpu(child.pid)
+        sent = time.monotonic()
+        child.send_signal(signal.SIGINT)
+        out, err = child.communicate(timeout=30)
+        wall = time.monotonic() - sent
+    finally:
+        child.kill()
+    assert child.returncode != 0 and "agglo.InterruptedError: interrupted" in err, (out, err)
+    assert "interrupted after" in out and "finished" not in out, out
+    after = _children_cpu() - children - before  # the child's CPU time after the signal
+    assert after < 1.0, after
+    assert wall < 5.0, wall
+
+
+def _children_cpu():
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def _child_cpu(pid):
+    """User + system CPU seconds of a running process (None once gone)."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            fields = f.read().rsplit(")", 1)[1].split()
+    except OSError:
+        return None
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")

@@ -97,6 +97,25 @@ TEST(Journal, ResumeRepeatsOnlyMissingJobs) {
   EXPECT_FALSE(std::filesystem::exists(file));
 }
 
+// A journal line that cannot be written fails its job with an OutputError naming the file (it was lost
+// without a word, and --resume then repeated the job), and the ensemble's error keeps that type, so the
+// run ends as a full disk does (exit 2, the folder marked failed).
+TEST(Journal, AnAppendThatFailsFailsTheJob) {
+  const auto file = temp_file("gone") / "journal.jsonl";  // its folder does not exist
+  Journal j(file, "ctx", false);
+  auto jobs = square_jobs(2);
+  const auto out = run_jobs(jobs, {1, &j});
+  ASSERT_TRUE(out[0].error && out[1].error);
+  try {
+    rethrow_first_error(out, &jobs);
+    FAIL() << "no error thrown";
+  } catch (const OutputError& e) {
+    EXPECT_EQ(std::string(e.what()), "job 'job 0' (all 2 jobs failed): cannot write " + file.string() +
+                                         ": No such file or directory (free space, or choose another --out)");
+  }
+  EXPECT_EQ(j.find("job 0"), std::nullopt);
+}
+
 TEST(Journal, ContextIgnoresOnlyTheNamedSections) {
   const std::string toml = "name = \"x\"\n[material]\ndensity = 2500\n[vcrit]\ntolerance = 0.001\n[vcrit.sub]\na = 1\n"
                            "[time]\ndt = 0\n";
@@ -178,5 +197,13 @@ TEST(Ensemble, ErrorNamesTheFailedJobAndKeepsItsType) {
     FAIL() << "no error thrown";
   } catch (const NumericalError& e) {
     EXPECT_EQ(std::string(e.what()), "job 'job 1' (2 of 4 jobs failed; the others completed): energy explosion");
+  }
+  // Every job failed: no "others" that completed.
+  for (auto& j : jobs) j.run = [](const JobContext&) -> nlohmann::json { throw NumericalError("NaN"); };
+  try {
+    rethrow_first_error(run_jobs(jobs, {2}), &jobs);
+    FAIL() << "no error thrown";
+  } catch (const NumericalError& e) {
+    EXPECT_EQ(std::string(e.what()), "job 'job 0' (all 4 jobs failed): NaN");
   }
 }

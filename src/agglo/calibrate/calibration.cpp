@@ -260,6 +260,11 @@ void Calibrator::uncertainty(const std::vector<double>& sigma_obs) {
 
 }  // namespace
 
+double map_points(const Spec& spec) {
+  const double d = static_cast<double>(spec.parameters.size());
+  return std::pow(spec.grid_points, d) + spec.refine_rounds * std::pow(spec.refine_points, d);
+}
+
 Result calibrate(const Spec& spec, const Evaluator& evaluate) { return Calibrator(spec, evaluate).run(); }
 
 }  // namespace agglo::calibrate

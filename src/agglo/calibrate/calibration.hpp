@@ -106,6 +106,10 @@ struct UnreachableTarget : ConfigError {
   std::size_t target;
 };
 
+// Parameter points the maps of calibrate() evaluate, each once per target (d parameters):
+// grid_points^d + refine_rounds x refine_points^d; the check at the best fit adds one more.
+double map_points(const Spec& spec);
+
 // Throws UnreachableTarget after the first map when a target cannot be met inside the box.
 Result calibrate(const Spec& spec, const Evaluator& evaluate);
 

@@ -9,7 +9,14 @@
 // poll_cancel() is an atomic load behind a thread-local pointer (a few ns); it is never called inside
 // an OpenMP parallel region (an exception must not leave one), so a solve stops at most one operator
 // application after the token is set. A thread without a scope (tests, library calls) never stops.
+//
+// The same polls keep a progress report alive inside a long solve: a HeartbeatScope installs a function
+// that poll_cancel() calls on the calling thread (the pre-impact relaxation reports its progress from it,
+// so that its first electrostatic solve, tens of seconds with the BEM, is not silent). The function must
+// be cheap or throttle itself (heartbeat_due).
 #include <atomic>
+#include <chrono>
+#include <functional>
 
 #include "agglo/core/error.hpp"
 
@@ -28,6 +35,7 @@ class CancelToken {
 
 namespace detail {
 inline thread_local const CancelToken* t_cancel_token = nullptr;
+inline thread_local const std::function<void()>* t_heartbeat = nullptr;
 }  // namespace detail
 
 // The token installed for the calling thread (null: none).
@@ -47,10 +55,34 @@ class CancelScope {
   const CancelToken* saved_;
 };
 
-// Throws InterruptedError("interrupted") when the calling thread's token is set.
+// Installs `beat` as the calling thread's heartbeat for the scope's lifetime (null: none).
+class HeartbeatScope {
+ public:
+  explicit HeartbeatScope(const std::function<void()>* beat) noexcept : saved_(detail::t_heartbeat) {
+    detail::t_heartbeat = beat;
+  }
+  ~HeartbeatScope() { detail::t_heartbeat = saved_; }
+  HeartbeatScope(const HeartbeatScope&) = delete;
+  HeartbeatScope& operator=(const HeartbeatScope&) = delete;
+
+ private:
+  const std::function<void()>* saved_;
+};
+
+// True at most once per `interval` (a heartbeat's throttle; `last` holds the time of the last true).
+inline bool heartbeat_due(std::chrono::steady_clock::time_point& last,
+                          std::chrono::steady_clock::duration interval = std::chrono::milliseconds(100)) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last < interval) return false;
+  last = now;
+  return true;
+}
+
+// Throws InterruptedError("interrupted") when the calling thread's token is set; calls its heartbeat.
 inline void poll_cancel() {
   const CancelToken* t = detail::t_cancel_token;
   if (t && t->cancelled()) throw InterruptedError("interrupted");
+  if (const auto* beat = detail::t_heartbeat) (*beat)();
 }
 
 }  // namespace agglo

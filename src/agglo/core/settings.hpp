@@ -103,6 +103,7 @@ class Real : public Setting {
   double read(const ConfigSection& s) const { return read_or(s, def_); }
   double read_or(const ConfigSection& s, std::optional<double> def) const;
   double def() const { return *def_; }
+  const Range& range() const { return range_; }  // for values given outside a case file (Python arrays)
   std::string default_text() const override;
   std::string range_text() const override;
 
@@ -196,6 +197,7 @@ class Vector3 : public Setting {
  public:
   Vector3(Table& t, const Info& i, std::optional<Vec3> def, Range component_range);
   Vec3 read(const ConfigSection& s) const;
+  const Range& component_range() const { return range_; }
   std::string default_text() const override;
   std::string range_text() const override;
 

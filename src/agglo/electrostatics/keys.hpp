@@ -13,11 +13,12 @@ struct SolverKeys {
   settings::Table t{"electrostatics", "electrostatics, collide, vcrit, breakup", "electrostatic solver and coupling"};
   settings::Choice solver{
       t, {"electrostatics.solver", "", "solver of the induced charges"}, kDefaultSolver, &solver_names};
+  // At most 1e6, as particles.permittivity (1e300 was accepted, issue 23 item 10).
   settings::Real medium_permittivity{
       t,
       {"electrostatics.medium_permittivity", "", "relative permittivity kappa_0 of the medium"},
       1.0,
-      Range::positive()};
+      Range::open_closed(0.0, 1e6)};
   settings::Real min_gap{t,
                          {"electrostatics.min_gap", "", "g_min: electrostatic radius r_E = r / (1 + g_min/2)"},
                          0.01,

@@ -1,7 +1,9 @@
 #include "agglo/impact/experiment.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <functional>
 #include <iterator>
 #include <numeric>
 
@@ -85,6 +87,15 @@ dem::Particles relax(const ImpactCase& c, const ProgressFn& progress) {
   auto jkr = sys.jkr_for(0, sys.particles().size() > 1 ? 1 : 0);
   const double ke_tol = c.time.relax_energy * jkr.Fc * jkr.deltaC;
   const long max_steps = static_cast<long>(c.time.relax_time / sys.dt());
+  // Progress after every step and, through the solvers' polls, during each electrostatic solve (the
+  // heartbeat, core/cancel.hpp): a BEM solve of 30 spheres takes tens of seconds, and a report every 50
+  // steps left the terminal silent for minutes.
+  double fraction = 0.0;
+  auto last = std::chrono::steady_clock::now();
+  const std::function<void()> beat = [&] {
+    if (heartbeat_due(last)) progress(fraction, sys.time());
+  };
+  const HeartbeatScope heartbeat(progress ? &beat : nullptr);
   sys.compute_forces();  // the first step's forces: contacts as built (the step reuses them)
   check_one_agglomerate(sys, sys.particles().size(), "as built, before the relaxation");
   const auto built = contact_edges(sys, sys.particles().size());
@@ -92,7 +103,8 @@ dem::Particles relax(const ImpactCase& c, const ProgressFn& progress) {
   for (long s = 0; s < max_steps; ++s) {
     poll_cancel();  // a step may hold a long electrostatic solve; the solvers poll too (core/cancel.hpp)
     sys.step();
-    if (progress && s % 50 == 0) progress(static_cast<double>(s) / static_cast<double>(max_steps), sys.time());
+    fraction = static_cast<double>(s + 1) / static_cast<double>(max_steps);
+    if (progress && heartbeat_due(last)) progress(fraction, sys.time());
     if (s > 100 && s % 50 == 0 && sys.kinetic_energy() < ke_tol) break;
   }
   sys.check_state();

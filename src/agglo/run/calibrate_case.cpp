@@ -1,9 +1,12 @@
 #include "agglo/run/calibrate_case.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_calibrate.hpp"
+#include "agglo/core/settings_catalogue.hpp"
 #include "agglo/impact/impact_case.hpp"
 
 namespace agglo::run {
@@ -24,6 +27,35 @@ void parse_fit(const ConfigSection& root, calibrate::Spec& spec) {
   spec.widths = f.widths.read(s);
 }
 
+// The declared setting of a dotted key of a target case ("particles.2.radius" -> particles.radius); null
+// when no table declares it (the target cases then refuse the key).
+const settings::Setting* declared_setting(const std::string& key) {
+  std::string dotted;
+  for (std::size_t from = 0; from <= key.size();) {
+    const std::size_t to = std::min(key.find('.', from), key.size());
+    const std::string part = key.substr(from, to - from);
+    if (part.empty() || part.find_first_not_of("0123456789") != std::string::npos)
+      dotted += (dotted.empty() ? "" : ".") + part;
+    from = to + 1;
+  }
+  for (const settings::Table* t : settings::all_tables())
+    for (const settings::Setting* s : t->settings())
+      if (s->dotted() == dotted) return s;
+  return nullptr;
+}
+
+// A key fitted once, and a real number: the surrogate and its best fit are real values, which an integer
+// key would not take (a best vcrit.scan_points of 5.4 was reported while the runs read other values).
+void check_parameter_key(const settings::CalibrateSettings::Parameter& p, const ConfigSection& s,
+                         const std::string& key, const std::vector<calibrate::Parameter>& earlier) {
+  for (std::size_t j = 0; j < earlier.size(); ++j)
+    if (earlier[j].key == key)
+      p.key.reject(s, fmt::format("is also the key of [[{}]] {}: each key is fitted by one table", p.t.name(), j));
+  if (const auto* d = declared_setting(key); d && d->type() != settings::Type::real)
+    p.key.reject(s, fmt::format("is a key of type {}; calibrate fits keys of type real only",
+                                settings::type_name(d->type())));
+}
+
 void parse_parameters(const ConfigSection& root, calibrate::Spec& spec) {
   const auto& p = settings::calibrate_settings().parameter;
   const auto elems = p.t.elements(root);
@@ -31,6 +63,7 @@ void parse_parameters(const ConfigSection& root, calibrate::Spec& spec) {
   for (const auto& s : elems) {
     calibrate::Parameter q;
     q.key = p.key.read(s);
+    check_parameter_key(p, s, q.key, spec.parameters);
     q.lower = p.lower.read(s);
     q.upper = p.upper.read(s);
     q.log_scale = p.scale.read(s) == "log";

@@ -97,6 +97,8 @@ template <class E>
     std::rethrow_exception(error);
   } catch (const InterruptedError& e) {
     throw_with(e, prefix + e.what());
+  } catch (const OutputError& e) {  // before its base class: a full disk marks the folder failed
+    throw_with(e, prefix + e.what());
   } catch (const ConfigError& e) {
     throw_with(e, prefix + e.what());
   } catch (const InvalidRunError& e) {  // before its base class
@@ -131,9 +133,9 @@ void rethrow_first_error(const std::vector<JobOutcome>& outcomes, const std::vec
   if (failed == 0) return;
   const auto& error = outcomes[first].error;
   if (!jobs || is_interruption(error) || (*jobs)[first].key.empty()) std::rethrow_exception(error);
-  const std::string more = outcomes.size() > 1 ? fmt::format(" ({} of {} jobs failed; the others completed)",
-                                                             failed, outcomes.size())
-                                               : std::string();
+  std::string more;
+  if (failed == outcomes.size() && failed > 1) more = fmt::format(" (all {} jobs failed)", failed);
+  else if (outcomes.size() > 1) more = fmt::format(" ({} of {} jobs failed; the others completed)", failed, outcomes.size());
   rethrow_prefixed(error, fmt::format("job '{}'{}: ", (*jobs)[first].key, more));
 }
 

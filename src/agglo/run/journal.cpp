@@ -1,9 +1,12 @@
 #include "agglo/run/journal.hpp"
 
+#include <cerrno>
 #include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
+
+#include "agglo/io/output_dir.hpp"
 
 namespace agglo::run {
 
@@ -63,10 +66,14 @@ void Journal::record(const std::string& key, std::size_t index, const nlohmann::
   nlohmann::json j = {{"context", context_}, {"job", hash_hex(key)}, {"key", key}, {"index", index}, {"result", result}};
   for (auto it = about.begin(); it != about.end(); ++it) j[it.key()] = it.value();
   std::lock_guard<std::mutex> lk(mutex_);
-  entries_[hash_hex(key)] = result;
+  errno = 0;
   std::ofstream out(file_, std::ios::app);
   out << j.dump() << '\n';
   out.flush();
+  // A line that cannot be appended (a full or read-only disk) fails the job instead of being lost: a
+  // --resume would silently repeat it.
+  if (!out) throw output_error(file_, errno);
+  entries_[hash_hex(key)] = result;
 }
 
 }  // namespace agglo::run

@@ -34,6 +34,7 @@ class Journal {
   // The stored result of job `key`, if this context has one.
   std::optional<nlohmann::json> find(const std::string& key) const;
   // Appends a finished job (thread-safe); the members of `about` (e.g. rank and seconds) are added to its line.
+  // OutputError (io/output_dir.hpp: "cannot write FILE: <reason>") when the line cannot be written.
   void record(const std::string& key, std::size_t index, const nlohmann::json& result,
               const nlohmann::json& about = nlohmann::json::object());
   std::size_t loaded() const { return entries_.size(); }

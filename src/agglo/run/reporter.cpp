@@ -36,11 +36,12 @@ void TerminalReporter::progress(std::string_view label, double fraction, double 
   const double elapsed = t - start_;
   if (elapsed < 2.0 || t - last_ < 0.25) return;
   last_ = t;
-  const double eta = fraction > 1e-6 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+  // No ETA before any progress (e.g. a relaxation inside its first electrostatic solve): the time so far.
+  const std::string eta = fraction > 1e-6 ? fmt::format("ETA {:.0f} s", elapsed * (1.0 - fraction) / fraction)
+                                          : fmt::format("{:.0f} s so far", elapsed);
   const std::string line = sim_time_s > 0.0
-                               ? fmt::format("{} {:5.1f}%  t={:.4g} s  ETA {:.0f} s   ", label, 100.0 * fraction,
-                                             sim_time_s, eta)
-                               : fmt::format("{} {:5.1f}%  ETA {:.0f} s   ", label, 100.0 * fraction, eta);
+                               ? fmt::format("{} {:5.1f}%  t={:.4g} s  {}   ", label, 100.0 * fraction, sim_time_s, eta)
+                               : fmt::format("{} {:5.1f}%  {}   ", label, 100.0 * fraction, eta);
   width_ = std::max(width_, line.size());
   std::fprintf(stderr, "\r%s", line.c_str());
   std::fflush(stderr);

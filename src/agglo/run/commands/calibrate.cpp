@@ -11,6 +11,7 @@
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_calibrate.hpp"
 #include "agglo/impact/breakup.hpp"
+#include "agglo/impact/estimate.hpp"
 #include "agglo/impact/experiment.hpp"
 #include "agglo/impact/vcrit.hpp"
 #include "agglo/run/calibrate_case.hpp"
@@ -124,6 +125,65 @@ std::vector<calibrate::Prediction> predict(const CalibrateCase& c, const calibra
   return out;
 }
 
+// Bytes one observation adds to the output (its journal line and its row of the map files; 2 KiB bounds
+// both), and the calibration's fixed files (calibration.json, the surrogate grid, run.json).
+constexpr double kObservationBytes = 2048.0;
+constexpr double kCalibrationFilesBytes = 1024.0 * 1024.0;
+
+// The cost of one observation of `t` (observe(): a vcrit search for v_crit, a break-up curve for v50 or
+// `widths`, each on one thread and `threads` jobs at a time) at the costliest corner of the parameter box.
+Estimate observation_cost(const CalibrateCase& c, const CalibrationTarget& t, bool widths, int threads) {
+  Estimate worst;
+  const std::size_t d = c.spec.parameters.size();
+  for (std::size_t corner = 0; corner < (std::size_t{1} << d); ++corner) {
+    std::vector<double> x;
+    for (std::size_t j = 0; j < d; ++j)
+      x.push_back((corner >> j) & 1U ? c.spec.parameters[j].upper : c.spec.parameters[j].lower);
+    Config cfg = target_config(c, t, x);
+    const auto ic = impact::parse_impact_case(cfg);
+    Estimate e;
+    if (t.observable == "v_crit") e = impact::vcrit_estimate(ic, threads);
+    if (t.observable == "v50" || widths) {
+      const Estimate b = impact::breakup_estimate(ic, threads);
+      add_to(e.steps, b.steps.value, b.steps.keys);
+      e.memory = e.memory.value >= b.memory.value ? e.memory : b.memory;
+    }
+    if (e.steps.value >= worst.steps.value) worst.steps = e.steps;
+    if (e.memory.value >= worst.memory.value) worst.memory = e.memory;
+  }
+  return worst;
+}
+
+// Points where each [[prediction]] is run: the best fit, and with predict = "range" at most two extreme
+// points of the feasible set per parameter.
+double prediction_points(const CalibrateCase& c) {
+  if (c.predict == "none") return 0.0;
+  return c.predict == "best" ? 1.0 : 1.0 + 2.0 * static_cast<double>(c.spec.parameters.size());
+}
+
+// Every observation of the fit: the maps and the check per target, then the predictions; the memory of
+// the costliest observation, `threads` at a time.
+Estimate calibrate_estimate(const CalibrateCase& c, int threads) {
+  const auto& f = settings::calibrate_settings().fit;
+  Estimate e;
+  add_to(e.steps, 0.0, {std::string(f.grid_points.dotted()), std::string(f.refine_rounds.dotted()),
+                        std::string(f.refine_points.dotted())});
+  double observations = 0.0;
+  auto add = [&](const Estimate& one, double times) {
+    add_to(e.steps, times * one.steps.value, one.steps.keys);
+    if (one.memory.value > e.memory.value) e.memory = one.memory;
+    observations += times;
+  };
+  const double maps = calibrate::map_points(c.spec), check = c.spec.check ? 1.0 : 0.0;
+  for (const auto& t : c.targets) {
+    add(observation_cost(c, t, false, threads), maps + (c.spec.widths ? 0.0 : check));
+    if (c.spec.widths) add(observation_cost(c, t, true, threads), check);
+  }
+  for (const auto& t : c.predictions) add(observation_cost(c, t, false, threads), prediction_points(c));
+  add_to(e.output, observations * kObservationBytes + kCalibrationFilesBytes, {std::string(f.grid_points.dotted())});
+  return e;
+}
+
 class Calibrate final : public Command {
  public:
   std::string_view name() const override { return "calibrate"; }
@@ -132,6 +192,10 @@ class Calibrate final : public Command {
   }
   bool resumable() const override { return true; }
   void parse(Config& cfg) const override { (void)parse_calibrate_case(cfg); }
+  // Every vcrit search and break-up curve of the fit, each bounded as by vcrit and breakup.
+  Estimate estimate(Config& cfg, const RunContext& ctx) const override {
+    return calibrate_estimate(parse_calibrate_case(cfg), ctx.thread_count());
+  }
   // Its jobs are impact runs: the rate of run/commands/impact_command.hpp.
   double seconds_per_step(Config&) const override { return 2e-8; }
 
