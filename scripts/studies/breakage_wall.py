@@ -66,6 +66,10 @@ def main():
     ap.add_argument("--orientations", type=int, default=16)
     ap.add_argument("--jobs", type=int, default=2, help="breakup runs at a time (each --threads 1)")
     ap.add_argument("--set", action="append", default=[], help="extra key=value for every run")
+    ap.add_argument("--cheapest-first", action="store_true",
+                    help="run the fast (high-speed) points first, so that a study stopped early has them all; "
+                         "the journals keep every finished run")
+    ap.add_argument("--skip", default="", help="shape:speed points to leave out, comma-separated (e.g. bpca:0.02)")
     a = ap.parse_args()
     speeds = [float(v) for v in a.speeds.split(",")]
     jobs = []
@@ -75,6 +79,8 @@ def main():
         xw = rb + 0.05 * r
         print(f"{shape}: N = {a.primaries}, R_b = {rb * 1e6:.2f} um, wall at {xw * 1e6:.2f} um", flush=True)
         for v in speeds:
+            if f"{shape}:{v:g}" in a.skip.split(","):
+                continue
             out = os.path.join(a.out, shape, f"v{v:g}")
             os.makedirs(os.path.dirname(out), exist_ok=True)
             sets = [f"agglomerate.primaries={a.primaries}", f"wall.position=[{xw:.9g},0,0]",
@@ -85,7 +91,7 @@ def main():
             for s in sets:
                 cmd += ["--set", s]
             jobs.append((xw / v, (cmd, out, out + ".log")))
-    jobs.sort(key=lambda j: -j[0])  # longest first
+    jobs.sort(key=lambda j: j[0] if a.cheapest_first else -j[0])  # default: longest first
     with ThreadPoolExecutor(max_workers=a.jobs) as pool:
         codes = list(pool.map(run, [j for _, j in jobs]))
     sys.exit(1 if any(codes) else 0)

@@ -136,7 +136,9 @@ Estimate ensemble_estimate(const ImpactCase& c, const std::vector<double>& speed
 
 double time_step(const ImpactCase& c) {
   if (c.dem.dt > 0.0) return c.dem.dt;
-  return dem::reference_period(build_agglomerate(c), c.dem) / c.dem.steps_per_period;
+  dem::Particles p = build_agglomerate(c);
+  if (!c.wall_impact) add_projectile(p, c, c.projectile.speed);  // a smaller projectile has a shorter period
+  return dem::reference_period(p, c.dem) / c.dem.steps_per_period;
 }
 
 double run_steps_bound(const ImpactCase& c, double speed) {

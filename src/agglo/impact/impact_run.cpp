@@ -11,6 +11,7 @@
 #include "agglo/core/error.hpp"
 #include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/electrostatic_coupling.hpp"
+#include "agglo/impact/estimate.hpp"
 #include "agglo/impact/experiment.hpp"
 
 namespace agglo::impact {
@@ -53,11 +54,19 @@ double wall_gap(const dem::DemSystem& sys) {
   return std::max(gap, 0.0);
 }
 
+// The case's DEM parameters with the time step of its runs (time_step: the projectile, added after the
+// system is built, included).
+dem::DemParams run_params(const ImpactCase& c) {
+  dem::DemParams d = c.dem;
+  d.dt = time_step(c);
+  return d;
+}
+
 }  // namespace
 
 ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double speed, Recorder* rec,
                      ProgressFn progress)
-    : c_(c), speed_(speed), sys_(std::move(agglomerate), c.dem), n_agg_(sys_.particles().size()), rec_(rec),
+    : c_(c), speed_(speed), sys_(std::move(agglomerate), run_params(c)), n_agg_(sys_.particles().size()), rec_(rec),
       progress_(std::move(progress)) {
   if (c.electrostatics) {
     es_ = make_electrostatic_force(c);
