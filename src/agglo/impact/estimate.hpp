@@ -7,7 +7,8 @@
 //   one run     at speed v takes at most (T_a(v) + after_contact + max_extensions extension) / dt
 //               + max_extensions + 2 time steps of n = agglomerate particles + 1, where T_a is
 //               time.max_approach or the automatic 5 (gap + r_p) / max(v, 1e-3 m/s) + 1e-4 s
-//   relaxation  a charged agglomerate: at most relax_time / dt steps of its particles, once a command
+//   relaxation  a charged agglomerate: at most relax_time / dt steps of its particles, once a command;
+//               an aggregate projectile's (relax_projectile) once per run
 //   vcrit       scan_points runs, then at most ceil(ln(s / tolerance) / ln(points_per_round + 1)) rounds
 //               of points_per_round runs (s = scan spacing; each round shrinks the bracket by that
 //               factor); bisection speeds lie above v_min, so T_a(v_min) bounds their approach

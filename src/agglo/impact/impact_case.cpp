@@ -363,6 +363,9 @@ void parse_coupling(const ConfigSection& root, double real_modulus, ImpactCase& 
   bool any_charge = a.charged && a.charge_density > 0.0;
   for (const auto& lp : a.particles) any_charge = any_charge || lp.charge != 0.0;
   any_charge = any_charge || c.projectile.charge != 0.0;
+  using Charges = const std::vector<double>*;  // the charge columns of structure files
+  for (Charges s : std::initializer_list<Charges>{&a.structure.charge, &c.projectile.body.structure.charge})
+    any_charge = any_charge || std::any_of(s->begin(), s->end(), [](double q) { return q != 0.0; });
   c.electrostatics = any_charge;
   const auto& ks = es::es_keys();
   if (!c.electrostatics && !ks.t.present(root)) return;

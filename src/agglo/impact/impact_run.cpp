@@ -89,6 +89,7 @@ ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double spe
   if (c.wall_impact) return;
   dem::Particles tmp = sys_.particles();
   add_projectile(tmp, c, speed);
+  relax_projectile(c, tmp, n_agg_, speed);  // an aggregate with charges or in a field, as the target
   for (std::size_t q = n_agg_; q < tmp.size(); ++q)
     sys_.add_particle(tmp.x[q], tmp.r[q], material_density(c, tmp.mat[q]), tmp.v[q], tmp.q[q], tmp.kappa[q], tmp.mat[q]);
 }
