@@ -131,7 +131,7 @@ def main():
             ax[k].set_xscale("log")
             ax[k].set_xlabel("impact speed v [m/s]")
             ax[k].set_ylabel(name)
-    ax[0].legend()
+    ax[0].legend(loc="upper left", fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(a.figures, "breakage_wall_vs_speed.png"), dpi=110)
 
