@@ -10,7 +10,8 @@ PY_PKGS="python3-numpy python3-matplotlib python3-xarray python3-netcdf4"
 RUN_PKGS="$BUILD_PKGS $PY_PKGS"
 # Only for the test suite and the benchmarks (GoogleTest, Google Benchmark, the function-size lint,
 # pytest, the Dask example's test, the notebooks):
-TEST_PKGS="libgtest-dev libbenchmark-dev clang-tidy python3-pytest python3-distributed"
+TEST_PKGS="libgtest-dev libbenchmark-dev clang-tidy python3-pytest python3-distributed jupyter-nbconvert
+  python3-ipykernel"
 
 # install_missing PKG...: apt-get installs the packages that dpkg does not know as installed (a package
 # removed but not purged is known to `dpkg -s` with the status "deinstall ok config-files": not installed).

@@ -34,6 +34,18 @@ a, b = (json.load(open(p)) for p in sys.argv[1:])
 assert abs(a['rg_point_mass_m'] / b['rg_point_mass_m'] - 1) < 1e-12 and a['contacts'] == b['contacts'], (a, b)
 " "$T/aggregate_fractal/result.json" "$T/back/result.json" || fail "file round trip"
 
+# Materials (issue 24 follow-up): agglo aggregate reads [material], [[materials]] and agglomerate.material
+# and writes each primary's material and density; read back with another density for "ash", the file's
+# column keeps the names and the case gives the density. (Before, [material] was an unknown key.)
+printf 'name = "mat"\n[material]\ndensity = 2500.0\n[[materials]]\nname = "ash"\ndensity = 2000.0\n[agglomerate]\nshape = "bpca"\nprimaries = 16\nradius = 10e-6\nmaterial = "ash"\n' > "$T/mat.toml"
+$A -q aggregate "$T/mat.toml" --out "$T/mat" > /dev/null 2>&1 || fail "aggregate with materials: $($A -q aggregate "$T/mat.toml" --out "$T/mat2" 2>&1)"
+head -1 "$T/mat/aggregate.csv" | grep -q "^x,y,z,radius,coordination,material,density$" || fail "materials header: $(head -1 "$T/mat/aggregate.csv")"
+[ "$(tail -n +2 "$T/mat/aggregate.csv" | cut -d, -f6,7 | sort | uniq -c | awk '{print $1, $2}')" = "16 ash,2000" ] || fail "material, density columns"
+printf 'name = "back"\n[[materials]]\nname = "ash"\ndensity = 1800.0\n[agglomerate]\nshape = "file"\nfile = "%s"\n' "$T/mat/aggregate.csv" > "$T/matback.toml"
+$A -q aggregate "$T/matback.toml" --out "$T/matback" > /dev/null 2>&1 || fail "reading the material column back"
+[ "$(tail -n +2 "$T/matback/aggregate.csv" | cut -d, -f6,7 | sort -u)" = "ash,1800" ] || fail "material column read back"
+head -1 "$T/aggregate_fractal/aggregate.csv" | grep -q "^x,y,z,radius,coordination$" || fail "no material columns without materials"
+
 bad() {  # bad <expected fragment> <toml text>
   printf '%s\n' "$2" > "$T/bad.toml"
   refused aggregate "$1" "$2"
@@ -49,6 +61,7 @@ bad "agglomerate.fractal_dimension' = 2" $'[agglomerate]\nshape = "bpca"\nfracta
 bad "agglomerate.primaries' = 1" $'[agglomerate]\nshape = "fractal"\nprimaries = 1'
 bad "agglomerate.shape' = \"tetrahedron\"" $'[agglomerate]\nshape = "tetrahedron"'
 bad "agglomerate.primaries" $'[agglomerate]\nshape = "square"\nprimaries = 10'
+bad "agglomerate.material' = \"ash\": unknown material" $'[agglomerate]\nshape = "bpca"\nmaterial = "ash"'
 
 # A 64-primary fractal target through the DEM (electrostatics off): one run, a decided outcome.
 printf 'name = "fractal64"\n[agglomerate]\nseed = 2\nshape = "fractal"\nprimaries = 64\nradius = 10e-6\n[projectile]\nspeed = 0.5\n' > "$T/f64.toml"

@@ -90,4 +90,31 @@ interrupt solve_direct INT 130 electrostatics "$T/es_direct.toml"
 for d in solve_bem solve_direct; do
   [ ! -e "$T/$d/forces.csv" ] || fail "$d: forces.csv written by an interrupted solve"
 done
+# The structure builder (issue 24): a 10000-primary fractal takes about 4 s to build on one core, once
+# when the case is parsed (before the output folder exists) and once in the run. Signalled 1 s into
+# the parse, the run must end within 1 s of CPU time, exit 130, leave no folder; signalled 1 s into the
+# run's build, the usual checks. Before the builders polled the cancel token both went on to the end.
+printf 'name = "big"\n[agglomerate]\nshape = "fractal"\nprimaries = 10000\nradius = 1e-6\n' > "$T/big.toml"
+"$A" -q aggregate "$T/big.toml" --out "$T/parse_fractal" --threads 1 --no-plots > /dev/null 2> "$T/parse_fractal.err" &
+pid=$!
+sleep 1
+kill -0 $pid 2> /dev/null || fail "parse_fractal: the run ended before the signal: $(cat "$T/parse_fractal.err")"
+c0=$(cpu_ticks $pid)
+last=$c0
+kill -INT $pid
+t0=$(now_ms)
+while c=$(cpu_ticks $pid) && [ -n "$c" ] && [ $(($(now_ms) - t0)) -le $WALL_LIMIT_MS ]; do
+  last=$c
+  sleep 0.01
+done
+cpu=$(((last - c0) * 1000 / TICK))
+kill -KILL $pid 2> /dev/null
+wait $pid
+rc=$?
+[ $cpu -le 1000 ] || fail "parse_fractal: $cpu ms of CPU time after SIGINT (limit 1000 ms)"
+[ $rc -eq 130 ] || fail "parse_fractal: exit $rc, expected 130: $(cat "$T/parse_fractal.err")"
+[ ! -e "$T/parse_fractal" ] || fail "parse_fractal: an output folder was left"
+echo "ok   parse_fractal: SIGINT -> exit $rc, $cpu ms of CPU time"
+interrupt build_fractal TERM 143 aggregate "$T/big.toml"
+[ ! -e "$T/build_fractal/aggregate.csv" ] || fail "build_fractal: aggregate.csv written by an interrupted build"
 echo "PASS interrupt_phases"

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <fstream>
 #include <string>
 
 #include "agglo/core/config.hpp"
@@ -86,4 +87,39 @@ TEST(AggregateProjectile, OrientationsOfTheProjectileDiffer) {
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(norm(a.m[i]), 1.0, 1e-12);  // a rotation
   // projectile.orientation = "random" is orientation 0.
   for (int i = 0; i < 3; ++i) EXPECT_EQ(norm(c.projectile.rotation.m[i] - a.m[i]), 0.0);
+}
+
+// A charged aggregate projectile relaxes as the target does (relax_projectile; issue 24 follow-up): the
+// same 8-primary chain with alternating charges (+-5e-14 C, about a quarter of the pull-off force
+// between neighbours) as target and as projectile. The relaxation moves every projectile primary as it
+// moves the target's (same dynamics, translated: equal to 1e-6 of the largest displacement); before,
+// the projectile was launched as placed, its contacts out of balance with its charges (and a file's
+// charge column alone did not even switch the electrostatics on).
+TEST(AggregateProjectile, ChargedProjectileRelaxesAsTheTarget) {
+  const std::string csv = testing::TempDir() + "agglo_charged_chain.csv";
+  {
+    std::ofstream f(csv);
+    f << "x,y,z,radius,charge\n";
+    for (int k = 0; k < 8; ++k) f << 20e-6 * k << ",0,0,10e-6," << (k % 2 ? -5e-14 : 5e-14) << "\n";
+  }
+  Config cfg = Config::from_string("[agglomerate]\nshape = \"file\"\nfile = \"" + csv +
+                                   "\"\n[projectile]\nshape = \"file\"\nfile = \"" + csv +
+                                   "\"\nspeed = 0.05\n[electrostatics]\nsolver = \"coulomb\"\n");
+  const ImpactCase c = parse_impact_case(cfg);
+  ASSERT_TRUE(c.electrostatics);
+  const dem::Particles built = build_agglomerate(c);
+  dem::Particles p = relaxed_agglomerate(c);
+  const std::size_t n = p.size();
+  add_projectile(p, c, 0.05);
+  const dem::Particles placed = p;
+  relax_projectile(c, p, n, 0.05);
+  double moved = 0.0, differ = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3 dt = p.x[k] - built.x[k], dp = p.x[n + k] - placed.x[n + k];
+    moved = std::max(moved, norm(dt));
+    differ = std::max(differ, norm(dp - dt));
+    EXPECT_EQ(p.v[n + k].x, 0.05);
+  }
+  EXPECT_GT(moved, 1e-5 * 10e-6);  // the charges move the primaries by 8e-5 r (equilibrium overlap 6e-3 r)
+  EXPECT_LE(differ, 1e-6 * moved) << "projectile and target relax differently: " << differ << " vs " << moved;
 }

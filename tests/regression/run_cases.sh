@@ -47,6 +47,11 @@ run electrostatics electrostatics_tetrahedron
 # The structure builder (docs/model.md Part S): a lognormal fractal aggregate and a BPCA aggregate.
 run aggregate aggregate_fractal
 run aggregate aggregate_bpca
+# Walls (docs/dem.md "Gas and walls"): a sphere sticking on a wall of its material, the tetrahedron in air
+# hitting a rigid wall at 30 degrees, and the breakage study's 500-primary BPCA aggregate at 2 m/s.
+run collide sphere_wall
+run collide agglomerate_wall_gas
+run collide breakage_wall_bpca --set projectile.speed=2 --set time.after_contact=1.1e-4
 for c in "$C"/seed002_*.toml; do
   run acoustic "$(basename "$c" .toml)" --set time.end=0.02 --set "output.snapshot_times=[0.0,0.01]" --set "output.psd_times=[0.0,0.02]"
 done

@@ -5,7 +5,8 @@
 // pipeline (run::RunContext::cancel), which installs it for the thread that runs the engines with a
 // CancelScope (run::execute, each job thread of an ensemble, the Python worker thread). Engines that
 // may spend long between their step boundaries poll it with poll_cancel(): the DEM relaxation every
-// step, the electrostatic solvers in their set-up loops and after every GMRES operator application.
+// step, the electrostatic solvers in their set-up loops and after every GMRES operator application, the
+// structure builders per placement (run::plan installs the token while a case is parsed, which builds).
 // poll_cancel() is an atomic load behind a thread-local pointer (a few ns); it is never called inside
 // an OpenMP parallel region (an exception must not leave one), so a solve stops at most one operator
 // application after the token is set. A thread without a scope (tests, library calls) never stops.

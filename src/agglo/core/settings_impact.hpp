@@ -33,7 +33,7 @@ struct ImpactSettings {
   } top;
 
   struct Material {
-    Table t{"material", kImpactCommands, "material of every particle (contact model)"};
+    Table t{"material", kAgglomerateCommands, "material of every particle (contact model)"};
     Real density{t, {"material.density", "kg/m^3", "particle density rho_p"}, 2500.0, Range::open_closed(0.0, 1e5)};
     Real youngs_modulus{t, {"material.youngs_modulus", "Pa", "Young's modulus E of the contact model"}, 1.0e9,
                         Range::open_closed(0.0, 1e13)};
@@ -53,7 +53,7 @@ struct ImpactSettings {
   // [[materials]]: named materials (dem/material.hpp), chosen per particle by particles.material,
   // agglomerate.material, the structure file's material column, projectile.material and wall.material.
   struct Materials {
-    Table t{"materials", kImpactCommands, "named materials, each chosen by its name (the [material] table is \"default\")",
+    Table t{"materials", kAgglomerateCommands, "named materials, each chosen by its name (the [material] table is \"default\")",
             true};
     Text name{t, {"materials.name", "", "name of the material (not default, same or rigid; unique)"}, std::nullopt};
     Real density{t, {"materials.density", "kg/m^3", "density rho", "the [material] value"}, std::nullopt,

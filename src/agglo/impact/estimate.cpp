@@ -101,6 +101,12 @@ double relax_steps(const ImpactCase& c) {
                                                      : 0.0;
 }
 
+// Particle-steps of the relaxation of an aggregate projectile, made by every run (relax_projectile).
+double projectile_relax_steps(const ImpactCase& c) {
+  if (c.projectile.shape == "sphere" || !c.electrostatics || c.time.relax_time <= 0.0) return 0.0;
+  return (c.time.relax_time / time_step(c) + 1.0) * static_cast<double>(c.projectile.body.structure.size());
+}
+
 // Memory of one run without recording: particles, neighbour list, electrostatic solver.
 double run_memory(const ImpactCase& c) {
   const double n = particles(c);
@@ -123,7 +129,7 @@ double run_memory(const ImpactCase& c) {
 Estimate ensemble_estimate(const ImpactCase& c, const std::vector<double>& speeds, double runs, int threads,
                            const std::string& speed_key, const std::vector<std::string>& run_keys) {
   Estimate e;
-  double steps = relax_steps(c);
+  double steps = relax_steps(c) + runs * projectile_relax_steps(c);
   for (double v : speeds) steps += run_steps_bound(c, v) * particles(c) * (runs / static_cast<double>(speeds.size()));
   add_to(e.steps, 0.0, run_keys);
   add_steps(e.steps, steps, run_time_terms(c, speeds.front(), speed_key), c);
@@ -136,7 +142,9 @@ Estimate ensemble_estimate(const ImpactCase& c, const std::vector<double>& speed
 
 double time_step(const ImpactCase& c) {
   if (c.dem.dt > 0.0) return c.dem.dt;
-  return dem::reference_period(build_agglomerate(c), c.dem) / c.dem.steps_per_period;
+  dem::Particles p = build_agglomerate(c);
+  if (!c.wall_impact) add_projectile(p, c, c.projectile.speed);  // a smaller projectile has a shorter period
+  return dem::reference_period(p, c.dem) / c.dem.steps_per_period;
 }
 
 double run_steps_bound(const ImpactCase& c, double speed) {
@@ -156,7 +164,7 @@ Estimate collide_estimate(const ImpactCase& c) {
   const std::string speed_key(k.projectile.speed.dotted());
   const double n = particles(c), steps = run_steps_bound(c, c.projectile.speed);
   Estimate e;
-  add_steps(e.steps, steps * n + relax_steps(c), run_time_terms(c, c.projectile.speed, speed_key), c);
+  add_steps(e.steps, steps * n + relax_steps(c) + projectile_relax_steps(c), run_time_terms(c, c.projectile.speed, speed_key), c);
   // At most one row and one snapshot per step, and one per output interval of the run time.
   const double t_run = approach_bound(c, c.projectile.speed) + c.time.after_contact +
                        c.time.max_extensions * c.time.extension + (c.time.max_extensions + 2.0) * time_step(c);

@@ -74,14 +74,16 @@ void check_relaxed_contacts(const dem::DemSystem& sys, const ImpactCase& c,
       made.empty() ? "" : ": ", edge_list(made), rg0, radius_of_gyration(sys.particles()), sys.time(), cause));
 }
 
+bool relaxes(const ImpactCase& c) { return c.electrostatics && c.time.relax_time > 0.0; }
+
 // The relaxation keeps the walls and the drag of still gas but no gravity or gas flow, which would
-// move the agglomerate as a whole (docs/dem.md "Gas and walls").
-dem::Particles relax(const ImpactCase& c, const ProgressFn& progress) {
+// move the body as a whole (docs/dem.md "Gas and walls"). `body`: the target, or an aggregate projectile.
+dem::Particles relax(const ImpactCase& c, dem::Particles body, const ProgressFn& progress) {
   dem::DemParams still = c.dem;
   still.gravity = {};
   still.gas.flow = {};
-  dem::DemSystem sys(build_agglomerate(c), still);
-  if (!c.electrostatics || c.time.relax_time <= 0.0) return sys.particles();
+  dem::DemSystem sys(std::move(body), still);
+  if (!relaxes(c)) return sys.particles();
   auto es = make_electrostatic_force(c);
   sys.set_external_force(es.get());
   auto jkr = sys.jkr_for(0, sys.particles().size() > 1 ? 1 : 0);
@@ -181,9 +183,26 @@ void check_one_agglomerate(const dem::DemSystem& sys, std::size_t n_agg, std::st
 
 dem::Particles relaxed_agglomerate(const ImpactCase& c, const ProgressFn& progress) {
   try {
-    return relax(c, progress);
+    return relax(c, build_agglomerate(c), progress);
   } catch (const dem::DemInstability& e) {
     rethrow_with_cause(e);
+  }
+}
+
+void relax_projectile(const ImpactCase& c, dem::Particles& p, std::size_t first, double speed) {
+  if (c.projectile.shape == "sphere" || !relaxes(c) || first >= p.size()) return;
+  dem::Particles body;
+  for (std::size_t q = first; q < p.size(); ++q)
+    body.add(p.x[q], p.r[q], material_density(c, p.mat[q]), {}, p.q[q], p.kappa[q], p.mat[q]);
+  try {
+    body = relax(c, std::move(body), {});
+  } catch (const dem::DemInstability& e) {
+    rethrow_with_cause(e);
+  }
+  for (std::size_t q = first; q < p.size(); ++q) {
+    p.x[q] = body.x[q - first];
+    p.v[q] = {speed, 0.0, 0.0};
+    p.w[q] = {};
   }
 }
 

@@ -73,6 +73,13 @@ ImpactOutcome run_impact(const ImpactCase& c, double speed, Recorder* rec = null
 // apart): the target would not be the agglomerate of the case.
 dem::Particles relaxed_agglomerate(const ImpactCase& c, const ProgressFn& progress = {});
 
+// An aggregate projectile relaxed as the target is: with charges or a field (and time.relax_time > 0)
+// particles [first, end) of p, the projectile at its launch place (add_projectile), settle alone under
+// their own electrostatic and damped contact forces (and the walls) until relaxed as above, then move
+// at `speed` along +x without spin. A sphere projectile, or a case without electrostatics: unchanged.
+// Every run relaxes its projectile (a random orientation per run turns it first); InvalidRunError as above.
+void relax_projectile(const ImpactCase& c, dem::Particles& p, std::size_t first, double speed);
+
 // InvalidRunError (naming `when` and the smallest detached part) unless the active contacts join the
 // first `n_agg` particles of `sys` into one component.
 void check_one_agglomerate(const dem::DemSystem& sys, std::size_t n_agg, std::string_view when);

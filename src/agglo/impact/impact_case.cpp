@@ -21,10 +21,9 @@ namespace agglo::impact {
 
 namespace {
 
-// [material] and [contact]; returns the real Young's modulus (0 = same as the model's).
-double parse_material_contact(const ConfigSection& root, ImpactCase& c) {
+// [material]; returns the real Young's modulus (0 = same as the model's).
+double parse_material(const ConfigSection& root, ImpactCase& c) {
   const auto& km = impact_keys().material;
-  const auto& kc = dem::contact::contact_settings();
   auto mat = km.t.open(root);
   c.agglomerate.density = km.density.read(mat);
   auto& cp = c.dem.contact;
@@ -33,8 +32,14 @@ double parse_material_contact(const ConfigSection& root, ImpactCase& c) {
   cp.surface_energy = km.surface_energy.read(mat);
   cp.restitution = km.restitution.read(mat);
   cp.friction = km.friction.read(mat);
-  const double real_modulus = km.real_youngs_modulus.read(mat);
+  return km.real_youngs_modulus.read(mat);
+}
 
+// [material] and [contact]; returns the real Young's modulus (0 = same as the model's).
+double parse_material_contact(const ConfigSection& root, ImpactCase& c) {
+  const double real_modulus = parse_material(root, c);
+  const auto& kc = dem::contact::contact_settings();
+  auto& cp = c.dem.contact;
   auto con = kc.t.open(root);
   cp.models = dem::contact::read_models(con);
   cp.declared = kc.read_declared(con);
@@ -368,6 +373,9 @@ void parse_coupling(const ConfigSection& root, double real_modulus, ImpactCase& 
   bool any_charge = a.charged && a.charge_density > 0.0;
   for (const auto& lp : a.particles) any_charge = any_charge || lp.charge != 0.0;
   any_charge = any_charge || c.projectile.charge != 0.0;
+  using Charges = const std::vector<double>*;  // the charge columns of structure files
+  for (Charges s : std::initializer_list<Charges>{&a.structure.charge, &c.projectile.body.structure.charge})
+    any_charge = any_charge || std::any_of(s->begin(), s->end(), [](double q) { return q != 0.0; });
   c.electrostatics = any_charge;
   const auto& ks = es::es_keys();
   if (!c.electrostatics && !ks.t.present(root)) return;
@@ -420,6 +428,10 @@ double material_density(const ImpactCase& c, std::uint32_t id) {
   return id == 0 ? c.agglomerate.density : c.dem.materials[id - 1].density;
 }
 
+std::string material_name(const ImpactCase& c, std::uint32_t id) {
+  return id == 0 ? std::string("default") : c.dem.materials[id - 1].name;
+}
+
 std::string material_names(const ImpactCase& c) {
   std::string out = "\"default\"";
   for (const auto& m : c.dem.materials) out += fmt::format(", \"{}\"", m.name);
@@ -442,6 +454,25 @@ ImpactCase parse_impact_case(Config& cfg) {
   check_list_overlaps(root, c);
   check_walls(root, c);
   check_time_step(root, c);
+  return c;
+}
+
+ImpactCase parse_aggregate_case(Config& cfg, bool& materials_given) {
+  const auto& k = impact_keys();
+  ImpactCase c;
+  auto root = cfg.root();
+  c.name = k.top.name.read(root);
+  materials_given = k.material.t.present(root) || k.materials.t.present(root) ||
+                    k.agglomerate.material.present(k.agglomerate.t.open(root));
+  if (materials_given) {  // read only then, so that the resolved config of a case without them is unchanged
+    (void)parse_material(root, c);
+    parse_materials(root, c);
+  }
+  const double density = c.agglomerate.density;
+  c.agglomerate = parse_agglomerate(root, cfg.file());
+  c.agglomerate.density = density;
+  materials_given = materials_given || !c.agglomerate.structure.material.empty();
+  if (is_structure_shape(c.agglomerate.shape)) parse_body_materials(root, c);
   return c;
 }
 

@@ -126,8 +126,16 @@ AgglomerateSpec parse_agglomerate(const ConfigSection& root, const std::string& 
 // Reads every section; throws ConfigError naming file, key, value and the allowed range.
 ImpactCase parse_impact_case(Config& cfg);
 
+// What `agglo aggregate` reads: the name, [agglomerate] (its structure built and checked) and, when the
+// case has a [material] table, [[materials]] entries or agglomerate.material, those as parse_impact_case
+// reads them with the material of every primary (agglomerate.material, a file's
+// material column); `materials_given` says whether it had any of them.
+ImpactCase parse_aggregate_case(Config& cfg, bool& materials_given);
+
 // Density of material id `id` [kg/m^3]: 0 = [material], k >= 1 = c.dem.materials[k - 1].
 double material_density(const ImpactCase& c, std::uint32_t id);
+// Name of material id `id`: "default" (0, the [material] table) or its [[materials]] name.
+std::string material_name(const ImpactCase& c, std::uint32_t id);
 // The names a material key accepts, "default" first, quoted and comma-separated (messages).
 std::string material_names(const ImpactCase& c);
 

@@ -11,6 +11,7 @@
 #include "agglo/core/error.hpp"
 #include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/electrostatic_coupling.hpp"
+#include "agglo/impact/estimate.hpp"
 #include "agglo/impact/experiment.hpp"
 
 namespace agglo::impact {
@@ -53,11 +54,19 @@ double wall_gap(const dem::DemSystem& sys) {
   return std::max(gap, 0.0);
 }
 
+// The case's DEM parameters with the time step of its runs (time_step: the projectile, added after the
+// system is built, included).
+dem::DemParams run_params(const ImpactCase& c) {
+  dem::DemParams d = c.dem;
+  d.dt = time_step(c);
+  return d;
+}
+
 }  // namespace
 
 ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double speed, Recorder* rec,
                      ProgressFn progress)
-    : c_(c), speed_(speed), sys_(std::move(agglomerate), c.dem), n_agg_(sys_.particles().size()), rec_(rec),
+    : c_(c), speed_(speed), sys_(std::move(agglomerate), run_params(c)), n_agg_(sys_.particles().size()), rec_(rec),
       progress_(std::move(progress)) {
   if (c.electrostatics) {
     es_ = make_electrostatic_force(c);
@@ -80,6 +89,7 @@ ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double spe
   if (c.wall_impact) return;
   dem::Particles tmp = sys_.particles();
   add_projectile(tmp, c, speed);
+  relax_projectile(c, tmp, n_agg_, speed);  // an aggregate with charges or in a field, as the target
   for (std::size_t q = n_agg_; q < tmp.size(); ++q)
     sys_.add_particle(tmp.x[q], tmp.r[q], material_density(c, tmp.mat[q]), tmp.v[q], tmp.q[q], tmp.kappa[q], tmp.mat[q]);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // An aggregate of spherical primaries (docs/model.md §S): centres x [m], radii r [m], and per primary an
-// optional charge [C], relative permittivity and material name (empty vectors = not given). Primaries "touch" when their
+// optional charge [C], relative permittivity, material name and density (empty vectors = not given). Primaries "touch" when their
 // centre distance equals r_i + r_j within kContactTolerance of the smaller radius; the builders of this
 // folder place every primary touching at least one other, with no overlap (structure/validate.hpp).
 #include <cstddef>
@@ -22,6 +22,7 @@ struct Aggregate {
   std::vector<double> charge;       // [C], empty = none given
   std::vector<double> permittivity; // relative permittivity, empty = none given
   std::vector<std::string> material; // material name per primary (impact cases), empty = none given
+  std::vector<double> density;       // [kg/m^3] of each primary's material, empty = none given
   std::size_t size() const { return x.size(); }
   void add(const Vec3& pos, double radius) {
     x.push_back(pos);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "agglo/core/cancel.hpp"
 #include "agglo/core/constants.hpp"
 #include "agglo/core/rng.hpp"
 #include "agglo/structure/cluster.hpp"
@@ -60,6 +61,7 @@ void collide_clusters(Cluster& a, const Cluster& b, CounterRng& rng) {
   const Rotation R = random_rotation(rng);
   const double reach = enclosing_radius(a, ca) + enclosing_radius(b, cb);
   for (int miss = 0; miss < kMaxMisses; ++miss) {
+    poll_cancel();  // a line costs O(m_a m_b): a cancelled build stops here (core/cancel.hpp)
     Vec3 o, u;
     random_line(ca, reach, rng, o, u);
     double best = std::numeric_limits<double>::infinity();
@@ -85,7 +87,10 @@ Aggregate build_ballistic(const BallisticRequest& q) {
   if (q.kind == Ballistic::particle_cluster) {
     Cluster c;
     c.add({}, radii[0]);
-    for (std::size_t k = 1; k < radii.size(); ++k) add_ballistic_primary(c, radii[k], rng);
+    for (std::size_t k = 1; k < radii.size(); ++k) {
+      poll_cancel();  // a primary costs O(k) per line (core/cancel.hpp)
+      add_ballistic_primary(c, radii[k], rng);
+    }
     return centred_aggregate(c);
   }
   std::vector<Cluster> level(radii.size());

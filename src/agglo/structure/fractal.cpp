@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "agglo/core/cancel.hpp"
 #include "agglo/core/constants.hpp"
 #include "agglo/core/rng.hpp"
 #include "agglo/structure/cluster.hpp"
@@ -133,6 +134,7 @@ bool join_clusters(Cluster& a, const Cluster& b, const Law& law, CounterRng& rng
     const auto [lo, hi] = pair_range(g, g.d1[i], g.d2[j], a.r[i] + b.r[j]);
     if (lo > hi) continue;
     ++feasible;
+    poll_cancel();  // a placement costs O(m1 + m2): a cancelled build stops here (core/cancel.hpp)
     for (int k = 0; k < kAngleTries; ++k)
       if (try_place(a, b, i, j, g, rng, placed)) {
         a.append(placed);
@@ -156,6 +158,7 @@ std::vector<Cluster> grow_subclusters(const FractalRequest& q, const std::vector
     const int m = n / count + (s < n % count ? 1 : 0);  // sizes differ by at most one
     std::vector<double> r(radii.begin() + start, radii.begin() + start + m);
     int tries = 0;
+    poll_cancel();
     while (!grow_subcluster(out[static_cast<std::size_t>(s)], r.data(), m, law, rng)) {
       for (int k = m - 1; k > 0; --k)  // a restart takes the primaries in another order
         std::swap(r[static_cast<std::size_t>(k)], r[random_index(rng, static_cast<std::size_t>(k) + 1)]);

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "agglo/core/cancel.hpp"
 #include "agglo/structure/primaries.hpp"
 
 namespace agglo::structure {
@@ -36,7 +37,8 @@ double rg_spheres(const Aggregate& a) {
 ContactScan scan_contacts(const Aggregate& a) {
   ContactScan s;
   s.contacts.coordination.assign(a.size(), 0);
-  for (std::size_t i = 0; i < a.size(); ++i)
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    poll_cancel();  // O(N) per primary: a cancelled check of a large structure stops here (core/cancel.hpp)
     for (std::size_t j = i + 1; j < a.size(); ++j) {
       const double reach = a.r[i] + a.r[j], rmin = std::min(a.r[i], a.r[j]);
       const double box = reach + 2.0 * kContactTolerance * rmin;  // no contact beyond it on any axis
@@ -53,6 +55,7 @@ ContactScan scan_contacts(const Aggregate& a) {
         s.contacts.max_error = std::max(s.contacts.max_error, std::abs(err));
       }
     }
+  }
   return s;
 }
 

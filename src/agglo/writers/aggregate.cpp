@@ -1,5 +1,7 @@
 #include "agglo/writers/aggregate.hpp"
 
+#include <algorithm>
+
 #include "agglo/io/dataset_scalars.hpp"
 #include "agglo/io/vtk.hpp"
 
@@ -15,6 +17,17 @@ io::Table aggregate_table(const structure::Aggregate& a, const structure::Summar
             io::ints_of(s.contacts.coordination, [](int c) { return c; }));
   if (!a.charge.empty()) t.real("charge", "C", "free charge of the primary", a.charge);
   if (!a.permittivity.empty()) t.real("permittivity", "1", "relative permittivity of the primary", a.permittivity);
+  if (!a.material.empty()) {  // codes in order of first appearance, the names as words
+    std::vector<std::string> names;
+    std::vector<std::int64_t> codes;
+    for (const auto& m : a.material) {
+      auto it = std::find(names.begin(), names.end(), m);
+      if (it == names.end()) it = names.insert(names.end(), m);
+      codes.push_back(it - names.begin());
+    }
+    t.flag("material", "material of the primary ([material] = default, or a [[materials]] name)", names, codes);
+  }
+  if (!a.density.empty()) t.real("density", "kg m-3", "density of the primary's material", a.density);
   return t;
 }
 

@@ -32,7 +32,7 @@ class Aggregate final : public Command {
   const settings::Setting* seed_key() const override { return &settings::impact_settings().agglomerate.seed; }
 
   CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
-    const impact::AgglomerateSpec a = spec(cfg);
+    const impact::AgglomerateSpec a = spec(cfg).agglomerate;
     const auto contacts = structure::validate_structure(a.structure, "shape");
     const structure::Summary s = structure::summarize(a.structure, contacts, a.shape != "file");
     writers::AggregateTarget target{a.shape, std::nullopt, std::nullopt};
@@ -50,16 +50,25 @@ class Aggregate final : public Command {
   }
 
  private:
-  // [agglomerate] and the top level, the structure built and checked.
-  static impact::AgglomerateSpec spec(Config& cfg) {
+  // [agglomerate] and the top level, the structure built and checked; with materials in the case
+  // (impact::parse_aggregate_case), each primary's material name and density in the structure.
+  static impact::ImpactCase spec(Config& cfg) {
     const auto& keys = settings::impact_settings();
-    auto root = cfg.root();
-    (void)keys.top.name.read(root);
-    impact::AgglomerateSpec a = impact::parse_agglomerate(root, cfg.file());
+    bool materials = false;
+    impact::ImpactCase c = impact::parse_aggregate_case(cfg, materials);
+    auto& a = c.agglomerate;
     if (!impact::is_structure_shape(a.shape))
-      keys.agglomerate.shape.reject(keys.agglomerate.t.open(root),
+      keys.agglomerate.shape.reject(keys.agglomerate.t.open(cfg.root()),
                                     "agglo aggregate builds shape = \"fractal\", \"bpca\", \"bcca\" or \"file\"");
-    return a;
+    if (!materials) return c;
+    auto& s = a.structure;
+    s.material.assign(s.size(), {});
+    s.density.assign(s.size(), 0.0);
+    for (std::size_t k = 0; k < s.size(); ++k) {
+      s.material[k] = impact::material_name(c, a.material_of(k));
+      s.density[k] = impact::material_density(c, a.material_of(k));
+    }
+    return c;
   }
 };
 
