@@ -5,7 +5,7 @@ early counts the runs it has). The orientations are the samples: each mean is gi
 s / sqrt(n) over the n orientations of that speed.
 
     /usr/bin/python3 scripts/studies/plot_breakage_wall.py --study results/studies/breakage_wall \
-        [--cohesion4 DIR]  [--figures docs/figures]  [--table table.md]
+        [--cohesion4 DIR]  [--figures docs/img]  [--table table.md]
 
 --cohesion4: the compact aggregate with four times the surface energy (breakage_wall.py --shapes bpca
 --set material.surface_energy=0.04), for the v^2 / v_s^2 collapse.
@@ -105,7 +105,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--study", default=os.path.join(ROOT, "results", "studies", "breakage_wall"))
     ap.add_argument("--cohesion4", default=None)
-    ap.add_argument("--figures", default=os.path.join(ROOT, "docs", "figures"))
+    ap.add_argument("--figures", default=os.path.join(ROOT, "docs", "img"))
     ap.add_argument("--table", default=None, help="write the markdown table here (default: print it)")
     a = ap.parse_args()
     import matplotlib
