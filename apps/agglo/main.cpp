@@ -68,6 +68,10 @@ int run_cli(int argc, char** argv) {
     report("agglo: numerical failure: %s\n", agglo::one_line(e.what()).c_str());
     return 3;
   } catch (const agglo::InterruptedError& e) {
+    if (e.before_output) {
+      report("agglo: %s while the case was read; nothing was written\n", agglo::one_line(e.what()).c_str());
+      return agglo::cli::interrupt_exit_code();
+    }
     report("agglo: %s; the results so far are in the output folder, marked incomplete in run.json "
            "(ensembles keep their finished jobs in journal.jsonl); rerun with --resume to continue\n",
            agglo::one_line(e.what()).c_str());

@@ -114,6 +114,8 @@ rc=$?
 [ $cpu -le 1000 ] || fail "parse_fractal: $cpu ms of CPU time after SIGINT (limit 1000 ms)"
 [ $rc -eq 130 ] || fail "parse_fractal: exit $rc, expected 130: $(cat "$T/parse_fractal.err")"
 [ ! -e "$T/parse_fractal" ] || fail "parse_fractal: an output folder was left"
+grep -q "nothing was written" "$T/parse_fractal.err" && ! grep -q "output folder" "$T/parse_fractal.err" ||
+  fail "parse_fractal: the message speaks of an output folder that does not exist: $(cat "$T/parse_fractal.err")"
 echo "ok   parse_fractal: SIGINT -> exit $rc, $cpu ms of CPU time"
 interrupt build_fractal TERM 143 aggregate "$T/big.toml"
 [ ! -e "$T/build_fractal/aggregate.csv" ] || fail "build_fractal: aggregate.csv written by an interrupted build"

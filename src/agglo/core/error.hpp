@@ -42,6 +42,8 @@ struct InvalidRunError : NumericalError {
 
 struct InterruptedError : std::runtime_error {
   using std::runtime_error::runtime_error;
+  // True when the run stopped before it wrote anything (while its case was read, run::plan).
+  bool before_output = false;
 };
 
 // `text` cut for an error line: its first `max` characters (UTF-8 sequences kept whole) and "…" when it

@@ -67,7 +67,12 @@ std::size_t case_parses() { return g_case_parses.load(); }
 Estimate plan(const Command& cmd, Config& cfg, const RunContext& ctx) {
   check_budgets(cmd.lower_bound(cfg), budgets_of(ctx), cfg.file());
   const CancelScope cancel_scope(ctx.cancel);  // parsing may build a large structure, which polls it
-  parse_case(cmd, cfg);
+  try {
+    parse_case(cmd, cfg);
+  } catch (InterruptedError& e) {
+    e.before_output = true;  // no output folder exists yet
+    throw;
+  }
   for (const auto& w : cfg.take_warnings()) ctx.report().warning(w);
   Estimate e = cmd.estimate(cfg, ctx);
   e.memory.value += kProcessBaseBytes;
