@@ -12,6 +12,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from plot_save import save
 
 
 def read(path):
@@ -30,7 +31,7 @@ def main(out):
     ax.set_ylim(0, 100)
     ax.legend(frameon=False)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "efficiency.png"), dpi=120)
+    save(fig, out, "efficiency.png", 120)
     plt.close(fig)
 
     psd = read(os.path.join(out, "psd.csv"))
@@ -50,7 +51,7 @@ def main(out):
         a.set_title(title)
     axs[0].legend(frameon=False, fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "psd.png"), dpi=120)
+    save(fig, out, "psd.png", 120)
     plt.close(fig)
 
     snap_path = os.path.join(out, "snapshots.csv")
@@ -80,7 +81,7 @@ def main(out):
                 a.set_aspect("equal")
             axs[-1, 0].set_xlabel("x / cm")
             fig.tight_layout()
-            fig.savefig(os.path.join(out, "snapshots.png"), dpi=90)
+            save(fig, out, "snapshots.png", 90)
             plt.close(fig)
 
 

@@ -9,6 +9,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+from plot_save import save
 
 
 def main(outdir):
@@ -28,9 +29,7 @@ def main(outdir):
     ax.grid(alpha=0.3)
     ax.legend(loc="lower right")
     fig.tight_layout()
-    tmp = os.path.join(outdir, ".breakup.tmp.png")
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, os.path.join(outdir, "breakup.png"))
+    save(fig, outdir, "breakup.png", 110)
 
 
 if __name__ == "__main__":

@@ -14,6 +14,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+from plot_save import save
 
 
 def read_csv(path):
@@ -75,7 +76,7 @@ def main(outdir):
     fig.suptitle("calibration: " + ", ".join(f"{p['key']} = {p['best']:.4g}" for p in cal["parameters"])
                  + ("" if cal["feasible"] else "  (no point meets every target)"), fontsize=10)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "calibration.png"), dpi=110)
+    save(fig, outdir, "calibration.png", 110)
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+from plot_save import save
 
 
 def main(outdir):
@@ -31,9 +32,7 @@ def main(outdir):
         a.grid(alpha=0.3)
     fig.suptitle(os.path.basename(os.path.normpath(outdir)))
     fig.tight_layout()
-    tmp = os.path.join(outdir, ".histories.tmp.png")
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, os.path.join(outdir, "histories.png"))
+    save(fig, outdir, "histories.png", 110)
 
 
 if __name__ == "__main__":

@@ -15,6 +15,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from plot_save import save
 
 
 def column(rows, name):
@@ -65,7 +66,7 @@ def main(out):
         a.legend(frameon=False, fontsize=8)
     fig.suptitle(f"mean +- standard error over {members(out)} seeds", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "ensemble.png"), dpi=100)
+    save(fig, out, "ensemble.png", 100)
     plt.close(fig)
 
 

@@ -19,6 +19,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from plot_save import save
 
 
 def read(path):
@@ -70,7 +71,7 @@ def generic(out, keys, rows):
     if len(groups) > 1:
         ax.legend(frameon=False, fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "sweep.png"), dpi=120)
+    save(fig, out, "sweep.png", 120)
     plt.close(fig)
 
 
@@ -136,7 +137,7 @@ def main(out, keys, seeds=False):
     axs[1].set_ylabel(f"fine efficiency / % (mean ± s.e., {rows[0]['members']} seeds)" if seeds
                       else "fine efficiency / %")
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "sweep.png"), dpi=120)
+    save(fig, out, "sweep.png", 120)
     plt.close(fig)
 
     fig, ax = plt.subplots(figsize=(5, 3.6))
@@ -155,7 +156,7 @@ def main(out, keys, seeds=False):
                   else "fine efficiency / %")
     ax.legend(frameon=False, fontsize=7, title=key.split(".")[-1])
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "sweep_time.png"), dpi=120)
+    save(fig, out, "sweep_time.png", 120)
     plt.close(fig)
 
 

@@ -9,6 +9,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+from plot_save import save
 
 
 def main(outdir):
@@ -28,9 +29,7 @@ def main(outdir):
     ax[0].legend(loc="center right")
     ax[1].set_title("zoom on the bracket")
     fig.tight_layout()
-    tmp = os.path.join(outdir, ".vcrit.tmp.png")
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, os.path.join(outdir, "vcrit.png"))
+    save(fig, outdir, "vcrit.png", 110)
 
 
 if __name__ == "__main__":

@@ -1,5 +1,10 @@
 #include "command.hpp"
 
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -143,6 +148,38 @@ void dry_run(const std::string& what, const Estimate& e, double seconds_per_step
   run::check_budgets(e, b, what);
 }
 
+PlotsInterrupted::PlotsInterrupted(const std::filesystem::path& f)
+    : InterruptedError("interrupted while making the plots"), folder(f) {}
+
+namespace {
+// The plot scripts write each PNG as `.NAME.tmp.png` and rename it when complete.
+void remove_partial_plots(const std::filesystem::path& out) {
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(out, ec)) {
+    const std::string n = e.path().filename().string();
+    if (n.starts_with('.') && n.ends_with(".tmp.png")) std::filesystem::remove(e.path(), ec);
+  }
+}
+
+// Waits for the child; on an interruption ends it (SIGTERM to its process group) and throws.
+// Returns the child's wait status, or -1 if waiting failed.
+int wait_for_plots(pid_t pid, const std::filesystem::path& out) {
+  int status = 0;
+  for (;;) {
+    const pid_t r = waitpid(pid, &status, WNOHANG);
+    if (r == pid) return status;
+    if (r < 0 && errno != EINTR) return -1;
+    if (interrupt_token().cancelled()) {
+      kill(-pid, SIGTERM);
+      while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+      remove_partial_plots(out);
+      throw PlotsInterrupted(out);
+    }
+    usleep(20000);
+  }
+}
+}  // namespace
+
 void run_plot_script(const std::string& script, const std::filesystem::path& out, const std::vector<std::string>& args) {
   if (!plots_enabled() || script.empty() || !run::is_output_rank()) return;
   namespace fs = std::filesystem;
@@ -151,15 +188,24 @@ void run_plot_script(const std::string& script, const std::filesystem::path& out
     std::fprintf(stderr, "agglo: warning: plot script %s not found; no plots made\n", path.c_str());
     return;
   }
-  auto quote = [](const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-  };
-  std::string cmd = quote(AGGLO_PYTHON) + " " + quote(path.string()) + " " + quote(out.string());
-  for (const auto& a : args) cmd += " " + quote(a);
-  if (std::system(cmd.c_str()) != 0)
-    std::fprintf(stderr, "agglo: warning: plotting failed (%s); CSV results are complete\n", cmd.c_str());
+  std::vector<std::string> words{AGGLO_PYTHON, path.string(), out.string()};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  // Its own process group: a terminal's Ctrl-C reaches agglo only, which then ends the script quietly
+  // (a Python traceback would break the one-line message).
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attr, 0);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, words[0].c_str(), nullptr, &attr, argv.data(), environ);
+  posix_spawnattr_destroy(&attr);
+  const int status = rc == 0 ? wait_for_plots(pid, out) : -1;
+  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    std::fprintf(stderr, "agglo: warning: plotting failed (%s %s); CSV results are complete\n", AGGLO_PYTHON,
+                 path.c_str());
 }
 
 }  // namespace agglo::cli

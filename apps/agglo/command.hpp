@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "agglo/core/config.hpp"
+#include "agglo/core/error.hpp"
 #include "agglo/run/command.hpp"
 
 namespace agglo::cli {
@@ -54,10 +55,18 @@ int interrupt_exit_code();
 bool& quiet();
 bool& plots_enabled();
 
-// Runs `python3 scripts/<script> <outdir> [args...]` to make PNG plots from the CSV outputs.
-// Plotting is best effort: a missing matplotlib gives a warning, never a failed run.
+// Runs `python3 scripts/<script> <outdir> [args...]` to make PNG plots from the CSV outputs, as a child
+// process in its own process group. Plotting is best effort: a missing matplotlib gives a warning, never
+// a failed run. Ctrl-C or SIGTERM while it runs ends the script within about 20 ms, removes its
+// temporary files (`.*.tmp.png`) and throws PlotsInterrupted: the results are complete, the plots not.
 void run_plot_script(const std::string& script, const std::filesystem::path& out,
                      const std::vector<std::string>& args = {});
+
+// Interrupted while making the plots of a finished run (exit code as any interruption).
+struct PlotsInterrupted : InterruptedError {
+  explicit PlotsInterrupted(const std::filesystem::path& folder);
+  std::filesystem::path folder;
+};
 
 // Subcommands register themselves from their own file: `Registration reg([](CLI::App& app) {...});`
 using Registrar = std::function<void(CLI::App&)>;

@@ -67,6 +67,10 @@ int run_cli(int argc, char** argv) {
   } catch (const agglo::NumericalError& e) {
     report("agglo: numerical failure: %s\n", agglo::one_line(e.what()).c_str());
     return 3;
+  } catch (const agglo::cli::PlotsInterrupted& e) {  // before its base class
+    report("agglo: %s; the results in %s are complete (run.json), the plots are not (rerun without Ctrl-C, or "
+           "use --no-plots)\n", e.what(), e.folder.string().c_str());
+    return agglo::cli::interrupt_exit_code();
   } catch (const agglo::InterruptedError& e) {
     if (e.before_output) {
       report("agglo: %s while the case was read; nothing was written\n", agglo::one_line(e.what()).c_str());

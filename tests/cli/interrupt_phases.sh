@@ -119,4 +119,43 @@ grep -q "nothing was written" "$T/parse_fractal.err" && ! grep -q "output folder
 echo "ok   parse_fractal: SIGINT -> exit $rc, $cpu ms of CPU time"
 interrupt build_fractal TERM 143 aggregate "$T/big.toml"
 [ ! -e "$T/build_fractal/aggregate.csv" ] || fail "build_fractal: aggregate.csv written by an interrupted build"
+# Making the plots (after the results are written): agglo ran the matplotlib script with std::system,
+# which ignores SIGINT in the caller and waits for the script; SIGTERM was noted but the run went on to
+# the end of plotting (about 1.5 s) and exited 0. Now the script is a child in its own process group that
+# agglo ends on the signal: exit 143 / 130 within the wall limit, one line saying the results are
+# complete, run.json "complete", no plot script left running and no temporary PNG. SIGINT is sent to
+# agglo's whole process group, as a terminal's Ctrl-C is.
+plots() {  # plots NAME SIGNAL CODE
+  local name=$1 sig=$2 code=$3 out="$T/$1" pid child="" t0 dt rc
+  setsid "$A" -q collide "$SRC/cases/seed000_neutral_tetrahedron.toml" --speed 0.2 --out "$out" \
+    > /dev/null 2> "$T/$name.err" &
+  pid=$!
+  for _ in $(seq 600); do
+    child=$(pgrep -P $pid | head -n 1)
+    [ -n "$child" ] && break
+    kill -0 $pid 2> /dev/null || break
+    sleep 0.01
+  done
+  [ -n "$child" ] || fail "$name: no plot script was started: $(cat "$T/$name.err")"
+  sleep 0.3
+  t0=$(now_ms)
+  if [ "$sig" = INT ]; then kill -INT -- -$pid; else kill -"$sig" $pid; fi
+  wait $pid
+  rc=$?
+  dt=$(($(now_ms) - t0))
+  [ $rc -eq "$code" ] || fail "$name: SIG$sig gave exit $rc, expected $code: $(cat "$T/$name.err")"
+  [ $dt -le $WALL_LIMIT_MS ] || fail "$name: $dt ms after SIG$sig"
+  ! kill -0 "$child" 2> /dev/null || fail "$name: the plot script is still running"
+  [ "$(wc -l < "$T/$name.err")" -eq 1 ] && grep -q "results in .* are complete" "$T/$name.err" ||
+    fail "$name: message: $(cat "$T/$name.err")"
+  grep -q '"status": *"complete"' "$out/run.json" || fail "$name: run.json: $(cat "$out/run.json")"
+  ! find "$out" -name '*.tmp*' | grep -q . || fail "$name: temporary files left: $(find "$out" -name '*.tmp*')"
+  echo "ok   $name: SIG$sig while plotting -> exit $rc after $dt ms"
+}
+if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
+  plots plots_term TERM 143
+  plots plots_int INT 130
+else
+  echo "skip plots: no matplotlib for /usr/bin/python3"
+fi
 echo "PASS interrupt_phases"

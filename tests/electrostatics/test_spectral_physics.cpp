@@ -6,6 +6,8 @@
 #include <cmath>
 #include <random>
 
+#include <omp.h>
+
 #include "agglo/core/error.hpp"
 #include "agglo/electrostatics/solver.hpp"
 #include "es_test_helpers.hpp"
@@ -187,6 +189,37 @@ TEST(SpectralPhysics, AgreesWithIndependentReferenceOnRandomPairs) {
     EXPECT_NEAR(norm(sol.force[1] - e * f2), 0.0, 1e-9 * fscale);
     EXPECT_NEAR(ref.fz1, -ref.fz2, 1e-8 * fscale);
   }
+}
+
+// The pair products of a solve run in parallel (blocks of pairs, added in pair order): forces, torques,
+// energy and iteration count must not depend on the thread count. 16 spheres on a 2x2x4 lattice with
+// radii 0.91-1.09 r on a lattice of 2.25 r (120 pairs: two blocks), charged, polarisable, in a field.
+TEST(SpectralPhysics, SolutionDoesNotDependOnTheThreadCount) {
+  Problem p;
+  int n = 0;
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b)
+      for (int c = 0; c < 4; ++c, ++n)
+        p.spheres.push_back({Vec3(a, b, c) * (2.25 * kR), kR * (1.0 + 0.1 * (n % 3)) / 1.1,
+                             (n % 2 ? 1.0 : -0.7) * kQ0, 2.0 + n % 5});
+  p.external_field = Vec3{2e4, -1e4, 3e4};
+  const int saved = omp_get_max_threads();
+  auto run = [&](int threads) {
+    omp_set_num_threads(threads);
+    return spectral(1e-4)->solve(p);
+  };
+  const Solution one = run(1);
+  EXPECT_GE(one.stats.degree, 10);
+  for (int threads : {2, 3}) {
+    const Solution s = run(threads);
+    EXPECT_EQ(s.energy, one.energy) << threads << " threads";
+    EXPECT_EQ(s.stats.iterations, one.stats.iterations) << threads << " threads";
+    for (std::size_t i = 0; i < p.spheres.size(); ++i) {
+      EXPECT_TRUE(s.force[i].x == one.force[i].x && s.force[i].y == one.force[i].y && s.force[i].z == one.force[i].z) << "sphere " << i << ", " << threads << " threads";
+      EXPECT_TRUE(s.torque[i].x == one.torque[i].x && s.torque[i].y == one.torque[i].y && s.torque[i].z == one.torque[i].z) << "sphere " << i << ", " << threads << " threads";
+    }
+  }
+  omp_set_num_threads(saved);
 }
 
 TEST(SpectralErrors, OverlapAndBadInputThrow) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include "agglo/core/cancel.hpp"
 #include "agglo/core/constants.hpp"
@@ -25,6 +26,14 @@ namespace {
 
 using constants::eps0;
 using constants::pi;
+
+// Pairs per block of matvec_M and build_pairs (cancellation is polled between blocks).
+constexpr std::size_t kPairBlock = 64;
+// Below this much work per block (sum of (L+1)^3 over its pairs) the pair products run serially:
+// a parallel region costs microseconds, a pair at L = 10 about as much.
+constexpr double kParallelPairWork = 2e4;
+// Pair set-up (Wigner d, O(L^3) per pair) runs in parallel from this global degree on.
+constexpr int kParallelBuildDegree = 12;
 
 // Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
 // sphere's own potential outside is sum B_lm I_l^m(x - x_i). The external potential at sphere i
@@ -53,6 +62,7 @@ class SpectralSolver final : public Solver {
     sh::FrameRotation R;
   };
   void matvec_M(const double* beta, double* alpha);  // alpha = M beta (sphere-sphere part)
+  void pair_product(const Pair& pr, const double* beta, double* out_i, double* out_k, double* s) const;
   int choose_degree(const Problem& p, double& est_err);
   void build_pairs(const Problem& p);
   void applied_field(const Problem& p, std::vector<double>& alpha_ext, std::vector<double>& rhs);
@@ -66,7 +76,7 @@ class SpectralSolver final : public Solver {
   int L_ = 0, N_ = 0, nc_ = 0;
   std::vector<double> gamma_;  // per sphere, per l
   std::vector<double> beta_, alpha_;
-  std::vector<double> bi_, bk_, ai_, ak_, tmp_;
+  std::vector<double> out_, scratch_;  // matvec_M: per-pair products of a block, per-thread scratch
   Problem last_;
   GmresWorkspace ws_;
   // warm start
@@ -109,48 +119,87 @@ int SpectralSolver::choose_degree(const Problem& p, double& est_err) {
   return L;
 }
 
+// One pair's contribution (rotate into the pair frame, axial translations both ways, rotate back),
+// written (not added) to out_i, out_k (ncoef(pr.L) each); s = 4 ncoef(pr.L) of scratch.
+void SpectralSolver::pair_product(const Pair& pr, const double* beta, double* out_i, double* out_k,
+                                  double* s) const {
+  const int np = sh::ncoef(pr.L);
+  double *bi = s, *bk = s + np, *ai = s + 2 * np, *ak = s + 3 * np;
+  pr.R.to_frame2(pr.L, pr.M, beta + std::size_t(pr.k) * nc_, beta + std::size_t(pr.i) * nc_, bk, bi);
+  std::fill(ai, ai + 2 * np, 0.0);  // ai, ak
+  std::fill(out_i, out_i + np, 0.0);
+  std::fill(out_k, out_k + np, 0.0);
+  // source k seen from i sits at +t z; source i seen from k at -t z.
+  T_.apply(pr.L, pr.M, pr.ui, pr.uk, +1, bk, ai);
+  T_.apply(pr.L, pr.M, pr.uk, pr.ui, -1, bi, ak);
+  pr.R.from_frame2(pr.L, pr.M, ai, ak, out_i, out_k);
+}
+
+// alpha = M beta. The pairs are taken in blocks: each block's pair products run in parallel (OpenMP,
+// when the block has enough work), each into its own slot, and are then added to alpha in pair
+// order, so alpha does not depend on the thread count. Cancellation is polled between blocks (never
+// inside a parallel region, core/cancel.hpp): a block is at most kPairBlock pairs of O(L^3) each.
 void SpectralSolver::matvec_M(const double* beta, double* alpha) {
   std::fill(alpha, alpha + std::size_t(N_) * nc_, 0.0);
-  for (auto& pr : pairs_) {
-    poll_cancel();  // O(L^3) per pair: a cancelled run stops within one pair (core/cancel.hpp)
-    const int Lp = pr.L;
-    const int np = sh::ncoef(Lp);
-    const double* b_i = beta + std::size_t(pr.i) * nc_;
-    const double* b_k = beta + std::size_t(pr.k) * nc_;
-    pr.R.to_frame2(Lp, pr.M, b_k, b_i, bk_.data(), bi_.data());
-    std::fill(ai_.begin(), ai_.begin() + np, 0.0);
-    std::fill(ak_.begin(), ak_.begin() + np, 0.0);
-    // source k seen from i sits at +t z; source i seen from k at -t z.
-    T_.apply(Lp, pr.M, pr.ui, pr.uk, +1, bk_.data(), ai_.data());
-    T_.apply(Lp, pr.M, pr.uk, pr.ui, -1, bi_.data(), ak_.data());
-    pr.R.from_frame2(Lp, pr.M, ai_.data(), ak_.data(), alpha + std::size_t(pr.i) * nc_,
-                     alpha + std::size_t(pr.k) * nc_);
+  const std::size_t npairs = pairs_.size(), nc = std::size_t(nc_);
+  const int threads = omp_get_max_threads();
+  out_.resize(std::min(npairs, kPairBlock) * 2 * nc);
+  scratch_.resize(std::size_t(threads) * 4 * nc);
+  for (std::size_t b0 = 0; b0 < npairs; b0 += kPairBlock) {
+    poll_cancel();
+    const std::size_t b1 = std::min(npairs, b0 + kPairBlock);
+    double work = 0.0;
+    for (std::size_t q = b0; q < b1; ++q) work += std::pow(pairs_[q].L + 1.0, 3);
+    const bool parallel = threads > 1 && b1 - b0 > 1 && work > kParallelPairWork;
+#pragma omp parallel for schedule(dynamic, 1) if (parallel)
+    for (std::size_t q = b0; q < b1; ++q) {
+      double* o = &out_[(q - b0) * 2 * nc];
+      pair_product(pairs_[q], beta, o, o + nc, &scratch_[std::size_t(omp_get_thread_num()) * 4 * nc]);
+    }
+    for (std::size_t q = b0; q < b1; ++q) {
+      const Pair& pr = pairs_[q];
+      const double* o = &out_[(q - b0) * 2 * nc];
+      double* al_i = alpha + std::size_t(pr.i) * nc;
+      double* al_k = alpha + std::size_t(pr.k) * nc;
+      for (int c = 0, np = sh::ncoef(pr.L); c < np; ++c) {
+        al_i[c] += o[c];
+        al_k[c] += o[nc + c];
+      }
+    }
   }
 }
 
 // Pairs with their own truncation degree and frame order (at 1e-3 x target accuracy).
 void SpectralSolver::build_pairs(const Problem& p) {
   const int N = N_;
-  pairs_.resize(std::size_t(N) * (N - 1) / 2);
-  const double tol_pair = 1e-3 * opt_.target_accuracy;
+  const std::size_t npairs = std::size_t(N) * (N - 1) / 2;
+  pairs_.resize(npairs);
   std::size_t q = 0;
   for (int i = 0; i < N; ++i)
     for (int k = i + 1; k < N; ++k, ++q) {
-      poll_cancel();
-      auto& pr = pairs_[q];
-      const auto& a = p.spheres[i];
-      const auto& b = p.spheres[k];
+      pairs_[q].i = i;
+      pairs_[q].k = k;
+    }
+  const double tol_pair = 1e-3 * opt_.target_accuracy;
+  const bool parallel = omp_get_max_threads() > 1 && L_ >= kParallelBuildDegree;
+  for (std::size_t b0 = 0; b0 < npairs; b0 += kPairBlock) {
+    poll_cancel();
+    const std::size_t b1 = std::min(npairs, b0 + kPairBlock);
+#pragma omp parallel for schedule(dynamic, 1) if (parallel && b1 - b0 > 1)
+    for (std::size_t r = b0; r < b1; ++r) {
+      auto& pr = pairs_[r];
+      const auto& a = p.spheres[pr.i];
+      const auto& b = p.spheres[pr.k];
       Vec3 d = b.center - a.center;
       double t = norm(d);
-      pr.i = i;
-      pr.k = k;
       pr.ui = a.radius / t;
       pr.uk = b.radius / t;
-      auto r = sh::limit_ratios(a.radius, b.radius, t);
-      pr.L = std::min(L_, std::max(2, sh::degree_for(r, tol_pair)));
+      auto lr = sh::limit_ratios(a.radius, b.radius, t);
+      pr.L = std::min(L_, std::max(2, sh::degree_for(lr, tol_pair)));
       pr.M = T_.order_cutoff(pr.L, pr.ui, pr.uk, tol_pair);
       pr.R.build(d, pr.L, pr.M);
     }
+  }
 }
 
 // gamma_l per sphere; the applied field's local coefficients alpha_ext (phi = -E.x, scaled by
@@ -281,8 +330,6 @@ Solution SpectralSolver::solve(const Problem& p) {
   nc_ = sh::ncoef(L);
   if (L > T_.degree()) T_.prepare(std::max(L, std::min(opt_.max_degree_limit, L + 8)));  // grows only
   build_pairs(p);
-  bi_.assign(nc_, 0.0);
-  bk_ = ai_ = ak_ = tmp_ = bi_;
   std::vector<double> alpha_ext, rhs;
   applied_field(p, alpha_ext, rhs);
   const double tol = std::min(opt_.tolerance, 1e-2 * opt_.target_accuracy);
