@@ -192,26 +192,29 @@ TEST(SpectralPhysics, AgreesWithIndependentReferenceOnRandomPairs) {
 }
 
 // The pair products of a solve run in parallel (blocks of pairs, added in pair order): forces, torques,
-// energy and iteration count must not depend on the thread count. 16 spheres on a 2x2x4 lattice with
-// radii 0.91-1.09 r on a lattice of 2.25 r (120 pairs: two blocks), charged, polarisable, in a field.
+// energy and iteration count must not depend on the thread count. 16 charged, polarisable spheres of
+// radii 0.95-1.05 r on a 2x2x4 lattice of 2.105 r (gaps down to 0.005 r) in a field, at accuracy 1e-7
+// (degree 39), so that a block has the work to run in parallel: checked through the solver's count of
+// such blocks, or the comparison could pass vacuously.
 TEST(SpectralPhysics, SolutionDoesNotDependOnTheThreadCount) {
   Problem p;
   int n = 0;
   for (int a = 0; a < 2; ++a)
     for (int b = 0; b < 2; ++b)
       for (int c = 0; c < 4; ++c, ++n)
-        p.spheres.push_back({Vec3(a, b, c) * (2.25 * kR), kR * (1.0 + 0.1 * (n % 3)) / 1.1,
-                             (n % 2 ? 1.0 : -0.7) * kQ0, 2.0 + n % 5});
+        p.spheres.push_back({Vec3(a, b, c) * (2.105 * kR), kR * (0.95 + 0.05 * (n % 3)),
+                             (n % 2 ? 1.0 : -0.7) * kQ0, 10.0 + n % 5});
   p.external_field = Vec3{2e4, -1e4, 3e4};
   const int saved = omp_get_max_threads();
   auto run = [&](int threads) {
     omp_set_num_threads(threads);
-    return spectral(1e-4)->solve(p);
+    return spectral(1e-7)->solve(p);
   };
   const Solution one = run(1);
   EXPECT_GE(one.stats.degree, 10);
   for (int threads : {2, 3}) {
     const Solution s = run(threads);
+    EXPECT_GT(s.stats.extra.at("parallel_pair_blocks").get<long>(), 0) << "no block to run in parallel";
     EXPECT_EQ(s.energy, one.energy) << threads << " threads";
     EXPECT_EQ(s.stats.iterations, one.stats.iterations) << threads << " threads";
     for (std::size_t i = 0; i < p.spheres.size(); ++i) {

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <omp.h>
+
 #include "agglo/electrostatics/sphere_mesh.hpp"
 #include "agglo/electrostatics/spectral/degree.hpp"
 #include "agglo/electrostatics/spectral/spectral_solver.hpp"
@@ -79,7 +81,9 @@ double memory_bytes(const SolverOptions& opt, const Problem& p) {
     bytes += count * (kPairBytes + 8.0 * rotation_doubles(Lp));
   });
   const double n = static_cast<double>(p.spheres.size()), nc = (L + 1.0) * (L + 1.0);
-  return bytes + 8.0 * n * nc * (10.0 + std::min(opt.max_iterations, 100) + 1.0);
+  // per sphere: solution, GMRES basis; per pair of a block of products (at most 128) and per thread
+  const double block = std::min(0.5 * n * (n - 1.0), 128.0), threads = omp_get_max_threads();
+  return bytes + 8.0 * nc * (n * (10.0 + std::min(opt.max_iterations, 100) + 1.0) + 2.0 * block + 4.0 * threads);
 }
 
 double memory_lower_bound(const SolverOptions&, double spheres) {

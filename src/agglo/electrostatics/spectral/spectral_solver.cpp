@@ -27,13 +27,18 @@ namespace {
 using constants::eps0;
 using constants::pi;
 
-// Pairs per block of matvec_M and build_pairs (cancellation is polled between blocks).
-constexpr std::size_t kPairBlock = 64;
-// Below this much work per block (sum of (L+1)^3 over its pairs) the pair products run serially:
-// a parallel region costs microseconds, a pair at L = 10 about as much.
-constexpr double kParallelPairWork = 2e4;
-// Pair set-up (Wigner d, O(L^3) per pair) runs in parallel from this global degree on.
-constexpr int kParallelBuildDegree = 12;
+// Most pairs per block of matvec_M and build_pairs (cancellation is polled between blocks; matvec_M
+// holds a block's products: 2 kPairBlock (L+1)^2 numbers), and the work that closes a block early
+// (sum of (L+1)^3 over its pairs; about 20 ms of products).
+constexpr std::size_t kPairBlock = 128;
+constexpr double kBlockWork = 1e7;
+// Below this much work per block (sum of (L+1)^3 over its pairs; about 2 ms of products) a block runs
+// serially. A parallel region costs microseconds on idle cores, but OpenMP's threads spin-wait after
+// it, and on a machine with fewer free cores than threads the spinning thread holds a core the
+// working one needs: a 5-sphere collide (ten pairs at L = 36, 0.3 ms per product) took 6.3 s on
+// two threads with GOMP_SPINCOUNT=3000, 9.4 s on one and 36.6 s on two with the default spin count
+// under a load of 4 (docs/electrostatics.md, "Threads").
+constexpr double kParallelPairWork = 1e6;
 
 // Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
 // sphere's own potential outside is sum B_lm I_l^m(x - x_i). The external potential at sphere i
@@ -61,8 +66,10 @@ class SpectralSolver final : public Solver {
     int M = 0;  // truncation order in the pair frame
     sh::FrameRotation R;
   };
-  void matvec_M(const double* beta, double* alpha);  // alpha = M beta (sphere-sphere part)
+  // alpha = M beta (sphere-sphere part); `counting` counts the blocks with parallel work
+  void matvec_M(const double* beta, double* alpha, bool counting = false);
   void pair_product(const Pair& pr, const double* beta, double* out_i, double* out_k, double* s) const;
+  std::size_t block_end(std::size_t b0, double& work) const;
   int choose_degree(const Problem& p, double& est_err);
   void build_pairs(const Problem& p);
   void applied_field(const Problem& p, std::vector<double>& alpha_ext, std::vector<double>& rhs);
@@ -77,6 +84,9 @@ class SpectralSolver final : public Solver {
   std::vector<double> gamma_;  // per sphere, per l
   std::vector<double> beta_, alpha_;
   std::vector<double> out_, scratch_;  // matvec_M: per-pair products of a block, per-thread scratch
+  // Blocks of one product with the work to run in parallel (whether or not threads > 1: an output
+  // that does not depend on the thread count), counted in the last solve's final product.
+  long parallel_blocks_ = 0;
   Problem last_;
   GmresWorkspace ws_;
   // warm start
@@ -135,22 +145,23 @@ void SpectralSolver::pair_product(const Pair& pr, const double* beta, double* ou
   pr.R.from_frame2(pr.L, pr.M, ai, ak, out_i, out_k);
 }
 
-// alpha = M beta. The pairs are taken in blocks: each block's pair products run in parallel (OpenMP,
-// when the block has enough work), each into its own slot, and are then added to alpha in pair
-// order, so alpha does not depend on the thread count. Cancellation is polled between blocks (never
-// inside a parallel region, core/cancel.hpp): a block is at most kPairBlock pairs of O(L^3) each.
-void SpectralSolver::matvec_M(const double* beta, double* alpha) {
+// alpha = M beta. The pairs are taken in blocks (block_end): each block's pair products run in parallel
+// (OpenMP, when the block has enough work), each into its own slot, and are then added to alpha in
+// pair order, so alpha does not depend on the thread count. Cancellation is polled between blocks
+// (never inside a parallel region, core/cancel.hpp): a block is at most kPairBlock pairs.
+void SpectralSolver::matvec_M(const double* beta, double* alpha, bool counting) {
   std::fill(alpha, alpha + std::size_t(N_) * nc_, 0.0);
   const std::size_t npairs = pairs_.size(), nc = std::size_t(nc_);
   const int threads = omp_get_max_threads();
   out_.resize(std::min(npairs, kPairBlock) * 2 * nc);
   scratch_.resize(std::size_t(threads) * 4 * nc);
-  for (std::size_t b0 = 0; b0 < npairs; b0 += kPairBlock) {
+  for (std::size_t b0 = 0, b1; b0 < npairs; b0 = b1) {
     poll_cancel();
-    const std::size_t b1 = std::min(npairs, b0 + kPairBlock);
     double work = 0.0;
-    for (std::size_t q = b0; q < b1; ++q) work += std::pow(pairs_[q].L + 1.0, 3);
-    const bool parallel = threads > 1 && b1 - b0 > 1 && work > kParallelPairWork;
+    b1 = block_end(b0, work);
+    const bool enough_work = b1 - b0 > 1 && work > kParallelPairWork;
+    const bool parallel = threads > 1 && enough_work;
+    if (counting) parallel_blocks_ += enough_work ? 1 : 0;
 #pragma omp parallel for schedule(dynamic, 1) if (parallel)
     for (std::size_t q = b0; q < b1; ++q) {
       double* o = &out_[(q - b0) * 2 * nc];
@@ -169,6 +180,15 @@ void SpectralSolver::matvec_M(const double* beta, double* alpha) {
   }
 }
 
+// End of the block of pair products that starts at pair b0: pairs are added until the block holds
+// kBlockWork of work (sum of (L+1)^3) or kPairBlock pairs. `work` returns the block's work.
+std::size_t SpectralSolver::block_end(std::size_t b0, double& work) const {
+  std::size_t b1 = b0;
+  work = 0.0;
+  while (b1 < pairs_.size() && b1 - b0 < kPairBlock && work < kBlockWork) work += std::pow(pairs_[b1++].L + 1.0, 3);
+  return b1;
+}
+
 // Pairs with their own truncation degree and frame order (at 1e-3 x target accuracy).
 void SpectralSolver::build_pairs(const Problem& p) {
   const int N = N_;
@@ -181,11 +201,13 @@ void SpectralSolver::build_pairs(const Problem& p) {
       pairs_[q].k = k;
     }
   const double tol_pair = 1e-3 * opt_.target_accuracy;
-  const bool parallel = omp_get_max_threads() > 1 && L_ >= kParallelBuildDegree;
   for (std::size_t b0 = 0; b0 < npairs; b0 += kPairBlock) {
     poll_cancel();
     const std::size_t b1 = std::min(npairs, b0 + kPairBlock);
-#pragma omp parallel for schedule(dynamic, 1) if (parallel && b1 - b0 > 1)
+    // the set-up of a pair costs about one product at the global degree (bound of its own degree)
+    const bool parallel = omp_get_max_threads() > 1 && b1 - b0 > 1 &&
+                          double(b1 - b0) * std::pow(L_ + 1.0, 3) > kParallelPairWork;
+#pragma omp parallel for schedule(dynamic, 1) if (parallel)
     for (std::size_t r = b0; r < b1; ++r) {
       auto& pr = pairs_[r];
       const auto& a = p.spheres[pr.i];
@@ -335,7 +357,8 @@ Solution SpectralSolver::solve(const Problem& p) {
   const double tol = std::min(opt_.tolerance, 1e-2 * opt_.target_accuracy);
   const GmresResult gr = solve_multipoles(p, rhs, tol);
   // external potential coefficients
-  matvec_M(beta_.data(), alpha_.data());
+  parallel_blocks_ = 0;
+  matvec_M(beta_.data(), alpha_.data(), true);
   for (std::size_t c = 0; c < alpha_.size(); ++c) alpha_[c] += alpha_ext[c];
   Solution sol = forces_and_energy(p);
 
@@ -356,7 +379,8 @@ Solution SpectralSolver::solve(const Problem& p) {
                      {"degree_capped", opt_.max_degree <= 0 && L >= opt_.max_degree_limit},
                      {"max_pair_degree", maxpair},
                      {"max_pair_order", maxorder},
-                     {"gmres_tolerance", tol}};
+                     {"gmres_tolerance", tol},
+                     {"parallel_pair_blocks", parallel_blocks_}};
   return sol;
 }
 
