@@ -168,6 +168,15 @@ TEST(ImpactCheckpoint, ChargedRestartIsExact) {
              true);
 }
 
+// The error-controlled coupling's adapted threshold and measured errors are part of the state.
+TEST(ImpactCheckpoint, ErrorControlledChargedRestartIsExact) {
+  check_case(load_case("seed000_charged_tetrahedron_k15", {"time.after_contact=2e-5", "output.snapshot_interval=1e-5",
+                                                           "projectile.gap_radii=0.3", "time.relax_time=2e-5",
+                                                           "electrostatics.target_accuracy=1e-2",
+                                                           "electrostatics.force_tolerance=1e-2"}),
+             true);
+}
+
 TEST(ImpactCheckpoint, TruncatedPayloadIsRefused) {
   const auto c = load_case("seed000_neutral_tetrahedron", {"projectile.gap_radii=0.3"});
   ImpactRun run(c, build_agglomerate(c), c.projectile.speed, nullptr);

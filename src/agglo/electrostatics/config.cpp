@@ -19,6 +19,7 @@ EsConfig parse_electrostatics(const ConfigSection& s) {
   ec.min_gap = k.min_gap.read(s);
   ec.update_fraction = k.update_fraction.read(s);
   ec.update_interval = static_cast<int>(k.update_interval.read(s));
+  ec.force_tolerance = k.force_tolerance.read(s);
   ec.external_field = k.external_field.read(s);
   ec.force_scale_chi = k.force_scale_chi.read(s);
   ec.hold = k.hold.read(s);

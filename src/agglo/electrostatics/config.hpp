@@ -27,6 +27,7 @@ struct EsConfig {
   double min_gap = es_keys().min_gap.def();  // g_min (dimensionless, relative to the radius)
   double update_fraction = es_keys().update_fraction.def();  // of the smallest electrostatic gap
   int update_interval = static_cast<int>(es_keys().update_interval.def());  // steps; 0 = off
+  double force_tolerance = es_keys().force_tolerance.def();  // adaptive update_fraction; 0 = off
   Vec3 external_field;  // [V/m]
   bool force_scale_chi = es_keys().force_scale_chi.def();
   // Between solves: "constant" (docs/model.md §B.3) | "pair_corrected" (DEM coupling).

@@ -30,6 +30,14 @@ struct SolverKeys {
                                  Range::open_closed(0.0, 1.0)};
   settings::Integer update_interval{
       t, {"electrostatics.update_interval", "steps", "also re-solve every N steps (0 = off)"}, 0, 0, 1000000000};
+  // Error-controlled re-solves (impact/electrostatic_coupling.hpp): in place of update_fraction, a
+  // motion threshold adapted at every solve to the measured error of the held forces.
+  settings::Real force_tolerance{t,
+                                 {"electrostatics.force_tolerance", "",
+                                  "re-solve so that the held forces' relative error stays below this "
+                                  "(adaptive; 0 = the fixed update_fraction)"},
+                                 0.0,
+                                 Range::closed_open(0.0, 1.0)};
   settings::Vector3 external_field{
       t, {"electrostatics.external_field", "V/m", "uniform external field"}, Vec3{0, 0, 0}, Range::any()};
   settings::Bool force_scale_chi{

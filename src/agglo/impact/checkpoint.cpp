@@ -107,6 +107,8 @@ void write_coupling(CheckpointWriter& w, const impact::CouplingState& s) {
   for (double v : {s.solution_energy, s.energy}) w.f64(v);
   for (long v : {s.step_at_solve, s.solves}) w.i64(v);
   for (bool v : {s.correct, s.fast_path}) w.boolean(v);
+  for (double v : {s.fraction, s.hold_error.max, s.hold_error.sum, s.hold_error.fraction}) w.f64(v);
+  w.i64(s.hold_error.measured);
 }
 
 impact::CouplingState read_coupling(CheckpointReader& r) {
@@ -118,6 +120,8 @@ impact::CouplingState read_coupling(CheckpointReader& r) {
   for (double* v : {&s.solution_energy, &s.energy}) *v = r.f64();
   for (long* v : {&s.step_at_solve, &s.solves}) *v = r.i64();
   for (bool* v : {&s.correct, &s.fast_path}) *v = r.boolean();
+  for (double* v : {&s.fraction, &s.hold_error.max, &s.hold_error.sum, &s.hold_error.fraction}) *v = r.f64();
+  s.hold_error.measured = r.i64();
   return s;
 }
 

@@ -21,6 +21,8 @@ CouplingState ElectrostaticForce::state() const {
   s.n_s = n_s_;
   s.fast_path = coulomb_ != nullptr;
   s.warm = solver_->warm_start();
+  s.fraction = fraction_;
+  s.hold_error = hold_error_;
   return s;
 }
 
@@ -41,6 +43,8 @@ void ElectrostaticForce::restore(const CouplingState& s) {
   coulomb_.reset();
   if (s.fast_path) make_fast_path();
   solver_->set_warm_start(s.warm);
+  fraction_ = s.fraction;
+  hold_error_ = s.hold_error;
 }
 
 }  // namespace agglo::impact

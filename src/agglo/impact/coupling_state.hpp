@@ -12,6 +12,15 @@
 
 namespace agglo::impact {
 
+// The errors of the held forces measured at the solves of an error-controlled coupling
+// (electrostatic_coupling.hpp): relative to the largest electrostatic force at each solve.
+struct HoldErrorStats {
+  long measured = 0;        // solves with a measurement (every solve after the first)
+  double max = 0.0;         // largest relative error
+  double sum = 0.0;         // sum of the relative errors (mean = sum / measured)
+  double fraction = 0.0;    // motion threshold after the last solve (fraction of the gap)
+};
+
 struct CouplingState {
   std::vector<Vec3> force, torque;    // held solution of the last solve [N], [N m]
   double solution_energy = 0.0;       // energy of the last solve [J]
@@ -25,6 +34,8 @@ struct CouplingState {
   std::vector<Vec3> n_s;
   bool fast_path = false;             // the exact point-charge solver has been made
   es::WarmStart warm;                 // of the chosen solver
+  double fraction = 0.0;              // motion threshold in use
+  HoldErrorStats hold_error;
 };
 
 }  // namespace agglo::impact

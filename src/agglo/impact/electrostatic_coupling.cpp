@@ -16,6 +16,16 @@ namespace agglo::impact {
 
 namespace {
 
+// Error-controlled re-solves (electrostatic_coupling.hpp): the motion threshold starts small, since
+// nothing is known of the hold error before the first measurement, and doubles at most per solve.
+constexpr double kStartFraction = 1e-4;
+constexpr double kMinFraction = 1e-5;
+// The threshold is rescaled towards an error of kAim x tol, growing at most kGrowth x per solve: the
+// error is largest at the solve only while the motion does not turn back within an interval, which
+// the margin covers (tests/impact/test_coupling.cpp, Coupling.ErrorControlled...).
+constexpr double kAim = 0.5;
+constexpr double kGrowth = 1.5;
+
 // What to change when the particles of a step overlap beyond the electrostatic regularisation. The
 // applied field is named when it dominates: its force scale on a particle, |q| E plus the attraction of
 // the dipoles it induces in touching spheres (~ 4 pi eps0 kappa_0 r^2 E^2), exceeds the largest Coulomb
@@ -39,7 +49,10 @@ std::string overlap_advice(const dem::Particles& p, const es::EsConfig& es) {
 
 }  // namespace
 
-ElectrostaticForce::ElectrostaticForce(const CouplingSettings& s) : s_(s), solver_(es::make_solver(s.es.options)) {}
+ElectrostaticForce::ElectrostaticForce(const CouplingSettings& s)
+    : s_(s),
+      solver_(es::make_solver(s.es.options)),
+      fraction_(s.es.force_tolerance > 0.0 ? kStartFraction : s.es.update_fraction) {}
 
 void ElectrostaticForce::make_fast_path() {
   es::SolverOptions o = s_.es.options;
@@ -57,13 +70,13 @@ bool ElectrostaticForce::needs_solve(const dem::Particles& p, long step) const {
       Vec3 now = p.x[j] - p.x[i];
       Vec3 then = x_at_solve_[j] - x_at_solve_[i];
       double gap = norm(now) - shrink * (p.r[i] + p.r[j]);
-      if (norm(now - then) > s_.es.update_fraction * gap) return true;
+      if (norm(now - then) > fraction_ * gap) return true;
     }
   for (const auto& w : s_.grounded)  // a sphere and its image: separation 2 h along the normal
     for (std::size_t i : visible_) {
       const double h = w.height(p.x[i]);
       const double gap = 2.0 * h - 2.0 * shrink * p.r[i];
-      if (2.0 * std::abs(h - w.height(x_at_solve_[i])) > s_.es.update_fraction * gap) return true;
+      if (2.0 * std::abs(h - w.height(x_at_solve_[i])) > fraction_ * gap) return true;
     }
   return false;
 }
@@ -125,17 +138,20 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
 void ElectrostaticForce::add_forces(const dem::Particles& p, long step, double, std::vector<Vec3>& force,
                                     std::vector<Vec3>& torque) {
   const bool fresh = needs_solve(p, step);
-  if (fresh) solve(p, step);
+  if (fresh && s_.es.force_tolerance > 0.0 && step_at_solve_ >= 0 && x_at_solve_.size() == p.size()) {
+    const std::vector<Vec3> held = held_forces(p);
+    solve(p, step);
+    adapt(held);
+  } else if (fresh) {
+    solve(p, step);
+  }
   for (std::size_t k = 0; k < p.size(); ++k) {
     force[k] += s_.force_scale * last_.force[k];
     torque[k] += s_.force_scale * last_.torque[k];
   }
-  if (!correct_ || fresh) {
-    energy_ = last_.energy;
-    return;
-  }
-  pair_terms(p, f_now_, u_now_, n_now_);
   energy_ = last_.energy;
+  if (!correct_ || fresh) return;
+  pair_terms(p, f_now_, u_now_, n_now_);
   std::size_t k = 0;
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::size_t j = i + 1; j < p.size(); ++j, ++k) {
@@ -144,6 +160,36 @@ void ElectrostaticForce::add_forces(const dem::Particles& p, long step, double, 
       force[i] -= df;
       energy_ += u_now_[k] - u_s_[k];
     }
+}
+
+std::vector<Vec3> ElectrostaticForce::held_forces(const dem::Particles& p) {
+  std::vector<Vec3> f = last_.force;
+  if (!correct_) return f;
+  pair_terms(p, f_now_, u_now_, n_now_);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j, ++k) {
+      const Vec3 df = f_now_[k] * n_now_[k] - f_s_[k] * n_s_[k];
+      f[j] += df;
+      f[i] -= df;
+    }
+  return f;
+}
+
+void ElectrostaticForce::adapt(const std::vector<Vec3>& held) {
+  double fmax = 0.0, emax = 0.0;
+  for (std::size_t k = 0; k < held.size(); ++k) {
+    fmax = std::max(fmax, norm(last_.force[k]));
+    emax = std::max(emax, norm(last_.force[k] - held[k]));
+  }
+  if (!(fmax > 0.0)) return;
+  const double e = emax / fmax, tol = s_.es.force_tolerance;
+  ++hold_error_.measured;
+  hold_error_.max = std::max(hold_error_.max, e);
+  hold_error_.sum += e;
+  const double factor = e > 0.0 ? std::clamp(kAim * tol / e, 0.25, kGrowth) : kGrowth;
+  fraction_ = std::clamp(fraction_ * factor, kMinFraction, 1.0);
+  hold_error_.fraction = fraction_;
 }
 
 const PairTable& ElectrostaticForce::table_for(const dem::Particles& p, std::size_t i, std::size_t j) {

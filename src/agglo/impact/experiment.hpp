@@ -39,6 +39,14 @@ struct Fragment {
   double binding = 0.0;          // point-charge electrostatic binding to the rest (>= 0) [J]
 };
 
+// The errors of the held electrostatic forces of an error-controlled coupling (coupling_state.hpp).
+struct HoldErrorSummary {
+  long measured = 0;     // solves with a measurement; 0: no error control
+  double max = 0.0;      // largest relative error
+  double mean = 0.0;     // mean relative error
+  double fraction = 0.0; // motion threshold at the end (fraction of the gap)
+};
+
 struct ImpactOutcome {
   double speed = 0.0;
   bool broken = false;
@@ -52,6 +60,7 @@ struct ImpactOutcome {
   bool early_stop = false;   // decided before after_contact (clearly broken)
   long es_solves = 0;        // electrostatic solves
   double es_seconds = 0.0;   // wall time spent in them
+  HoldErrorSummary es_hold_error;  // with electrostatics.force_tolerance > 0
   int wall_contacts = -1;    // particles touching a wall at the end (sticking); -1: the case has no wall
   Breakage breakage;         // fragments, damage, restructuring, rebound (breakage.hpp); set when contact
 };

@@ -222,6 +222,8 @@ ImpactOutcome ImpactRun::outcome() const {
   if (auto* ef = dynamic_cast<ElectrostaticForce*>(es_.get())) {
     out.es_solves = ef->solves();
     out.es_seconds = ef->seconds();
+    const HoldErrorStats& h = ef->hold_error();
+    if (h.measured > 0) out.es_hold_error = {h.measured, h.max, h.sum / double(h.measured), h.fraction};
   }
   out.steps = sys_.steps();
   if (!c_.dem.walls.empty()) out.wall_contacts = sys_.wall_contacts();

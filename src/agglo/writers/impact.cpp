@@ -120,6 +120,12 @@ nlohmann::json outcome_json(const ImpactOutcome& o) {
           {"t_first_contact_s", o.t_contact}, {"t_end_s", o.t_end},   {"dt_s", o.dt},
           {"steps", o.steps},           {"extensions", o.extensions}, {"early_stop", o.early_stop},
           {"electrostatic_solves", o.es_solves}, {"electrostatic_seconds", o.es_seconds}};
+  // Error-controlled couplings only (electrostatics.force_tolerance > 0).
+  if (o.es_hold_error.measured > 0)
+    j["electrostatic_hold_error"] = {{"solves_measured", o.es_hold_error.measured},
+                                     {"max_relative", o.es_hold_error.max},
+                                     {"mean_relative", o.es_hold_error.mean},
+                                     {"final_update_fraction", o.es_hold_error.fraction}};
   // Cases with a wall only (the others' result.json stays as it was).
   if (o.wall_contacts >= 0) j["wall_contacts_at_end"] = o.wall_contacts;
   if (o.contact) j["breakage"] = breakage_json(o.breakage);
@@ -145,6 +151,13 @@ ImpactOutcome outcome_from_json(const nlohmann::json& j) {
   o.early_stop = j.at("early_stop").get<bool>();
   o.es_solves = j.at("electrostatic_solves").get<long>();
   o.es_seconds = j.at("electrostatic_seconds").get<double>();
+  if (j.contains("electrostatic_hold_error")) {
+    const auto& h = j.at("electrostatic_hold_error");
+    o.es_hold_error.measured = h.at("solves_measured").get<long>();
+    o.es_hold_error.max = h.at("max_relative").get<double>();
+    o.es_hold_error.mean = h.at("mean_relative").get<double>();
+    o.es_hold_error.fraction = h.at("final_update_fraction").get<double>();
+  }
   if (j.contains("wall_contacts_at_end")) o.wall_contacts = j.at("wall_contacts_at_end").get<int>();
   if (j.contains("breakage")) o.breakage = breakage_from_json(j.at("breakage"));
   return o;
