@@ -41,15 +41,17 @@ import csv, json, sys
 out, table, t1, t2 = sys.argv[1], sys.argv[2], float(sys.argv[3]), float(sys.argv[4])
 rows = list(csv.DictReader(open(table), delimiter="\t"))
 first = None
-print("samples  user CPU per simulated s  per sample  trials/sample-step  kernel evals/sample-step  collisions/s")
+# "samples" is what the run held: fewer than sampling.min_samples_per_cell x cells are cloned up to it
+print("requested  samples  user CPU per simulated s  per sample  trials/sample-step  kernel evals/sample-step  collisions/s")
 for n in dict.fromkeys(r["samples"] for r in rows):
     a, b = (next(r for r in rows if r["samples"] == n and abs(float(r["T_s"]) - t) < 1e-12) for t in (t1, t2))
     per_s = (float(b["user_s"]) - float(a["user_s"])) / (t2 - t1)
-    s = json.load(open(f"{out}/n{n}_t{b['T_s']}/summary.json"))["nanbu"]
+    summary = json.load(open(f"{out}/n{n}_t{b['T_s']}/summary.json"))
+    s, m = summary["nanbu"], summary["samples"]
     steps = s["particle_steps"]
-    first = first or (int(n), per_s)
-    print(f"{n:>7}  {per_s:8.2f} s  ({per_s / first[1]:5.2f}x for {int(n) / first[0]:.0f}x samples)  "
-          f"{per_s / int(n) * 1e3:6.3f} ms  {s['trials'] / steps:8.4f}  {s['kernel_evals'] / steps:8.4f}  "
+    first = first or (m, per_s)
+    print(f"{n:>9}  {m:>7}  {per_s:8.2f} s ({per_s / first[1]:5.2f}x for {m / first[0]:.0f}x samples)  "
+          f"{per_s / m * 1e3:6.3f} ms  {s['trials'] / steps:8.4f}  {s['kernel_evals'] / steps:8.4f}  "
           f"{s['collisions'] / t2:9.0f}")
 PY
 [ "$CALLGRIND" = 1 ] || exit 0
