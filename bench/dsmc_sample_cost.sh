@@ -101,7 +101,7 @@ phases = [  # (label, function name prefix in callgrind_annotate's inclusive lis
     ("state check (Engine::state_ok)", "agglo::acoustics::Engine::state_ok("),
     ("cell index (Engine::compute_cells)", "agglo::acoustics::Engine::compute_cells("),
     ("counting sort by cell (Engine::sort_cells)", "agglo::acoustics::Engine::sort_cells("),
-    ("collisions (Engine::collide_cells)", "agglo::acoustics::Engine::collide_cells("),
+    ("collisions (Engine::collide_pass)", "agglo::acoustics::Engine::collide_pass("),
     ("output rows (Observer::observe)", "agglo::acoustics::(anonymous namespace)::Observer::observe("),
 ]
 def load(t):

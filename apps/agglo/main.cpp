@@ -96,7 +96,12 @@ double exit_timeout() {
 
 }  // namespace
 
+// apps/agglo/omp_wait/omp_wait.cpp: sets passive OpenMP waits before libgomp starts (referenced so
+// that the linker keeps it).
+extern "C" int agglo_omp_wait_linked();
+
 int main(int argc, char** argv) {
+  if (agglo_omp_wait_linked() != 1) return 1;
   std::unique_ptr<agglo::mpi::Session> mpi;  // MPI only when started by mpirun (docs/scaling.md)
   try {
     mpi = std::make_unique<agglo::mpi::Session>(argc, argv);

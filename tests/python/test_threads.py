@@ -227,3 +227,27 @@ def _child_cpu(pid):
     except OSError:
         return None
     return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def _gomp_spincount(env):
+    """GOMP_SPINCOUNT that libgomp reports (OMP_DISPLAY_ENV=verbose) when a fresh Python imports agglo."""
+    import re
+    import subprocess
+    import sys
+    env = dict(env) | {"OMP_DISPLAY_ENV": "verbose", "PYTHONPATH": str(BUILD / "python")}
+    proc = subprocess.run([sys.executable, "-c", "import agglo"], capture_output=True, text=True, env=env, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    m = re.search(r"GOMP_SPINCOUNT = '(\d+)'", proc.stderr)
+    if m is None:
+        pytest.skip("the OpenMP runtime is not libgomp (no GOMP_SPINCOUNT in OMP_DISPLAY_ENV)")
+    return int(m.group(1))
+
+
+def test_import_sets_passive_openmp_waits():
+    """Importing agglo (which loads libgomp) makes OpenMP waits passive unless the user chose
+    (apps/agglo/omp_wait/omp_wait.cpp; docs/acoustics.md §5.2): libgomp's default spin made two
+    threads slower than one on a shared machine."""
+    base = {k: v for k, v in os.environ.items() if k not in ("OMP_WAIT_POLICY", "GOMP_SPINCOUNT")}
+    assert _gomp_spincount(base) == 0
+    assert _gomp_spincount(base | {"OMP_WAIT_POLICY": "active"}) > 1000000
+    assert _gomp_spincount(base | {"GOMP_SPINCOUNT": "1234"}) == 1234

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -137,61 +138,104 @@ void Engine::check_state() const {
   }
 }
 
+// One collision step in one OpenMP parallel region (one fork/join per step; the serial binning between
+// motion and collisions is an `omp single`): motion, state check and cell index of each sample; then
+// the counting sort by cell (and the periodic reorder of large sets); then the collision step of every
+// cell. Each part does what it did in separate regions, in the same order per sample and per cell, so
+// results are bitwise the same for any thread count. Exceptions never leave the region: the serial
+// part's is kept and rethrown, and the cells' messages are kept per cell (the lowest cell's is thrown).
 void Engine::step() {
   const std::size_t n = p_.size();
   const bool moving = s_.motion.integrator != Integrator::none;
   // Without motion positions never change (collisions keep a sample in its cell): the cells stay valid.
-  if (moving || cell_of_.size() != n) {
-    move_and_bin();
-  } else {
-    ++step_;
+  const bool move = moving || cell_of_.size() != n;
+  if (move) {
+    cell_of_.resize(n);
+    order_.resize(n);
   }
+  const CollisionContext ctx = collision_context();
+  const int nc = static_cast<int>(s_.motion.domain.num_cells());
+  std::vector<std::string> errors(static_cast<std::size_t>(nc));
+  bool bad_state = false;
+  std::exception_ptr serial_error;
+  GroupReuse reuse = GroupReuse::rebuild;
+#pragma omp parallel if (n >= kParallelMinSamples)
+  {
+    if (move) move_pass(bad_state);
+#pragma omp barrier
+#pragma omp single
+    {
+      try {
+        reuse = bin_step(move, bad_state);
+      } catch (...) {
+        serial_error = std::current_exception();
+      }
+    }  // implicit barrier: every thread sees serial_error
+    if (!serial_error) collide_pass(ctx, reuse, errors);
+  }
+  if (serial_error) std::rethrow_exception(serial_error);
+  for (int c = 0; c < nc; ++c)
+    if (!errors[static_cast<std::size_t>(c)].empty()) throw NumericalError(errors[static_cast<std::size_t>(c)]);
+  for (int c = 0; c < nc; ++c) stats_.add(cell_stats_[c]);
+}
+
+// Motion over one collision step, state check and cell index: the work-sharing part of a step's
+// parallel region. Chunks are handed out dynamically: a thread that the OS holds back (shared machine)
+// does not hold up the others for its whole static share. Sets bad_state if a chunk failed the check.
+void Engine::move_pass(bool& bad_state) {
+  const double t0 = time();
+  const std::size_t n = p_.size();
+  const Motion& M = s_.motion;
+  const bool moving = M.integrator != Integrator::none;
+  bool ok = true;
+  const long nchunks = static_cast<long>((n + kMotionChunk - 1) / kMotionChunk);
+#pragma omp for schedule(dynamic, 1) nowait
+  for (long c = 0; c < nchunks; ++c) {
+    const std::size_t b = static_cast<std::size_t>(c) * kMotionChunk, e = std::min(n, b + kMotionChunk);
+    bool chunk_ok = true;
+    if (moving) {
+      M.advance(p_, b, e, t0, s_.collision_dt, substeps_);
+      chunk_ok = state_ok(b, e);
+    }
+    if (chunk_ok) compute_cells(b, e);  // only for valid positions (otherwise the step throws)
+    ok = ok && chunk_ok;
+  }
+  if (!ok) {
+#pragma omp atomic write
+    bad_state = true;
+  }
+}
+
+// The serial part of a step (one thread): advances the step counter, throws on a bad state, sorts the
+// samples by cell, reorders large sets every kReorderEvery steps; returns what the binned selection
+// does with its groups this step.
+GroupReuse Engine::bin_step(bool moved, bool bad_state) {
+  const std::size_t n = p_.size();
+  const bool moving = s_.motion.integrator != Integrator::none;
+  ++step_;
+  if (bad_state) {
+    check_state();        // throws with the message naming the first bad particle
+    compute_cells(0, n);  // (not reached unless the fast test gave a false alarm)
+  }
+  if (moved) sort_cells();
   if (n >= kReorderMinSamples && step_ % kReorderEvery == 1 && (moving || step_ == 1)) {
     p_.permute(order_);
     bin();
   }
-  collide_cells();
+  const bool binned = s_.selection == Selection::binned;
+  // Binned groups are kept while only collisions change the samples: no motion, same order (binned.hpp).
+  const GroupReuse reuse = !binned || moving || regroup_ ? GroupReuse::rebuild
+                           : step_ % kRegroupEvery == 0 ? GroupReuse::retighten
+                                                        : GroupReuse::keep;
+  regroup_ = false;
+  if (binned) {
+    local_of_.resize(n);
+    groups_.resize(static_cast<std::size_t>(s_.motion.domain.num_cells()));
+  }
+  return reuse;
 }
 
-void Engine::move_and_bin() {
-  const double t0 = time();
-  const std::size_t n = p_.size();
-  const Motion& M = s_.motion;
-  // Motion, state check and cell index of each sample in one parallel pass over the samples.
-  cell_of_.resize(n);
-  order_.resize(n);
-  bool all_ok = true;
-  const bool moving = M.integrator != Integrator::none;
-#pragma omp parallel if (n >= kParallelMinSamples) reduction(&& : all_ok)
-  {
-    // Chunks handed out dynamically: a thread that the OS holds back (shared machine) does not hold
-    // up the others for its whole static share.
-    bool ok = true;
-    const long nchunks = static_cast<long>((n + kMotionChunk - 1) / kMotionChunk);
-#pragma omp for schedule(dynamic, 1) nowait
-    for (long c = 0; c < nchunks; ++c) {
-      const std::size_t b = static_cast<std::size_t>(c) * kMotionChunk, e = std::min(n, b + kMotionChunk);
-      bool chunk_ok = true;
-      if (moving) {
-        M.advance(p_, b, e, t0, s_.collision_dt, substeps_);
-        chunk_ok = state_ok(b, e);
-      }
-      if (chunk_ok) compute_cells(b, e);  // only for valid positions (otherwise the step throws below)
-      ok = ok && chunk_ok;
-    }
-    all_ok = all_ok && ok;
-  }
-  ++step_;
-  if (!all_ok) {
-    check_state();       // throws with the message naming the first bad particle
-    compute_cells(0, n);  // (not reached unless the fast test gave a false alarm)
-  }
-  sort_cells();
-}
-
-void Engine::collide_cells() {
-  const std::size_t n = p_.size();
-  const bool moving = s_.motion.integrator != Integrator::none;
+CollisionContext Engine::collision_context() const {
   CollisionContext ctx;
   ctx.kernel = &kernel_;
   ctx.outcomes = &s_.outcomes;
@@ -202,21 +246,16 @@ void Engine::collide_cells() {
   ctx.seed = s_.seed;
   ctx.strict = s_.strict_guard;
   ctx.max_subcycles = s_.max_subcycles;
+  return ctx;
+}
+
+// One collision step in every cell: the second work-sharing part of a step's parallel region. A cell's
+// exception is kept as its message in errors (exceptions must not leave an OpenMP region).
+void Engine::collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::vector<std::string>& errors) {
   const int nc = static_cast<int>(s_.motion.domain.num_cells());
   const std::uint64_t st = step_;
   const bool binned = s_.selection == Selection::binned;
-  // Binned groups are kept while only collisions change the samples: no motion, same order (binned.hpp).
-  const GroupReuse reuse = !binned || moving || regroup_ ? GroupReuse::rebuild
-                           : st % kRegroupEvery == 0   ? GroupReuse::retighten
-                                                       : GroupReuse::keep;
-  regroup_ = false;
-  if (binned) {
-    local_of_.resize(n);
-    groups_.resize(static_cast<std::size_t>(nc));
-  }
-  // Exceptions must not leave an OpenMP region: keep the message of the lowest failing cell.
-  std::vector<std::string> errors(static_cast<std::size_t>(nc));
-#pragma omp parallel for schedule(dynamic, 1) if (n >= kParallelMinSamples)
+#pragma omp for schedule(dynamic, 1)
   for (int c = 0; c < nc; ++c) {
     cell_stats_[c] = CollisionStats{};
     const std::size_t b = start_[c], e = start_[c + 1];
@@ -231,9 +270,6 @@ void Engine::collide_cells() {
       errors[static_cast<std::size_t>(c)] = ex.what();
     }
   }
-  for (int c = 0; c < nc; ++c)
-    if (!errors[static_cast<std::size_t>(c)].empty()) throw NumericalError(errors[static_cast<std::size_t>(c)]);
-  for (int c = 0; c < nc; ++c) stats_.add(cell_stats_[c]);
 }
 
 }  // namespace agglo::acoustics

@@ -67,8 +67,11 @@ class Engine {
  private:
   friend class EngineCheckpoint;  // saves and restores the state below (checkpoint.hpp)
   void bin();
-  void move_and_bin();   // motion over one collision step, state check, cells; advances the step counter
-  void collide_cells();  // one collision step in every cell
+  // The parts of step(), called inside its parallel region (engine.cpp).
+  void move_pass(bool& bad_state);                // motion, state check, cell index (omp for)
+  GroupReuse bin_step(bool moved, bool bad_state);  // serial: step counter, checks, sort by cell
+  void collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::vector<std::string>& errors);  // omp for
+  CollisionContext collision_context() const;
   void compute_cells(std::size_t begin, std::size_t end);  // cell_of_ for samples [begin, end)
   void sort_cells();                                        // order_, start_ from cell_of_
   bool state_ok(std::size_t begin, std::size_t end) const;  // fast test of check_state's conditions
