@@ -9,6 +9,11 @@ namespace agglo::settings {
 
 inline constexpr std::string_view kAcousticCommands = "acoustic, sectional, sweep";
 
+// Names of the dry (solid-solid) outcome models of the DSMC (acoustics/outcomes.hpp: the closed-form
+// critical velocity; acoustics/outcome_table.hpp: a table of probabilities).
+inline constexpr std::string_view kDryCriticalVelocity = "critical_velocity";
+inline constexpr std::string_view kDryTable = "table";
+
 struct AcousticSettings {
   struct Top {
     Table t{"", kAcousticCommands, "top-level keys of an acoustic case"};
@@ -134,6 +139,15 @@ struct AcousticSettings {
     Real solid_density{t, {"outcomes.solid_density", "kg/m^3", "rho_s of the wet outcome model"}, 2500.0,
                        Range::open_closed(0.0, 1e5)};
     Bool energy_compensation{t, {"outcomes.energy_compensation", "", "kinetic energy compensation of merges"}, true};
+    Choice dry_model{t,
+                     {"outcomes.dry_model", "",
+                      "outcome of solid-solid collisions: the closed-form critical velocity (eq. 13), or drawn "
+                      "from a table of P_stick, P_bounce, P_break (outcomes.table)",
+                      "critical_velocity (absent: read only when set)"},
+                     std::nullopt, {kDryCriticalVelocity, kDryTable}};
+    Text table{t, {"outcomes.table", "", "dry_model = \"table\": NetCDF outcome table (docs/acoustics.md, written by "
+                                         "agglo outcomes), relative to the case file"},
+               std::nullopt};
   } outcomes;
 
   struct Output {
