@@ -23,7 +23,7 @@ struct AcousticSettings {
   struct Gas {
     // Also read by the impact commands when an impact case has a [gas] section (drag on every
     // particle, docs/dem.md "Gas and walls"); flow and drag are theirs only.
-    Table t{"gas", "acoustic, sectional, sweep, collide, vcrit, breakup", "carrier gas (air)"};
+    Table t{"gas", "acoustic, sectional, sweep, collide, vcrit, breakup, outcomes", "carrier gas (air)"};
     Real temperature{t, {"gas.temperature", "K", "gas temperature"}, 298.15, Range::open_closed(0.0, 1e4)};
     Real pressure{t, {"gas.pressure", "Pa", "gas pressure"}, 101325.0, Range::open_closed(0.0, 1e9)};
     Bool gravity{t, {"gas.gravity", "", "gravitational settling"}, true};
