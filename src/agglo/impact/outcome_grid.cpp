@@ -6,7 +6,7 @@
 
 #include "agglo/core/error.hpp"
 #include "agglo/core/rng.hpp"
-#include "agglo/core/settings_catalogue.hpp"
+#include "agglo/core/settings_outcomes.hpp"
 #include "agglo/impact/vcrit.hpp"
 
 namespace agglo::impact {
@@ -25,15 +25,8 @@ void check_increasing(const settings::Reals& key, const ConfigSection& s, const 
 
 }  // namespace
 
-const OutcomeGridKeys& outcome_grid_keys() {
-  static const OutcomeGridKeys k;
-  static const bool listed = settings::add_table(k.t, settings::impact_settings().breakup.t);
-  (void)listed;
-  return k;
-}
-
 OutcomeGridSpec parse_outcome_grid(const ConfigSection& root) {
-  const auto& k = outcome_grid_keys();
+  const auto& k = settings::outcomes_settings().grid;
   ConfigSection s = k.t.open(root);
   OutcomeGridSpec g;
   g.speeds = k.speeds.read(s);
@@ -55,8 +48,9 @@ void check_sphere_sphere(const ConfigSection& root, const ImpactCase& c) {
   const auto& k = impact_keys();
   const ConfigSection ag = k.agglomerate.t.open(root);
   if (c.agglomerate.shape != "list" || c.agglomerate.particles.size() != 1)
-    k.agglomerate.shape.reject(ag, "agglo outcomes needs a one-sphere target: shape = \"list\" with one [[particles]] "
-                                   "entry (its radius is set by outcome_grid.diameters)");
+    k.agglomerate.shape.reject(ag, fmt::format("agglo outcomes needs a one-sphere target: shape = \"list\" with one "
+                                               "[[particles]] entry (its radius is set by {})",
+                                               settings::outcomes_settings().grid.diameters.dotted()));
   if (c.projectile.shape != "sphere")
     k.projectile.shape.reject(k.projectile.t.open(root), "agglo outcomes tabulates sphere-sphere impacts: use \"sphere\"");
   if (!c.dem.walls.empty())

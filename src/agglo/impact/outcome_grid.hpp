@@ -14,28 +14,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "agglo/core/settings.hpp"
 #include "agglo/impact/experiment.hpp"
 #include "agglo/impact/impact_case.hpp"
 
 namespace agglo::impact {
 
-// The [outcome_grid] table, declared beside the grid it describes (joins the catalogue after [breakup]).
-struct OutcomeGridKeys {
-  settings::Table t{"outcome_grid", "outcomes", "grid of the sphere-sphere outcome table (agglo outcomes)"};
-  settings::Reals speeds{t, {"outcome_grid.speeds", "m/s", "normal relative speeds at contact (increasing)"},
-                         std::nullopt, Range::open_closed(0.0, 1e3)};
-  settings::Reals diameters{t, {"outcome_grid.diameters", "m", "sphere diameters of both partners (increasing)"},
-                            std::nullopt, Range::open_closed(0.0, 1e-2)};
-  settings::Integer impacts{t, {"outcome_grid.impacts", "", "impacts per grid node (sampled impact parameters)"}, 8,
-                            1, 100000};
-  settings::Real max_offset{t, {"outcome_grid.max_offset", "",
-                                "largest impact parameter b / (r_1 + r_2); 0 = every impact head-on"},
-                            0.5, Range::closed(0.0, 0.95)};
-  settings::Integer seed{t, {"outcome_grid.seed", "", "random seed of the sampled impact parameters"}, 1, 0,
-                         INT64_MAX};
-};
-const OutcomeGridKeys& outcome_grid_keys();
 
 struct OutcomeGridSpec {
   std::vector<double> speeds, diameters;  // [m/s], [m]

@@ -3,14 +3,12 @@
 #include "agglo/acoustics/kernels/keys.hpp"
 #include "agglo/dem/contact/settings.hpp"
 #include "agglo/electrostatics/keys.hpp"
-#include "agglo/impact/outcome_grid.hpp"
 
 namespace agglo::run {
 
 const std::vector<const Command*>& all_commands() {
   // The settings tables the engines declare beside their models join the catalogue (agglo config).
-  static const bool tables = (dem::contact::contact_settings(), es::solver_keys(), acoustics::kernel_keys(),
-                              impact::outcome_grid_keys(), true);
+  static const bool tables = (dem::contact::contact_settings(), es::solver_keys(), acoustics::kernel_keys(), true);
   (void)tables;
   static const std::vector<const Command*> list = {&collide_command(), &vcrit_command(), &breakup_command(),
                                                    &electrostatics_command(), &acoustic_command(),

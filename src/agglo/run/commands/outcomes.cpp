@@ -60,7 +60,7 @@ class Outcomes final : public Command {
   std::string_view name() const override { return "outcomes"; }
   std::string_view help() const override {
     return "Sphere-sphere outcome table from DEM impacts: P_stick, P_bounce, P_break over [outcome_grid] speeds x "
-           "diameters x diameters (a table for the DSMC's outcomes.dry_model = \"table\")";
+           "diameters x diameters (the DSMC's dry outcome table, docs/outcomes.md)";
   }
   bool resumable() const override { return true; }
   void parse(Config& cfg) const override {
