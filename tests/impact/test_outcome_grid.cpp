@@ -152,6 +152,20 @@ TEST(OutcomeGrid, ImpactParametersAndSymmetricTable) {
       }
 }
 
+// The estimate bounds the particle-steps the impacts take and grows with the impacts per node.
+TEST(OutcomeGrid, EstimateBoundsTheSteps) {
+  const Parsed p = parse_pair("speeds = [0.01, 0.04]\ndiameters = [20e-6]\nimpacts = 2\nmax_offset = 0.5\n");
+  long steps = 0;
+  for (const auto& j : outcome_impacts(p.grid))
+    steps += run_impact(outcome_case(p.dem, p.grid, j), outcome_launch_speed(p.grid, j)).steps;
+  const Estimate e = outcomes_estimate(p.dem, p.grid, 1);
+  EXPECT_GE(e.steps.value, 2.0 * static_cast<double>(steps));  // two particles per step
+  Parsed twice = p;
+  twice.grid.impacts = 4;
+  EXPECT_DOUBLE_EQ(outcomes_estimate(twice.dem, twice.grid, 1).steps.value, 2.0 * e.steps.value);
+  EXPECT_EQ(e.steps.keys.front(), "outcome_grid.speeds");
+}
+
 TEST(OutcomeGrid, WilsonInterval) {
   // Wilson (1927) score interval at z = 1.96: 0 of 10 -> [0, 0.2775]; 5 of 10 -> [0.2366, 0.7634].
   EXPECT_NEAR(wilson_interval(0, 10).lo, 0.0, 1e-12);

@@ -7,6 +7,7 @@
 #include "agglo/core/error.hpp"
 #include "agglo/core/rng.hpp"
 #include "agglo/core/settings_outcomes.hpp"
+#include "agglo/impact/estimate.hpp"
 #include "agglo/impact/vcrit.hpp"
 
 namespace agglo::impact {
@@ -83,6 +84,30 @@ ImpactCase outcome_case(const ImpactCase& base, const OutcomeGridSpec& s, const 
 
 double outcome_launch_speed(const OutcomeGridSpec& s, const OutcomeImpact& j) {
   return s.speeds[j.iv] / std::sqrt(1.0 - j.b_fraction * j.b_fraction);
+}
+
+Estimate outcomes_estimate(const ImpactCase& base, const OutcomeGridSpec& s, int threads) {
+  constexpr double kNodeBytes = 400.0, kJournalLineBytes = 250.0;  // a CSV row + 16 values; one journal line
+  const auto& g = settings::outcomes_settings().grid;
+  const std::vector<std::string> keys = {std::string(g.speeds.dotted()), std::string(g.diameters.dotted()),
+                                         std::string(g.impacts.dotted())};
+  Estimate e;
+  const std::size_t nd = s.diameters.size();
+  double memory = 0.0;
+  for (std::size_t i1 = 0; i1 < nd; ++i1)
+    for (std::size_t i2 = i1; i2 < nd; ++i2)
+      for (std::size_t iv = 0; iv < s.speeds.size(); ++iv) {
+        const OutcomeImpact worst{iv, i1, i2, 0, s.max_offset};  // fastest launch, widest approach
+        const ImpactCase c = outcome_case(base, s, worst);
+        add_to(e.steps, 2.0 * run_steps_bound(c, outcome_launch_speed(s, worst)) * s.impacts, keys);
+        if (iv == 0) memory = std::max(memory, collide_estimate(c).memory.value);
+      }
+  add_to(e.steps, 0.0, {std::string(impact_keys().time.after_contact.dotted())});
+  add_to(e.memory, std::max(1, threads) * memory, keys);
+  const double nodes = static_cast<double>(s.speeds.size() * nd * nd);
+  const double impacts = static_cast<double>(s.speeds.size()) * static_cast<double>(nd * (nd + 1) / 2) * s.impacts;
+  add_to(e.output, nodes * kNodeBytes + impacts * kJournalLineBytes, keys);
+  return e;
 }
 
 PairOutcome classify_pair(const ImpactOutcome& o) {

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "agglo/core/estimate.hpp"
 #include "agglo/impact/experiment.hpp"
 #include "agglo/impact/impact_case.hpp"
 
@@ -44,6 +45,12 @@ std::vector<OutcomeImpact> outcome_impacts(const OutcomeGridSpec& s);
 // The case of one impact (radii, offset) and its launch speed [m/s].
 ImpactCase outcome_case(const ImpactCase& base, const OutcomeGridSpec& s, const OutcomeImpact& j);
 double outcome_launch_speed(const OutcomeGridSpec& s, const OutcomeImpact& j);
+
+// What the grid costs (core/estimate.hpp, docs/limits.md): per node the particle-steps bound of one impact
+// (impact/estimate.hpp: run_steps_bound x 2 particles) at the launch speed of the largest impact parameter,
+// times the impacts; memory of `threads` concurrent runs; output: a CSV row and results.nc values per node
+// and a journal line per impact.
+Estimate outcomes_estimate(const ImpactCase& base, const OutcomeGridSpec& s, int threads);
 
 enum class PairOutcome { stick = 0, bounce = 1, brk = 2 };
 PairOutcome classify_pair(const ImpactOutcome& o);

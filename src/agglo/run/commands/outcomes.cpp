@@ -63,6 +63,12 @@ class Outcomes final : public Command {
            "diameters x diameters (the DSMC's dry outcome table, docs/outcomes.md)";
   }
   bool resumable() const override { return true; }
+  Estimate estimate(Config& cfg, const RunContext& ctx) const override {
+    const OutcomesCase c = outcomes_case(cfg);
+    return impact::outcomes_estimate(c.dem, c.grid, ctx.thread_count());
+  }
+  // The impact commands' CPU time per weighted particle-step (run/commands/impact_command.hpp).
+  double seconds_per_step(Config&) const override { return 2e-8; }
   void parse(Config& cfg) const override {
     (void)outcomes_case(cfg);
     cfg.check_unknown_keys();
