@@ -193,6 +193,9 @@ TEST(OutcomeGrid, RefusesOtherCases) {
   std::string two = pair_case("speeds = [0.1]\ndiameters = [1e-6]\n");
   two.replace(two.find("[time]"), 6, "[[particles]]\nposition = [30e-6, 0.0, 0.0]\nradius = 10e-6\n[time]");
   refused(two, "needs a one-sphere target");
+  std::string fixed_dt = pair_case("speeds = [0.1]\ndiameters = [1e-6]\n");
+  fixed_dt.replace(fixed_dt.find("[time]"), 6, "[time]\ndt = 1e-10");
+  refused(fixed_dt, "key 'time.dt' = 1e-10: agglo outcomes takes each node's step");
   // Without the option a one-sphere list target is still refused (collide, vcrit, breakup).
   Config cfg = Config::from_string(pair_case("speeds = [0.1]\ndiameters = [1e-6]\n"), "pair.toml");
   EXPECT_THROW((void)parse_impact_case(cfg), ConfigError);

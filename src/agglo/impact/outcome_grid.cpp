@@ -54,6 +54,10 @@ void check_sphere_sphere(const ConfigSection& root, const ImpactCase& c) {
                                                settings::outcomes_settings().grid.diameters.dotted()));
   if (c.projectile.shape != "sphere")
     k.projectile.shape.reject(k.projectile.t.open(root), "agglo outcomes tabulates sphere-sphere impacts: use \"sphere\"");
+  if (c.dem.dt > 0.0)  // one step for every size would be too long for the smallest pairs or wasteful for the largest
+    k.time.dt.reject(k.time.t.open(root), fmt::format("agglo outcomes takes each node's step from its contact period: "
+                                                      "set 0 and choose {}",
+                                                      k.time.steps_per_period.dotted()));
   if (!c.dem.walls.empty())
     k.wall.t.fail(root, "agglo outcomes tabulates sphere-sphere impacts: remove the [wall] table");
 }

@@ -30,7 +30,8 @@ struct OutcomeGridSpec {
 
 // Reads [outcome_grid] (ConfigError naming the key: axes not strictly increasing, more than 1e6 impacts).
 OutcomeGridSpec parse_outcome_grid(const ConfigSection& root);
-// ConfigError unless `c` is a one-sphere list target hit by a sphere, without a wall.
+// ConfigError unless `c` is a one-sphere list target hit by a sphere, without a wall, with time.dt = 0
+// (each node's step is T0 / time.steps_per_period of its own pair).
 void check_sphere_sphere(const ConfigSection& root, const ImpactCase& c);
 
 // One impact of the grid: node (iv, i1, i2) with i1 <= i2, sample k, b / (r_1 + r_2).
