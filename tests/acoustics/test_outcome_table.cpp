@@ -47,9 +47,20 @@ OutcomeTable table_of(std::vector<double> v, std::vector<double> d1, std::vector
   return t;
 }
 
+// The folders the tests write their tables into, removed when the test program ends.
+struct TableFolders {
+  std::vector<fs::path> made;
+  ~TableFolders() {
+    std::error_code ec;
+    for (const auto& d : made) fs::remove_all(d, ec);
+  }
+};
+
 fs::path temp_dir(const std::string& name) {
+  static TableFolders folders;
   const fs::path d = fs::temp_directory_path() / fmt::format("agglo_outcome_table_{}_{}", name, ::getpid());
   fs::create_directories(d);
+  folders.made.push_back(d);
   return d;
 }
 
