@@ -40,6 +40,7 @@ def test_no_temporary_left(agglo_module, tmp_path, monkeypatch):
     ("vcrit", lambda agglo: short(agglo, extra=SHORT_VCRIT)),
     ("breakup", lambda agglo: short(agglo, extra={"breakup.speeds": [0.1, 0.4], "breakup.samples": 2})),
     ("electrostatics", lambda agglo: agglo.Case.load(CASES / "electrostatics_two_spheres.toml")),
+    ("outcomes", lambda agglo: agglo.Case.load(CASES / "outcomes_sphere_sphere.toml").set("outcome_grid.impacts", 1)),
     ("acoustic", _acoustic),
     ("sectional", lambda agglo: agglo.Case.load(CASES / "partmc_constant.toml").set("time.end", 1.8)
      .set("output.psd_times", [0.0, 1.8])),

@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <memory>
 
 #include <fmt/format.h>
 
 #include "agglo/acoustics/kernels/keys.hpp"
+#include "agglo/acoustics/outcome_table.hpp"
+#include "agglo/io/netcdf_reader.hpp"
 #include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/core/settings_acoustic.hpp"
@@ -218,7 +222,37 @@ void parse_kernels(const ConfigSection& root, EngineSettings& e) {
   e.motion.inertia_correction = k.inertia_correction.read(s);
 }
 
-void parse_outcomes(const ConfigSection& root, OutcomeParams& oc) {
+// outcomes.dry_model and outcomes.table (both read only when set, so the resolved config of a case without
+// them stays as it was). A table is loaded and checked here: unreadable, malformed, or with P_break > 0
+// (fragments are not implemented in the DSMC) is refused naming outcomes.table.
+void parse_dry_model(const ConfigSection& o, const std::string& case_file, OutcomeParams& oc) {
+  const auto& k = keys().outcomes;
+  const bool table = k.dry_model.present(o) && k.dry_model.read(o) == settings::kDryTable;
+  if (!table) {
+    if (k.table.present(o))
+      k.table.reject(o, fmt::format("is read only with {} = \"{}\"", k.dry_model.dotted(), settings::kDryTable));
+    return;
+  }
+  if (!k.table.present(o))
+    k.table.missing(o, fmt::format("required with {} = \"{}\"", k.dry_model.dotted(), settings::kDryTable));
+  std::filesystem::path path = k.table.read(o);
+  if (path.is_relative() && !case_file.empty()) path = std::filesystem::path(case_file).parent_path() / path;
+  OutcomeTable t;
+  try {
+    t = load_outcome_table(path);
+  } catch (const io::NetcdfReadError& e) {
+    k.table.reject(o, e.what());
+  } catch (const std::invalid_argument& e) {
+    k.table.reject(o, fmt::format("not an outcome table (docs/acoustics.md §1.7): {}", e.what()));
+  }
+  if (t.max_break() > 0.0)
+    k.table.reject(o, fmt::format("P_break reaches {:.4g}, but breakage into fragments is not implemented in the "
+                                  "DSMC: give a table with P_break = 0 everywhere", t.max_break()));
+  oc.dry_model = DryModel::table;
+  oc.dry_table = std::make_shared<const OutcomeTable>(std::move(t));
+}
+
+void parse_outcomes(const ConfigSection& root, const std::string& case_file, OutcomeParams& oc) {
   const auto& k = keys().outcomes;
   ConfigSection o = k.t.open(root);
   oc.always_coalesce = k.always_coalesce.read(o);
@@ -231,6 +265,7 @@ void parse_outcomes(const ConfigSection& root, OutcomeParams& oc) {
   oc.film_ratio = k.film_roughness_ratio.read(o);
   oc.solid_density = k.solid_density.read(o);
   oc.energy_compensation = k.energy_compensation.read(o);
+  parse_dry_model(o, case_file, oc);
 }
 
 void parse_output(const ConfigSection& root, double te, OutputSettings& os) {
@@ -263,7 +298,7 @@ AcousticCase parse_acoustic_case(Config& cfg) {
   parse_domain(root, sound_on, dmax, e);
   parse_sampling(root, c);
   parse_kernels(root, e);
-  parse_outcomes(root, e.outcomes);
+  parse_outcomes(root, c.file, e.outcomes);
   parse_output(root, e.t_end, c.output);
   cfg.check_unknown_keys();
   return c;

@@ -83,6 +83,17 @@ void CellEvents::compensate(std::size_t i, std::size_t j) {
   }
 }
 
+// Dry pair (i, j) at normal speed gn: below the critical velocity, or drawn from the outcome table
+// (P_break is 0: tables with breakage are refused when the case is read).
+bool CellEvents::dry_sticks(std::size_t i, std::size_t j, double gn) {
+  if (oc.dry_model == DryModel::critical_velocity)
+    return gn <= critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j]);
+  const OutcomeProbabilities pr = oc.dry_table->at(gn, p.d[i], p.d[j]);
+  ++st.table_queries;
+  if (pr.clamped) ++st.table_clamped;
+  return rng.uniform() < pr.stick;
+}
+
 void CellEvents::collide(std::size_t i, std::size_t j) {
   ++st.collisions;
   touched_.push_back(static_cast<std::uint32_t>(i));
@@ -95,9 +106,7 @@ void CellEvents::collide(std::size_t i, std::size_t j) {
     const Vec3 G{p.vx[i] - p.vx[j], p.vy[i] - p.vy[j], p.vz[i] - p.vz[j]};
     nrm = contact_normal(G, rng);
     gn = dot(G, nrm);
-    const double vcr = type == PairType::dry ? critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j])
-                                             : critical_velocity_wet(oc, p.d[i], p.d[j]);
-    coalesce = gn <= vcr;
+    coalesce = type == PairType::dry ? dry_sticks(i, j, gn) : gn <= critical_velocity_wet(oc, p.d[i], p.d[j]);
   }
   if (coalesce) {
     ++st.coalescences[static_cast<int>(type)];

@@ -27,6 +27,7 @@ class CellEvents {
  private:
   void refill(std::size_t dead);
   void compensate(std::size_t i, std::size_t j);
+  bool dry_sticks(std::size_t i, std::size_t j, double gn);
 
   SampleSet& p;
   const std::uint32_t* idx;

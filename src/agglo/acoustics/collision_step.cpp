@@ -23,6 +23,8 @@ void CollisionStats::add(const CollisionStats& o) {
   energy_lost += o.energy_lost;
   energy_returned += o.energy_returned;
   row_rate_updates += o.row_rate_updates;
+  table_queries += o.table_queries;
+  table_clamped += o.table_clamped;
 }
 
 }  // namespace agglo::acoustics

@@ -34,6 +34,8 @@ struct CollisionStats {
   double energy_lost = 0.0;          // split-merge losses (eq. 29) [J]
   double energy_returned = 0.0;      // compensation given back (eq. 30) [J]
   std::uint64_t row_rate_updates = 0;  // binned: full computations of a row of group-pair rates
+  std::uint64_t table_queries = 0;     // dry outcome table (outcomes.dry_model = "table"): queries
+  std::uint64_t table_clamped = 0;     // of which outside the table on some axis (clamped to its end)
   void add(const CollisionStats& o);
 };
 

@@ -8,6 +8,9 @@
 //  - otherwise hard-sphere rebound with friction (eqs. 22-23); wet pairs use
 //      e_wet = e - 9 mu_l (d_i+d_j)(1+e) ln(delta/h_a) / (8 rho_s d_i d_j |G.n|)   (eq. 24).
 // G = v_i - v_j, n = unit vector from i to j at contact (approaching: G.n > 0).
+#include <memory>
+
+#include "agglo/acoustics/outcome_table.hpp"
 #include "agglo/core/settings_acoustic.hpp"
 #include "agglo/core/vec3.hpp"
 
@@ -16,6 +19,9 @@ namespace agglo::acoustics {
 inline const settings::AcousticSettings::Outcomes& outcome_keys() { return settings::acoustic_settings().outcomes; }
 
 enum class PairType { droplet, dry, wet };
+
+// The dry outcome model (outcomes.dry_model): critical velocity (default) or a table (outcome_table.hpp).
+enum class DryModel { critical_velocity, table };
 
 // Defaults are the declared [outcomes] settings (agglo/core/settings_acoustic.hpp).
 struct OutcomeParams {
@@ -29,6 +35,8 @@ struct OutcomeParams {
   double film_ratio = outcome_keys().film_roughness_ratio.def();   // delta / h_a
   double solid_density = outcome_keys().solid_density.def();       // rho_s in eqs. 14, 24 [kg/m^3]
   bool energy_compensation = outcome_keys().energy_compensation.def();  // Zhao et al. 2023, eq. 30
+  DryModel dry_model = DryModel::critical_velocity;
+  std::shared_ptr<const OutcomeTable> dry_table;  // set when dry_model == table
 };
 
 double critical_velocity_dry(const OutcomeParams& o, double di, double dj, double rhoi, double rhoj);

@@ -129,6 +129,12 @@ std::string startup_log(const AcousticCase& c, const Engine& eng, const RunHooks
     if (hooks.warning) hooks.warning(w);
   }
   log += sampling_log(eng, hooks);
+  if (const auto& t = eng.settings().outcomes.dry_table; t && eng.settings().outcomes.dry_model == DryModel::table)
+    log += fmt::format("dry outcome model: table {} ({} speeds {:.4g}-{:.4g} m/s x {} x {} diameters {:.4g}-{:.4g} m; "
+                       "provenance: {})\n",
+                       t->source, t->axes[0].size(), t->axes[0].front(), t->axes[0].back(), t->axes[1].size(),
+                       t->axes[2].size(), std::min(t->axes[1].front(), t->axes[2].front()),
+                       std::max(t->axes[1].back(), t->axes[2].back()), t->provenance.empty() ? "none" : t->provenance);
   if (eng.settings().selection == Selection::binned)
     log += fmt::format("selection: binned ({} size classes per octave of diameter, weight classes by powers of {}, "
                        "one majorant per group pair and kernel mechanism)\n",
@@ -145,6 +151,12 @@ std::string closing_log(const AcousticObservations& o) {
   const Counts &c0 = o.initial, &c1 = o.final;
   const EfficiencyRow& last = o.efficiency.back();
   std::string log = guard_report(o.stats, o.selection);
+  if (o.dry_table)
+    log += fmt::format("dry outcome table: queries={} clamped={} ({:.3g}% outside the table, clamped to its ends)\n",
+                       o.stats.table_queries, o.stats.table_clamped,
+                       o.stats.table_queries ? 100.0 * static_cast<double>(o.stats.table_clamped) /
+                                                   static_cast<double>(o.stats.table_queries)
+                                             : 0.0);
   if (!o.interrupted.empty()) log += "incomplete: " + o.interrupted + "\n";
   log += fmt::format("conservation: solid volume fraction {:.17g} -> {:.17g} (rel. {:.3g}); liquid {:.17g} -> {:.17g} "
                      "(rel. {:.3g}); mass {:.17g} -> {:.17g}\n",
@@ -322,6 +334,7 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
   obs.u_amp = eng.settings().motion.sound.u_amp;
   obs.stats = eng.stats();
   obs.selection = eng.settings().selection;
+  obs.dry_table = eng.settings().outcomes.dry_model == DryModel::table;
   obs.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   obs.log += closing_log(obs);
   return obs;

@@ -52,6 +52,7 @@ struct AcousticObservations {
   double u_amp = 0.0;                          // [m/s]
   CollisionStats stats;
   Selection selection = Selection::nanbu;
+  bool dry_table = false;                      // outcomes.dry_model = "table": its counters are reported
   std::string log;                             // run.log without its last line (see io)
   double wall_time_s = 0.0;
   std::string interrupted;                     // non-empty: cancelled there; the rows so far are kept

@@ -9,6 +9,11 @@ namespace agglo::settings {
 
 inline constexpr std::string_view kAcousticCommands = "acoustic, sectional, sweep";
 
+// Names of the dry (solid-solid) outcome models of the DSMC (acoustics/outcomes.hpp: the closed-form
+// critical velocity; acoustics/outcome_table.hpp: a table of probabilities).
+inline constexpr std::string_view kDryCriticalVelocity = "critical_velocity";
+inline constexpr std::string_view kDryTable = "table";
+
 struct AcousticSettings {
   struct Top {
     Table t{"", kAcousticCommands, "top-level keys of an acoustic case"};
@@ -18,7 +23,7 @@ struct AcousticSettings {
   struct Gas {
     // Also read by the impact commands when an impact case has a [gas] section (drag on every
     // particle, docs/dem.md "Gas and walls"); flow and drag are theirs only.
-    Table t{"gas", "acoustic, sectional, sweep, collide, vcrit, breakup", "carrier gas (air)"};
+    Table t{"gas", "acoustic, sectional, sweep, collide, vcrit, breakup, outcomes", "carrier gas (air)"};
     Real temperature{t, {"gas.temperature", "K", "gas temperature"}, 298.15, Range::open_closed(0.0, 1e4)};
     Real pressure{t, {"gas.pressure", "Pa", "gas pressure"}, 101325.0, Range::open_closed(0.0, 1e9)};
     Bool gravity{t, {"gas.gravity", "", "gravitational settling"}, true};
@@ -134,6 +139,15 @@ struct AcousticSettings {
     Real solid_density{t, {"outcomes.solid_density", "kg/m^3", "rho_s of the wet outcome model"}, 2500.0,
                        Range::open_closed(0.0, 1e5)};
     Bool energy_compensation{t, {"outcomes.energy_compensation", "", "kinetic energy compensation of merges"}, true};
+    Choice dry_model{t,
+                     {"outcomes.dry_model", "",
+                      "outcome of solid-solid collisions: the closed-form critical velocity (eq. 13), or drawn "
+                      "from a table of P_stick, P_bounce, P_break (outcomes.table)",
+                      "critical_velocity (absent: read only when set)"},
+                     std::nullopt, {kDryCriticalVelocity, kDryTable}};
+    Text table{t, {"outcomes.table", "", "dry_model = \"table\": NetCDF outcome table (docs/acoustics.md, written by "
+                                         "agglo outcomes), relative to the case file"},
+               std::nullopt};
   } outcomes;
 
   struct Output {

@@ -12,6 +12,7 @@
 #include "agglo/core/settings_calibrate.hpp"
 #include "agglo/core/settings_electrostatics.hpp"
 #include "agglo/core/settings_impact.hpp"
+#include "agglo/core/settings_outcomes.hpp"
 
 namespace agglo::settings {
 
@@ -27,6 +28,11 @@ const ElectrostaticsSettings& electrostatics_settings() {
 
 const CalibrateSettings& calibrate_settings() {
   static const CalibrateSettings s;
+  return s;
+}
+
+const OutcomesSettings& outcomes_settings() {
+  static const OutcomesSettings s;
   return s;
 }
 
@@ -98,7 +104,7 @@ bool add_table(const Table& table, const Table& after) {
 std::vector<const Table*> all_tables() {
   std::vector<const Table*> core;
   for (const auto& part : {impact_settings().tables(), electrostatics_settings().tables(), acoustic_settings().tables(),
-                           calibrate_settings().tables()})
+                           calibrate_settings().tables(), outcomes_settings().tables()})
     core.insert(core.end(), part.begin(), part.end());
   auto& a = added();
   std::lock_guard lock(a.mutex);

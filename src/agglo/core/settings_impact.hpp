@@ -10,9 +10,9 @@
 
 namespace agglo::settings {
 
-inline constexpr std::string_view kImpactCommands = "collide, vcrit, breakup";
+inline constexpr std::string_view kImpactCommands = "collide, vcrit, breakup, outcomes";
 // [agglomerate] and the top level are read by the impact commands and by `agglo aggregate`.
-inline constexpr std::string_view kAgglomerateCommands = "collide, vcrit, breakup, aggregate";
+inline constexpr std::string_view kAgglomerateCommands = "collide, vcrit, breakup, outcomes, aggregate";
 
 // The keys of the structure builder (docs/model.md Part S), declared once for the two tables that build
 // a structure: [agglomerate] (the target) and [projectile] (an aggregate projectile). `table` is the

@@ -240,9 +240,9 @@ void parse_body_materials(const ConfigSection& root, ImpactCase& c) {
 }
 
 // [agglomerate], [[particles]] (shape = "list") and [projectile].
-void parse_bodies(const ConfigSection& root, const std::string& case_file, ImpactCase& c) {
+void parse_bodies(const ConfigSection& root, const std::string& case_file, ImpactCase& c, bool one_sphere_target) {
   const double density = c.agglomerate.density;  // [material]
-  c.agglomerate = parse_agglomerate(root, case_file, c.wall_impact);
+  c.agglomerate = parse_agglomerate(root, case_file, c.wall_impact || one_sphere_target);
   c.agglomerate.density = density;
   const auto& a = c.agglomerate;
 
@@ -438,7 +438,7 @@ std::string material_names(const ImpactCase& c) {
   return out;
 }
 
-ImpactCase parse_impact_case(Config& cfg) {
+ImpactCase parse_impact_case(Config& cfg, bool one_sphere_target) {
   ImpactCase c;
   auto root = cfg.root();
   c.name = impact_keys().top.name.read(root);
@@ -447,7 +447,7 @@ ImpactCase parse_impact_case(Config& cfg) {
   parse_time(root, c);
   parse_wall(root, c);
   parse_gas(root, c);
-  parse_bodies(root, cfg.file(), c);
+  parse_bodies(root, cfg.file(), c, one_sphere_target);
   parse_searches(root, c);
   parse_coupling(root, real_modulus, c);
   check_orientations(root, c);

@@ -124,7 +124,9 @@ struct ImpactCase {
 AgglomerateSpec parse_agglomerate(const ConfigSection& root, const std::string& case_file, bool wall_impact = false);
 
 // Reads every section; throws ConfigError naming file, key, value and the allowed range.
-ImpactCase parse_impact_case(Config& cfg);
+// `one_sphere_target`: a list agglomerate of a single sphere is accepted without a wall (agglo outcomes:
+// sphere-sphere impacts); otherwise a list needs two spheres, or one with wall.impact = true.
+ImpactCase parse_impact_case(Config& cfg, bool one_sphere_target = false);
 
 // What `agglo aggregate` reads: the name, [agglomerate] (its structure built and checked) and, when the
 // case has a [material] table, [[materials]] entries or agglomerate.material, those as parse_impact_case

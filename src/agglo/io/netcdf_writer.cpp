@@ -140,13 +140,12 @@ void write_values(const Check& ok, int nc, const Dataset& d, const std::vector<i
   }
 }
 
-// The NetCDF-C library is not thread-safe (sweep cases and Python threads write concurrently).
-std::mutex& library_mutex() {
+}  // namespace
+
+std::mutex& netcdf_library_mutex() {
   static std::mutex m;
   return m;
 }
-
-}  // namespace
 
 void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& name,
                   const nlohmann::json& extra_attributes) {
@@ -156,7 +155,7 @@ void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& nam
   const Check ok{path};
   check_space(path, netcdf_bytes(d, extra_attributes));
   int nc = -1;
-  const std::lock_guard lock(library_mutex());
+  const std::lock_guard lock(netcdf_library_mutex());
   try {
     ok(nc_create(tmp.c_str(), NC_NETCDF4 | NC_CLOBBER, &nc), "create");
     const auto ids = define(ok, nc, d);

@@ -6,6 +6,7 @@
 // numbers as numeric arrays, anything else as its JSON text). The file is written under
 // "<name>.tmp-<pid>" and renamed when complete, so a failed or killed write never leaves a partial
 // results.nc (OutputDir removes a killed run's temporary file).
+#include <mutex>
 #include <string>
 
 #include "agglo/io/dataset.hpp"
@@ -18,6 +19,10 @@ inline constexpr const char* kResultsFile = "results.nc";
 // Writes `d` to out/name, with `extra_attributes` (an object) as further global attributes that replace
 // the dataset's own of the same name; std::runtime_error naming the file and netCDF's message on any
 // failure (the temporary file is removed and an earlier file of that name is left as it was).
+// The NetCDF-C library is not thread-safe (sweep cases and Python threads write concurrently): every call
+// into it, writer and reader (netcdf_reader.hpp), holds this mutex.
+std::mutex& netcdf_library_mutex();
+
 void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& name = kResultsFile,
                   const nlohmann::json& extra_attributes = nlohmann::json::object());
 

@@ -13,7 +13,7 @@ const std::vector<const Command*>& all_commands() {
   static const std::vector<const Command*> list = {&collide_command(), &vcrit_command(), &breakup_command(),
                                                    &electrostatics_command(), &acoustic_command(),
                                                    &sectional_command(), &calibrate_command(),
-                                                   &aggregate_command()};
+                                                   &aggregate_command(), &outcomes_command()};
   return list;
 }
 

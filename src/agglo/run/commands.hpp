@@ -15,6 +15,7 @@ const Command& acoustic_command();
 const Command& sectional_command();
 const Command& calibrate_command();
 const Command& aggregate_command();
+const Command& outcomes_command();
 
 // Every command, in the order of `agglo --help`.
 const std::vector<const Command*>& all_commands();

@@ -19,7 +19,7 @@ using acoustics::AcousticObservations;
 // The collision counters of result.json: the keys both selections share, then the meaning each
 // selection gives to the trial, bound and subdivision counters (binned: candidates against the row
 // majorant; Nanbu: trials against the per-step bound P_n).
-nlohmann::json stats_json(const acoustics::CollisionStats& s, acoustics::Selection sel) {
+nlohmann::json stats_json(const acoustics::CollisionStats& s, acoustics::Selection sel, bool dry_table) {
   const auto by_kind = [](const auto& c) { return nlohmann::json{{"droplet", c[0]}, {"dry", c[1]}, {"wet", c[2]}}; };
   nlohmann::json j{{"particle_steps", s.particle_steps},     {"kernel_evals", s.kernel_evals},
                    {"collisions", s.collisions},             {"coalescences", by_kind(s.coalescences)},
@@ -33,6 +33,10 @@ nlohmann::json stats_json(const acoustics::CollisionStats& s, acoustics::Selecti
   j[binned ? "max_substeps" : "max_subcycles"] = s.max_subcycles;
   if (binned) j["full_row_rate_computations"] = s.row_rate_updates;
   else j["max_bound_pn"] = s.max_bound_pn;
+  if (dry_table) {  // outcomes.dry_model = "table" only, so the default outputs keep their keys
+    j["outcome_table_queries"] = s.table_queries;
+    j["outcome_table_clamped"] = s.table_clamped;
+  }
   return j;
 }
 
@@ -145,7 +149,7 @@ nlohmann::json acoustic_summary(const AcousticObservations& o) {
           {"u_amp_m_s", o.u_amp},
           {"solid_volume_rel_change", rel_change(c0.solid_volume, c1.solid_volume)},
           {"liquid_volume_rel_change", rel_change(c0.liquid_volume, c1.liquid_volume)},
-          {o.selection == acoustics::Selection::binned ? "binned" : "nanbu", stats_json(o.stats, o.selection)},
+          {o.selection == acoustics::Selection::binned ? "binned" : "nanbu", stats_json(o.stats, o.selection, o.dry_table)},
           {"wall_time_s", o.wall_time_s}};
 }
 

@@ -1,0 +1,60 @@
+#pragma once
+// A tabulated dry collision outcome (docs/acoustics.md §1.7): the probabilities P_stick, P_bounce and
+// P_break of a sphere-sphere collision on a grid of the normal relative speed v_n = |G.n| [m/s] and the
+// two partners' diameters d_1 <= d_2 [m] (the pair is queried with the smaller diameter first).
+// Between the nodes the probabilities are interpolated multilinearly in (ln v_n, ln d_1, ln d_2):
+//   P(x) = sum over the 8 corners c of the enclosing cell of  prod_k w_k(c) P_c,
+//   w_k = (ln x_k - ln a_k) / (ln b_k - ln a_k) towards the upper node b_k of axis k (1 - w_k for a_k),
+// which is exact for data that are linear in each of ln v_n, ln d_1 and ln d_2. A query outside an axis
+// is clamped to its end node and counted. An axis of one node holds the table constant along it.
+// File: NetCDF (io/netcdf_reader.hpp), dimensions `speed`, `diameter_1`, `diameter_2`, coordinate
+// variables of the same names in "m s-1", "m", "m" (strictly increasing, positive), and `p_stick`,
+// `p_bounce`, `p_break` (units "1", over (speed, diameter_1, diameter_2), each in [0, 1], their sum 1
+// within 1e-6 at every node); further variables (intervals, counts) and global attributes (provenance)
+// are kept but not used. `agglo outcomes` writes such a file (docs/outcomes.md).
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "agglo/io/dataset.hpp"
+
+namespace agglo::acoustics {
+
+// Names of the file's dimensions/coordinates and probability variables (written once, here).
+inline constexpr std::array<const char*, 3> kOutcomeAxes = {"speed", "diameter_1", "diameter_2"};
+inline constexpr std::array<const char*, 3> kOutcomeAxisUnits = {"m s-1", "m", "m"};
+inline constexpr std::array<const char*, 3> kOutcomeProbabilities = {"p_stick", "p_bounce", "p_break"};
+
+struct OutcomeProbabilities {
+  double stick = 0.0, bounce = 0.0, brk = 0.0;
+  bool clamped = false;  // the query lay outside the table on at least one axis
+};
+
+struct OutcomeTable {
+  std::array<std::vector<double>, 3> axes;  // speed [m/s], diameter_1 [m], diameter_2 [m], increasing
+  std::vector<double> p_stick, p_bounce, p_break;  // row-major over (speed, diameter_1, diameter_2)
+  std::string source;                              // file it was read from ("" when built in memory)
+  std::string provenance;                          // the file's `provenance` attribute, if any
+
+  // Probabilities at normal speed v [m/s] and diameters di, dj [m] (any order: queried as (min, max)).
+  OutcomeProbabilities at(double v, double di, double dj) const;
+  // Largest P_break over the nodes.
+  double max_break() const;
+  std::size_t index(std::size_t iv, std::size_t i1, std::size_t i2) const {
+    return (iv * axes[1].size() + i1) * axes[2].size() + i2;
+  }
+};
+
+// The table held by `d`; std::invalid_argument with a one-line reason (naming the variable and the
+// offending value) when a variable is missing, has other dimensions or units, an axis is not
+// increasing and positive, or a probability is outside [0, 1] or the three do not sum to 1.
+OutcomeTable outcome_table_from_dataset(const io::Dataset& d);
+
+// The dataset of `t` in the file format above (the inverse of outcome_table_from_dataset).
+io::Dataset outcome_table_dataset(const OutcomeTable& t);
+
+// Reads and checks a table file (io::NetcdfReadError when it cannot be read, std::invalid_argument as above).
+OutcomeTable load_outcome_table(const std::filesystem::path& file);
+
+}  // namespace agglo::acoustics

@@ -1,0 +1,30 @@
+#pragma once
+// Settings table of agglo outcomes (impact/outcome_grid.hpp, docs/outcomes.md): the grid of the
+// sphere-sphere outcome table. The DEM case itself is read through the impact tables (settings_impact.hpp).
+#include <cstdint>
+#include <vector>
+
+#include "agglo/core/settings.hpp"
+
+namespace agglo::settings {
+
+struct OutcomesSettings {
+  struct Grid {
+    Table t{"outcome_grid", "outcomes", "grid of the sphere-sphere outcome table (agglo outcomes)"};
+    Reals speeds{t, {"outcome_grid.speeds", "m/s", "normal relative speeds at contact (increasing)"}, std::nullopt,
+                 Range::open_closed(0.0, 1e3)};
+    Reals diameters{t, {"outcome_grid.diameters", "m", "sphere diameters of both partners (increasing)"},
+                    std::nullopt, Range::open_closed(0.0, 1e-2)};
+    Integer impacts{t, {"outcome_grid.impacts", "", "impacts per grid node (sampled impact parameters)"}, 8, 1,
+                    100000};
+    Real max_offset{t, {"outcome_grid.max_offset", "", "largest impact parameter b / (r_1 + r_2); 0 = every impact head-on"},
+                    0.5, Range::closed(0.0, 0.95)};
+    Integer seed{t, {"outcome_grid.seed", "", "random seed of the sampled impact parameters"}, 1, 0, INT64_MAX};
+  } grid;
+
+  std::vector<const Table*> tables() const { return {&grid.t}; }
+};
+
+const OutcomesSettings& outcomes_settings();
+
+}  // namespace agglo::settings

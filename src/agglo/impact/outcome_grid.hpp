@@ -1,0 +1,76 @@
+#pragma once
+// Sphere-sphere collision outcomes on a grid (agglo outcomes, docs/outcomes.md): for every normal speed
+// v_n of `speeds` and every pair of diameters d_1 <= d_2 of `diameters`, `impacts` DEM impacts of a sphere
+// of d_2 onto a resting sphere of d_1 (the impact experiment with a one-sphere list target, docs/dem.md),
+// each at an impact parameter b drawn with b^2 uniform in [0, (f (r_1 + r_2))^2] (f = max_offset; the
+// hard-sphere encounter of the DSMC restricted to b <= f (r_1 + r_2)) and launched at
+//   v = v_n / sqrt(1 - (b / (r_1 + r_2))^2),
+// so that the normal relative speed at first contact is v_n (the DSMC queries the table at its pair's
+// normal speed). An impact sticks when the spheres are in contact at the end (impact::stays), else it
+// bounces; a break (fragments) cannot happen for two spheres (P_break = 0, kept for aggregate tables).
+// Per node: counts and P = k/n with the 95 % Wilson score interval
+//   (p + z^2/2n -+ z sqrt(p(1-p)/n + z^2/4n^2)) / (1 + z^2/n),  z = 1.959964.
+// The table is symmetric: node (d_1, d_2) with d_1 > d_2 copies (d_2, d_1).
+#include <cstdint>
+#include <vector>
+
+#include "agglo/core/estimate.hpp"
+#include "agglo/impact/experiment.hpp"
+#include "agglo/impact/impact_case.hpp"
+
+namespace agglo::impact {
+
+
+struct OutcomeGridSpec {
+  std::vector<double> speeds, diameters;  // [m/s], [m]
+  int impacts = 8;
+  double max_offset = 0.5;
+  std::uint64_t seed = 1;
+};
+
+// Reads [outcome_grid] (ConfigError naming the key: axes not strictly increasing, more than 1e6 impacts).
+OutcomeGridSpec parse_outcome_grid(const ConfigSection& root);
+// ConfigError unless `c` is a one-sphere list target hit by a sphere, without a wall, with time.dt = 0
+// (each node's step is T0 / time.steps_per_period of its own pair).
+void check_sphere_sphere(const ConfigSection& root, const ImpactCase& c);
+
+// One impact of the grid: node (iv, i1, i2) with i1 <= i2, sample k, b / (r_1 + r_2).
+struct OutcomeImpact {
+  std::size_t iv = 0, i1 = 0, i2 = 0;
+  int sample = 0;
+  double b_fraction = 0.0;
+  bool operator==(const OutcomeImpact&) const = default;
+};
+// Every impact, node by node (speed outermost) then sample; fixed by the spec alone.
+std::vector<OutcomeImpact> outcome_impacts(const OutcomeGridSpec& s);
+// The case of one impact (radii, offset) and its launch speed [m/s].
+ImpactCase outcome_case(const ImpactCase& base, const OutcomeGridSpec& s, const OutcomeImpact& j);
+double outcome_launch_speed(const OutcomeGridSpec& s, const OutcomeImpact& j);
+
+// What the grid costs (core/estimate.hpp, docs/limits.md): per node the particle-steps bound of one impact
+// (impact/estimate.hpp: run_steps_bound x 2 particles) at the launch speed of the largest impact parameter,
+// times the impacts; memory of `threads` concurrent runs; output: a CSV row and results.nc values per node
+// and a journal line per impact.
+Estimate outcomes_estimate(const ImpactCase& base, const OutcomeGridSpec& s, int threads);
+
+enum class PairOutcome { stick = 0, bounce = 1, brk = 2 };
+PairOutcome classify_pair(const ImpactOutcome& o);
+
+struct WilsonInterval {
+  double lo = 0.0, hi = 1.0;
+};
+WilsonInterval wilson_interval(std::int64_t k, std::int64_t n);
+
+// Counts per node over the full grid (speed, diameter_1, diameter_2), row-major, mirrored.
+struct OutcomeGridResult {
+  OutcomeGridSpec spec;
+  std::vector<std::int64_t> sticks, bounces, breaks, impacts;
+  std::size_t index(std::size_t iv, std::size_t i1, std::size_t i2) const {
+    const std::size_t nd = spec.diameters.size();
+    return (iv * nd + i1) * nd + i2;
+  }
+};
+// `outcomes[k]` is the outcome of impact k of outcome_impacts(spec).
+OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vector<PairOutcome>& outcomes);
+
+}  // namespace agglo::impact

@@ -1,0 +1,113 @@
+// agglo outcomes: DEM sphere-sphere impacts over a grid of normal speed x both diameters, tabulated as
+// P_stick, P_bounce, P_break with Wilson intervals (impact/outcome_grid.hpp); results.nc is an outcome
+// table of the DSMC (outcomes.dry_model = "table"). Every impact is a job of the ensemble runner
+// (journal, --resume, all cores, MPI ranks).
+#include <fmt/format.h>
+
+#include "agglo/impact/outcome_grid.hpp"
+#include "agglo/run/commands.hpp"
+#include "agglo/run/ensemble.hpp"
+#include "agglo/run/journal.hpp"
+#include "agglo/run/reporter.hpp"
+#include "agglo/writers/outcomes.hpp"
+
+namespace agglo::run {
+
+namespace {
+
+struct OutcomesCase {
+  impact::ImpactCase dem;
+  impact::OutcomeGridSpec grid;
+};
+
+OutcomesCase outcomes_case(Config& cfg) {
+  OutcomesCase c;
+  c.dem = impact::parse_impact_case(cfg, /*one_sphere_target=*/true);
+  impact::check_sphere_sphere(cfg.root(), c.dem);
+  c.grid = impact::parse_outcome_grid(cfg.root());
+  return c;
+}
+
+// Journal key: the node's values (shortest round-trip digits) and the sample.
+std::string outcome_job_key(const impact::OutcomeGridSpec& g, const impact::OutcomeImpact& j) {
+  return fmt::format("v_n={} d1={} d2={} sample={} b={}", g.speeds[j.iv], g.diameters[j.i1], g.diameters[j.i2],
+                     j.sample, j.b_fraction);
+}
+
+std::vector<Job> outcome_jobs(const OutcomesCase& c, const std::vector<impact::OutcomeImpact>& impacts) {
+  std::vector<Job> jobs;
+  for (const auto& j : impacts)
+    jobs.push_back({outcome_job_key(c.grid, j), [&c, j](const JobContext& ctx) {
+                      const impact::ImpactCase one = impact::outcome_case(c.dem, c.grid, j);
+                      auto poll = [&ctx](double, double) { throw_if_cancelled(ctx.cancel); };
+                      const impact::ImpactOutcome o =
+                          impact::run_impact(one, impact::outcome_launch_speed(c.grid, j), nullptr, poll);
+                      return nlohmann::json{{"outcome", static_cast<int>(impact::classify_pair(o))},
+                                            {"steps", o.steps}};
+                    }});
+  return jobs;
+}
+
+std::string provenance(const OutcomesCase& c, std::size_t impacts) {
+  return fmt::format("agglo outcomes: {} DEM sphere-sphere impacts of case '{}' (one-sphere target, "
+                     "docs/outcomes.md); impact parameter b^2 uniform up to ({:g} (r_1 + r_2))^2, seed {}, "
+                     "launch speed v_n / sqrt(1 - (b/(r_1 + r_2))^2)",
+                     impacts, c.dem.name, c.grid.max_offset, c.grid.seed);
+}
+
+class Outcomes final : public Command {
+ public:
+  std::string_view name() const override { return "outcomes"; }
+  std::string_view help() const override {
+    return "Sphere-sphere outcome table from DEM impacts: P_stick, P_bounce, P_break over [outcome_grid] speeds x "
+           "diameters x diameters (the DSMC's dry outcome table, docs/outcomes.md)";
+  }
+  bool resumable() const override { return true; }
+  Estimate estimate(Config& cfg, const RunContext& ctx) const override {
+    const OutcomesCase c = outcomes_case(cfg);
+    return impact::outcomes_estimate(c.dem, c.grid, ctx.thread_count());
+  }
+  // The impact commands' CPU time per weighted particle-step (run/commands/impact_command.hpp).
+  double seconds_per_step(Config&) const override { return 2e-8; }
+  void parse(Config& cfg) const override {
+    (void)outcomes_case(cfg);
+    cfg.check_unknown_keys();
+  }
+
+  CommandResult run(Config& cfg, const OutputDir& out, const RunContext& ctx) const override {
+    const OutcomesCase c = outcomes_case(cfg);
+    const auto impacts = impact::outcome_impacts(c.grid);
+    const auto jobs = outcome_jobs(c, impacts);
+    Journal journal(out.file("journal.jsonl"), hash_hex(std::string(name()) + "\n" + cfg.resolved_toml()), ctx.resume);
+    const auto done = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), "outcomes"});
+    rethrow_first_error(done, &jobs);
+    std::vector<impact::PairOutcome> outcomes;
+    long long steps = 0;
+    for (const auto& o : done) {
+      outcomes.push_back(static_cast<impact::PairOutcome>(o.result.at("outcome").get<int>()));
+      steps += o.result.at("steps").get<long long>();
+    }
+    const auto table = impact::tabulate_outcomes(c.grid, outcomes);
+    if (ctx.formats.csv) writers::write_outcomes(out, table);
+    CommandResult r;
+    r.data = std::make_shared<const io::Dataset>(writers::outcomes_dataset(table, provenance(c, impacts.size())));
+    std::int64_t sticks = 0;
+    for (const auto& o : outcomes) sticks += o == impact::PairOutcome::stick;
+    r.summary = {{"impacts", impacts.size()}, {"stuck", sticks}, {"dem_steps", steps},
+                 {"nodes", table.impacts.size()}};
+    r.seed = static_cast<long long>(c.grid.seed);
+    ctx.report().info(fmt::format("{}: {} impacts over {} speeds x {} x {} diameters: {} stuck, {} bounced", c.dem.name,
+                                  impacts.size(), c.grid.speeds.size(), c.grid.diameters.size(),
+                                  c.grid.diameters.size(), sticks, static_cast<std::int64_t>(impacts.size()) - sticks));
+    return r;
+  }
+};
+
+}  // namespace
+
+const Command& outcomes_command() {
+  static const Outcomes c;
+  return c;
+}
+
+}  // namespace agglo::run

@@ -1,0 +1,69 @@
+#include "agglo/writers/outcomes.hpp"
+
+#include <array>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "agglo/acoustics/outcome_table.hpp"
+
+namespace agglo::writers {
+
+namespace {
+
+using impact::OutcomeGridResult;
+
+// P = k/n per node and the Wilson interval's ends, for the counts `k`.
+struct Probabilities {
+  std::vector<double> p, lo, hi;
+};
+Probabilities probabilities(const std::vector<std::int64_t>& k, const std::vector<std::int64_t>& n) {
+  Probabilities out;
+  for (std::size_t i = 0; i < k.size(); ++i) {
+    out.p.push_back(n[i] > 0 ? static_cast<double>(k[i]) / static_cast<double>(n[i]) : 0.0);
+    const auto w = impact::wilson_interval(k[i], n[i]);
+    out.lo.push_back(w.lo);
+    out.hi.push_back(w.hi);
+  }
+  return out;
+}
+
+}  // namespace
+
+io::Table outcomes_table(const OutcomeGridResult& r) {
+  const auto& ax = acoustics::kOutcomeAxes;
+  const auto& pn = acoustics::kOutcomeProbabilities;
+  const std::size_t nd = r.spec.diameters.size();
+  io::Table t("outcomes.csv", {{ax[0], r.spec.speeds.size()}, {ax[1], nd}, {ax[2], nd}}, "{:.8g}");
+  t.real(ax[0], acoustics::kOutcomeAxisUnits[0], "normal relative speed at contact", r.spec.speeds).over({ax[0]});
+  t.real(ax[1], acoustics::kOutcomeAxisUnits[1], "diameter of the first sphere (the target)", r.spec.diameters)
+      .over({ax[1]});
+  t.real(ax[2], acoustics::kOutcomeAxisUnits[2], "diameter of the second sphere (the projectile)", r.spec.diameters)
+      .over({ax[2]});
+  const std::array<const std::vector<std::int64_t>*, 3> counts = {&r.sticks, &r.bounces, &r.breaks};
+  const std::array<const char*, 3> what = {"sticks", "bounces", "breaks"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    Probabilities p = probabilities(*counts[k], r.impacts);
+    t.real(pn[k], "1", fmt::format("probability that the pair {}", what[k]), std::move(p.p));
+    t.real(std::string(pn[k]) + "_lo", "1", fmt::format("lower end of the 95 % Wilson interval of {}", pn[k]),
+           std::move(p.lo));
+    t.real(std::string(pn[k]) + "_hi", "1", fmt::format("upper end of the 95 % Wilson interval of {}", pn[k]),
+           std::move(p.hi));
+  }
+  t.integer("impacts", "1", "DEM impacts at the node", r.impacts);
+  const std::array<const char*, 3> past = {"stuck", "bounced", "broke"};
+  for (std::size_t k = 0; k < 3; ++k)
+    t.integer(what[k], "1", fmt::format("impacts at the node that {}", past[k]), *counts[k]);
+  return t;
+}
+
+void write_outcomes(const OutputDir& out, const OutcomeGridResult& r) { io::write_csv(out, outcomes_table(r)); }
+
+io::Dataset outcomes_dataset(const OutcomeGridResult& r, const std::string& provenance) {
+  io::Dataset d;
+  outcomes_table(r).add_to(d);
+  d.attributes["provenance"] = provenance;
+  return d;
+}
+
+}  // namespace agglo::writers
