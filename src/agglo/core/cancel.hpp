@@ -56,6 +56,23 @@ class CancelScope {
   const CancelToken* saved_;
 };
 
+// For the span of one file write: keeps the calling thread's token while the run is live, so that the
+// writer's polls stop a long write (io/output_dir.cpp), and removes it when the run was already
+// cancelled when the write began, so that the results flushed after an interruption (the history so far,
+// the snapshots, results.nc marked incomplete) are written whole.
+class WriteCancelScope {
+ public:
+  WriteCancelScope() noexcept : saved_(detail::t_cancel_token) {
+    if (saved_ && saved_->cancelled()) detail::t_cancel_token = nullptr;
+  }
+  ~WriteCancelScope() { detail::t_cancel_token = saved_; }
+  WriteCancelScope(const WriteCancelScope&) = delete;
+  WriteCancelScope& operator=(const WriteCancelScope&) = delete;
+
+ private:
+  const CancelToken* saved_;
+};
+
 // Installs `beat` as the calling thread's heartbeat for the scope's lifetime (null: none).
 class HeartbeatScope {
  public:

@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "agglo/core/cancel.hpp"
+
 namespace agglo::io {
 
 namespace {
@@ -130,6 +132,7 @@ void write_values(const Check& ok, int nc, const Dataset& d, const std::vector<i
   for (std::size_t k = 0; k < d.variables.size(); ++k) {
     const auto& v = d.variables[k];
     if (v.size() == 0) continue;
+    poll_cancel();  // a long write stops between variables (core/cancel.hpp)
     const std::string what = fmt::format("values of {}", v.name);
     if (v.integer) {
       std::vector<long long> x(v.ints.begin(), v.ints.end());
@@ -155,6 +158,7 @@ void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& nam
   const Check ok{path};
   check_space(path, netcdf_bytes(d, extra_attributes));
   int nc = -1;
+  const WriteCancelScope live;  // results flushed after an interruption are written whole
   const std::lock_guard lock(netcdf_library_mutex());
   try {
     ok(nc_create(tmp.c_str(), NC_NETCDF4 | NC_CLOBBER, &nc), "create");

@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "agglo/core/cancel.hpp"
+
 namespace agglo::io {
 
 namespace {
@@ -85,6 +87,7 @@ void write_vtk(std::ostream& o, std::string_view dataset, std::string_view piece
   o << xml;
   for (const auto& s : sections)
     for (const auto& a : s.arrays) {
+      poll_cancel();  // a large array takes a fraction of a second to encode (core/cancel.hpp)
       const std::string b = block(a);  // one array's bytes at a time
       o.write(b.data(), static_cast<std::streamsize>(b.size()));
     }

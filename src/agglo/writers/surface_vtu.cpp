@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "agglo/core/cancel.hpp"
 #include "agglo/io/vtk.hpp"
 
 namespace agglo::writers {
@@ -11,6 +12,7 @@ constexpr double kVtkVertex = 1, kVtkTriangle = 5;  // VTK cell type ids
 
 template <class F>
 io::VtkArray per_sample(const char* name, const char* type, const std::vector<SurfaceSample>& s, F f) {
+  poll_cancel();  // millions of samples: each array takes tens of ms to build (core/cancel.hpp)
   io::VtkArray a{name, type, 1, {}};
   a.values.reserve(s.size());
   for (const auto& p : s) a.values.push_back(f(p));
@@ -19,6 +21,7 @@ io::VtkArray per_sample(const char* name, const char* type, const std::vector<Su
 
 template <class F>
 io::VtkArray per_sample3(const char* name, const std::vector<SurfaceSample>& s, F f) {
+  poll_cancel();
   io::VtkArray a{name, "Float64", 3, {}};
   a.values.reserve(3 * s.size());
   for (const auto& p : s) {
@@ -40,7 +43,9 @@ std::vector<io::VtkArray> cells(std::size_t samples, const std::vector<std::arra
     for (const auto& t : tri) conn.values.insert(conn.values.end(), {double(t[0]), double(t[1]), double(t[2])});
   else
     for (std::size_t i = 0; i < samples; ++i) conn.values.push_back(static_cast<double>(i));
+  poll_cancel();
   for (std::size_t c = 0; c < ncell; ++c) offsets.values.push_back(static_cast<double>(mesh ? 3 * (c + 1) : c + 1));
+  poll_cancel();
   types.values.assign(ncell, mesh ? kVtkTriangle : kVtkVertex);
   std::vector<io::VtkArray> out;
   out.push_back(std::move(conn));

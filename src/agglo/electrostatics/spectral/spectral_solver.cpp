@@ -388,6 +388,7 @@ std::vector<SurfaceSample> SpectralSolver::surface() const {
   std::vector<SurfaceSample> out;
   if (beta_.empty()) return out;
   auto mesh = icosphere(icosphere_level_for(opt_.patches_per_sphere));
+  out.reserve(std::size_t(N_) * mesh.vertices.size());
   std::vector<double> y(nc_);
   for (int i = 0; i < N_; ++i) {
     // O(L^2) per vertex: about 70 ms per sphere at degree 69 with 2562 vertices, the longest phase of a
@@ -424,8 +425,11 @@ std::vector<std::array<int, 3>> SpectralSolver::surface_triangles() const {
   if (beta_.empty()) return tri;
   auto mesh = icosphere(icosphere_level_for(opt_.patches_per_sphere));
   const int nv = static_cast<int>(mesh.vertices.size());
-  for (int i = 0; i < N_; ++i)
+  tri.reserve(std::size_t(N_) * mesh.triangles.size());
+  for (int i = 0; i < N_; ++i) {
+    poll_cancel();  // millions of triangles for hundreds of spheres at the finest mesh
     for (const auto& t : mesh.triangles) tri.push_back({t[0] + i * nv, t[1] + i * nv, t[2] + i * nv});
+  }
   return tri;
 }
 
