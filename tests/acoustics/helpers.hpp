@@ -6,6 +6,7 @@
 #include "agglo/acoustics/case_config.hpp"
 #include "agglo/acoustics/engine.hpp"
 #include "agglo/core/config.hpp"
+#include <fmt/format.h>
 
 namespace agglo::acoustics::test {
 
@@ -39,6 +40,50 @@ inline double mean_orthokinetic_kernel(const Engine& e, std::size_t f, std::size
   const double w = e.settings().motion.sound.omega, ua = e.settings().motion.sound.u_amp;
   const double tf = p.tau[f], td = p.tau[d], s = p.d[f] + p.d[d];
   return 0.25 * s * s * 2.0 * ua * w * std::abs(td - tf) / std::sqrt((1 + w * w * td * td) * (1 + w * w * tf * tf));
+}
+
+// Solid fines (lognormal, geometric std 2) and 30 um water droplets in a 150 dB, 2 kHz standing wave,
+// 20 cells along x, 60 steps of 2.5e-5 s (Nanbu selection, exact integrator), then `output` (the
+// [output] section and anything after it).
+struct WaveCase {
+  int seed = 7;
+  double fines_diameter = 0.5e-6, fines_concentration = 5e12;  // [m], [1/m^3]
+  int fines_samples = 1500;
+  double droplet_concentration = 5e10;  // [1/m^3]
+  int droplet_samples = 200;
+};
+inline std::string standing_wave_case(const WaveCase& w, const std::string& output) {
+  return fmt::format(R"(
+seed = {}
+[sound]
+level_db = 150.0
+frequency_hz = 2000.0
+[domain]
+length_y = 0.002
+length_z = 0.002
+cells_x = 20
+min_cells_per_wavelength = 1
+[time]
+end = 1.5e-3
+collision_dt = 2.5e-5
+motion_dt = 2.5e-5
+[[population]]
+name = "fines"
+phase = "solid"
+distribution = "lognormal"
+geometric_mean_diameter = {:g}
+geometric_std = 2.0
+number_concentration = {:g}
+samples = {}
+[[population]]
+name = "droplets"
+phase = "liquid"
+distribution = "monodisperse"
+diameter = 30e-6
+number_concentration = {:g}
+samples = {}
+)", w.seed, w.fines_diameter, w.fines_concentration, w.fines_samples, w.droplet_concentration,
+                     w.droplet_samples) + output;
 }
 
 }  // namespace agglo::acoustics::test

@@ -20,40 +20,12 @@ namespace {
 // A short acoustic case with droplets (Nanbu selection, exact integrator, sound): 3 acoustic periods.
 // PSDs and snapshots at step 40 (t = 2e-3 s); efficiency rows every 8 steps.
 std::string sound_case(const std::string& extra = "") {
-  return R"(
-seed = 7
-[sound]
-level_db = 150.0
-frequency_hz = 2000.0
-[domain]
-length_y = 0.002
-length_z = 0.002
-cells_x = 20
-min_cells_per_wavelength = 1
-[time]
-end = 1.5e-3
-collision_dt = 2.5e-5
-motion_dt = 2.5e-5
-[[population]]
-name = "fines"
-phase = "solid"
-distribution = "lognormal"
-geometric_mean_diameter = 0.5e-6
-geometric_std = 2.0
-number_concentration = 5e12
-samples = 1500
-[[population]]
-name = "droplets"
-phase = "liquid"
-distribution = "monodisperse"
-diameter = 30e-6
-number_concentration = 5e10
-samples = 200
+  return test::standing_wave_case({}, R"(
 [output]
 efficiency_interval = 2e-4
 psd_times = [0.0, 1e-3]
 snapshot_times = [1e-3]
-)" + extra;
+)" + extra);
 }
 
 // Brownian coagulation of one lognormal population of droplets in the 1 m^3 box (test::kCoagulationBox),

@@ -11,6 +11,7 @@ void CollisionStats::add(const CollisionStats& o) {
   for (int k = 0; k < 3; ++k) {
     coalescences[k] += o.coalescences[k];
     rebounds[k] += o.rebounds[k];
+    breakups[k] += o.breakups[k];
   }
   particle_steps += o.particle_steps;
   subcycled += o.subcycled;

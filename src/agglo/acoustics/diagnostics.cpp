@@ -27,6 +27,37 @@ Counts count(const SampleSet& p, double V) {
   return c;
 }
 
+PmMass pm_mass(const SampleSet& p, double V, const Gas& g) {
+  std::array<double, 3> limit{};  // rho_0 x^2 C_c(x): d_a < x iff rho_p d_v^2 C_c(d_v) is below it
+  for (std::size_t k = 0; k < 3; ++k) limit[k] = kPmUnitDensity * kPmCuts[k] * kPmCuts[k] * g.slip_correction(kPmCuts[k]);
+  PmMass m;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double wm = p.w[i] * p.mass[i], d = p.d[i];
+    const double settling = p.rho[i] * d * d * p.cc[i];
+    for (std::size_t k = 0; k < 3; ++k) {
+      m.volume[k] += d < kPmCuts[k] ? wm : 0.0;
+      m.aerodynamic[k] += settling < limit[k] ? wm : 0.0;
+    }
+  }
+  for (std::size_t k = 0; k < 3; ++k) {
+    m.volume[k] /= V;
+    m.aerodynamic[k] /= V;
+  }
+  return m;
+}
+
+double aerodynamic_diameter(const Gas& g, double dv, double rho_p) {
+  const double a = dv * std::sqrt(rho_p * g.slip_correction(dv) / kPmUnitDensity);
+  double da = dv * std::sqrt(rho_p / kPmUnitDensity);
+  for (int it = 0; it < 60; ++it) {
+    const double next = a / std::sqrt(g.slip_correction(da));
+    const bool done = std::abs(next - da) <= 1e-13 * next;
+    da = next;
+    if (done) break;
+  }
+  return da;
+}
+
 PsdBins PsdBins::log_spaced(double dmin, double dmax, int k) {
   PsdBins b;
   for (int i = 0; i <= k; ++i) b.edges.push_back(dmin * std::pow(dmax / dmin, static_cast<double>(i) / k));

@@ -8,6 +8,7 @@
 //  - otherwise hard-sphere rebound with friction (eqs. 22-23); wet pairs use
 //      e_wet = e - 9 mu_l (d_i+d_j)(1+e) ln(delta/h_a) / (8 rho_s d_i d_j |G.n|)   (eq. 24).
 // G = v_i - v_j, n = unit vector from i to j at contact (approaching: G.n > 0).
+#include <array>
 #include <memory>
 
 #include "agglo/acoustics/outcome_table.hpp"
@@ -19,6 +20,7 @@ namespace agglo::acoustics {
 inline const settings::AcousticSettings::Outcomes& outcome_keys() { return settings::acoustic_settings().outcomes; }
 
 enum class PairType { droplet, dry, wet };
+inline constexpr std::array<const char*, 3> kPairTypeNames = {"droplet", "dry", "wet"};  // by PairType
 
 // The dry outcome model (outcomes.dry_model): critical velocity (default) or a table (outcome_table.hpp).
 enum class DryModel { critical_velocity, table };

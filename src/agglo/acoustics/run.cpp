@@ -147,10 +147,41 @@ std::string startup_log(const AcousticCase& c, const Engine& eng, const RunHooks
 
 double rel_change(double a, double b) { return a > 0 ? b / a - 1 : 0.0; }
 
+// Collisions that stuck, bounced and broke by pair type over the run (outcomes_by_pair.csv).
+std::string outcomes_log(const CollisionStats& s) {
+  std::string log = "outcomes by pair type (collisions: stuck / bounced / broke, fraction of the type's collisions)";
+  const auto frac = [](std::uint64_t n, std::uint64_t of) {
+    return of ? static_cast<double>(n) / static_cast<double>(of) : 0.0;
+  };
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::uint64_t n = s.coalescences[k] + s.rebounds[k] + s.breakups[k];
+    log += fmt::format("{} {}: {}: {} ({:.4g}) / {} ({:.4g}) / {} ({:.4g})", k ? ";" : ":", kPairTypeNames[k], n,
+                       s.coalescences[k], frac(s.coalescences[k], n), s.rebounds[k], frac(s.rebounds[k], n),
+                       s.breakups[k], frac(s.breakups[k], n));
+  }
+  return log + "\n";
+}
+
+// PM mass at t = 0 and at the last row, and the reductions (efficiency.csv's pm columns).
+std::string pm_log(const AcousticObservations& o) {
+  const PmMass &a = o.efficiency.front().pm, &b = o.efficiency.back().pm;
+  std::string log = fmt::format("PM mass [ug/m^3] t = 0 -> {:.6g} s (reduction 1 - PM(t)/PM(0)), diameter d < cut:",
+                                o.efficiency.back().t);
+  for (const bool aero : {false, true}) {
+    log += aero ? "; aerodynamic" : " volume-equivalent";
+    const auto& m0 = aero ? a.aerodynamic : a.volume;
+    const auto& m1 = aero ? b.aerodynamic : b.volume;
+    for (std::size_t k = 0; k < 3; ++k)
+      log += fmt::format(" {} {:.6g} -> {:.6g} ({:.4g})", kPmLabels[k], m0[k] * kMicrogramsPerKg,
+                         m1[k] * kMicrogramsPerKg, pm_reduction(m0[k], m1[k]));
+  }
+  return log + "\n";
+}
+
 std::string closing_log(const AcousticObservations& o) {
   const Counts &c0 = o.initial, &c1 = o.final;
   const EfficiencyRow& last = o.efficiency.back();
-  std::string log = guard_report(o.stats, o.selection);
+  std::string log = guard_report(o.stats, o.selection) + outcomes_log(o.stats) + pm_log(o);
   if (o.dry_table)
     log += fmt::format("dry outcome table: queries={} clamped={} ({:.3g}% outside the table, clamped to its ends)\n",
                        o.stats.table_queries, o.stats.table_clamped,
@@ -206,6 +237,7 @@ class Observer {
     if (r.counts.n_phase[1] > 0) obs_.last_time_with_pure_droplets = t;
     r.collisions = eng_.stats().collisions;
     r.subcycled = eng_.stats().subcycled;
+    r.pm = pm_mass(eng_.particles(), V_, eng_.settings().motion.gas);
     obs_.efficiency.push_back(r);
   }
 
@@ -335,6 +367,7 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
   obs.stats = eng.stats();
   obs.selection = eng.settings().selection;
   obs.dry_table = eng.settings().outcomes.dry_model == DryModel::table;
+  obs.dsmc = true;
   obs.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   obs.log += closing_log(obs);
   return obs;

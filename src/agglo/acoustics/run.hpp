@@ -2,7 +2,9 @@
 // One acoustic DSMC run, from a validated case to its observations (docs/model.md §C.6). The run
 // never prints or writes files: warnings go to a callback, and writers/acoustic.hpp writes
 //   efficiency.csv  t, concentrations by phase, fine efficiency, pure-droplet fraction, volume
-//                   fractions (conservation), guard counters
+//                   fractions (conservation), guard counters, PM1/PM2.5/PM10 mass (diagnostics.hpp)
+//                   and their reductions
+//   outcomes_by_pair.csv  collisions that stuck, bounced and broke by pair type over the run
 //   psd.csv         dN/dlog10 d by phase at output.psd_times
 //   snapshots.csv   samples with x <= snapshot_x_fraction * L_x at output.snapshot_times
 //   summary.json    final efficiency and the other scalars below
@@ -27,6 +29,7 @@ struct EfficiencyRow {
   double fine_efficiency = 0.0;
   double pure_droplet_fraction = 0.0;
   std::uint64_t collisions = 0, subcycled = 0;
+  PmMass pm;                      // PM mass concentrations [kg/m^3] (DSMC; the sectional run leaves 0)
 };
 
 struct PsdRecord {
@@ -53,6 +56,7 @@ struct AcousticObservations {
   CollisionStats stats;
   Selection selection = Selection::nanbu;
   bool dry_table = false;                      // outcomes.dry_model = "table": its counters are reported
+  bool dsmc = false;                           // a DSMC run: PM columns and outcomes by pair type are written
   std::string log;                             // run.log without its last line (see io)
   double wall_time_s = 0.0;
   std::string interrupted;                     // non-empty: cancelled there; the rows so far are kept

@@ -54,6 +54,30 @@ Bins bins_of(const std::vector<double>& e) {
   return b;
 }
 
+// Name of a PM column: pm2_5_vol_ug_m3, pm2_5_aero_reduction, ...
+std::string pm_column(std::size_t k, bool aero, const char* what) {
+  return fmt::format("{}_{}_{}", acoustics::kPmNames[k], aero ? "aero" : "vol", what);
+}
+
+// PM1, PM2.5, PM10 mass concentrations by volume-equivalent and by aerodynamic diameter (diagnostics.hpp)
+// and the fraction of each removed since the first row (t = 0).
+void add_pm_columns(io::Table& t, const std::vector<acoustics::EfficiencyRow>& e) {
+  using R = acoustics::EfficiencyRow;
+  for (const bool aero : {false, true}) {
+    const char* diameter = aero ? "aerodynamic diameter" : "volume-equivalent diameter";
+    const auto of = [aero](const R& r) -> const std::array<double, 3>& { return aero ? r.pm.aerodynamic : r.pm.volume; };
+    for (std::size_t k = 0; k < 3; ++k)
+      t.real(pm_column(k, aero, "ug_m3"), "ug m-3",
+             fmt::format("{} mass concentration ({} < {:g} um)", acoustics::kPmLabels[k], diameter,
+                         acoustics::kPmCuts[k] * 1e6),
+             reals_of(e, [&](const R& r) { return of(r)[k] * acoustics::kMicrogramsPerKg; }));
+    for (std::size_t k = 0; k < 3; ++k)
+      t.real(pm_column(k, aero, "reduction"), "1",
+             fmt::format("fraction of the {} mass ({}) removed since t = 0", acoustics::kPmLabels[k], diameter),
+             reals_of(e, [&](const R& r) { return acoustics::pm_reduction(of(e.front())[k], of(r)[k]); }));
+  }
+}
+
 io::Table efficiency_table(const AcousticObservations& o) {
   using R = acoustics::EfficiencyRow;
   const auto& e = o.efficiency;
@@ -79,6 +103,33 @@ io::Table efficiency_table(const AcousticObservations& o) {
   t.integer("collisions", "1", "collisions so far", ints_of(e, [](const R& r) { return r.collisions; }));
   t.integer("subcycled_particle_steps", "1", "subcycled particle steps so far",
             ints_of(e, [](const R& r) { return r.subcycled; }));
+  if (o.dsmc) add_pm_columns(t, e);
+  return t;
+}
+
+// Collisions that stuck, bounced and broke by pair type over the whole run (DSMC only).
+io::Table outcomes_by_pair_table(const acoustics::CollisionStats& s) {
+  io::Table t("outcomes_by_pair.csv", {{"pair_type", 3}}, "{:.6g}");
+  t.flag("pair_type", "colliding pair: droplet (with a pure droplet), dry (solid-solid), wet (solid-mixed, mixed-mixed)",
+         {acoustics::kPairTypeNames.begin(), acoustics::kPairTypeNames.end()}, {0, 1, 2});
+  const std::array<const std::uint64_t*, 3> counts = {s.coalescences, s.rebounds, s.breakups};
+  std::vector<std::int64_t> n(3, 0);
+  for (const auto* c : counts)
+    for (std::size_t k = 0; k < 3; ++k) n[k] += static_cast<std::int64_t>(c[k]);
+  t.integer("pair_collisions", "1", "collisions of the pair type over the run", n);
+  const std::array<const char*, 3> what = {"stuck", "bounced", "broke"};
+  const std::array<const char*, 3> meaning = {"stuck (coalesced)", "bounced (rebound)",
+                                              "broke into fragments (breakage is not implemented: 0)"};
+  for (std::size_t m = 0; m < 3; ++m)
+    t.integer(what[m], "1", std::string("collisions of the pair type that ") + meaning[m],
+              {counts[m], counts[m] + 3});
+  for (std::size_t m = 0; m < 3; ++m) {
+    std::vector<double> f;
+    for (std::size_t k = 0; k < 3; ++k)
+      f.push_back(n[k] > 0 ? static_cast<double>(counts[m][k]) / static_cast<double>(n[k]) : 0.0);
+    t.real(std::string(what[m]) + "_fraction", "1",
+           std::string("fraction of the pair type's collisions that ") + meaning[m] + " (0: no collisions)", f);
+  }
   return t;
 }
 
@@ -132,9 +183,20 @@ io::Table snapshot_table(const AcousticObservations& o) {
 }
 
 double rel_change(double a, double b) { return a > 0 ? b / a - 1 : 0.0; }
-}  // namespace
 
-nlohmann::json acoustic_summary(const AcousticObservations& o) {
+// The PM columns' last values under the columns' names (results.nc keeps the series only).
+void add_pm_summary(nlohmann::json& j, const std::vector<acoustics::EfficiencyRow>& e) {
+  const auto &a = e.front().pm, &b = e.back().pm;
+  for (const bool aero : {false, true})
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double m0 = aero ? a.aerodynamic[k] : a.volume[k], m1 = aero ? b.aerodynamic[k] : b.volume[k];
+      j[pm_column(k, aero, "ug_m3")] = m1 * acoustics::kMicrogramsPerKg;
+      j[pm_column(k, aero, "reduction")] = acoustics::pm_reduction(m0, m1);
+    }
+}
+
+// The scalars of both the DSMC and the sectional run.
+nlohmann::json common_summary(const AcousticObservations& o) {
   const auto& last = o.efficiency.back();
   const auto &c0 = o.initial, &c1 = o.final;
   return {{"fine_efficiency", last.fine_efficiency},
@@ -152,12 +214,20 @@ nlohmann::json acoustic_summary(const AcousticObservations& o) {
           {o.selection == acoustics::Selection::binned ? "binned" : "nanbu", stats_json(o.stats, o.selection, o.dry_table)},
           {"wall_time_s", o.wall_time_s}};
 }
+}  // namespace
+
+nlohmann::json acoustic_summary(const AcousticObservations& o) {
+  nlohmann::json j = common_summary(o);
+  if (o.dsmc) add_pm_summary(j, o.efficiency);
+  return j;
+}
 
 std::vector<io::Table> acoustic_tables(const AcousticObservations& o) {
   std::vector<io::Table> t;
   t.push_back(efficiency_table(o));
   t.push_back(psd_table(o));
   t.push_back(snapshot_table(o));
+  if (o.dsmc) t.push_back(outcomes_by_pair_table(o.stats));
   return t;
 }
 

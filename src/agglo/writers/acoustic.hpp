@@ -1,6 +1,8 @@
 #pragma once
 // Results of an acoustic or sectional run (agglo acoustic, agglo sectional): efficiency.csv, psd.csv,
-// snapshots.csv, run.log, summary.json, and results.nc as labelled arrays. Concentrations are given in
+// snapshots.csv, run.log, summary.json, and results.nc as labelled arrays; a DSMC run (acoustic) adds
+// the PM columns to efficiency.csv (and their last values to summary.json) and outcomes_by_pair.csv
+// (dim pair_type; docs/outputs.md). Concentrations are given in
 // cm-3 (the papers' unit); everything else in SI. The three tables are declared once (acoustic_tables);
 // in results.nc their columns keep their CSV names except the times (`time`, `psd_time`,
 // `snapshot_time`) and the bin centre (`diameter`, psd.csv's d_mid_m), and add the bin edges
@@ -17,7 +19,8 @@
 
 namespace agglo::writers {
 
-// efficiency.csv (dim time), psd.csv (dims psd_time x diameter), snapshots.csv (dim snapshot_row).
+// efficiency.csv (dim time), psd.csv (dims psd_time x diameter), snapshots.csv (dim snapshot_row),
+// outcomes_by_pair.csv (dim pair_type; DSMC only).
 std::vector<io::Table> acoustic_tables(const acoustics::AcousticObservations& o);
 
 // The scalars of summary.json (also the row of a sweep table and run.json's details).
