@@ -108,11 +108,16 @@ TEST(OutcomeTable, QueriesOutsideAreClampedAndFlagged) {
   EXPECT_NEAR(zero.stick, multilinear(1e-3, 1e-6, 2e-6), 1e-12);
   EXPECT_NEAR(high.stick, multilinear(10.0, 1e-6, 1e-4), 1e-12);
   EXPECT_FALSE(t.at(1e-3, 1e-7, 1e-4).clamped);  // on the end nodes: inside
+  // Up to rounding (a diameter computed from a volume): still on the node; a 1e-6 relative step outside is not.
+  EXPECT_FALSE(t.at(1e-3 * (1 - 1e-13), 1e-7 * (1 - 1e-13), 1e-4 * (1 + 1e-13)).clamped);
+  EXPECT_TRUE(t.at(1e-3 * (1 - 1e-6), 1e-6, 2e-6).clamped);
+  EXPECT_TRUE(t.at(1e-3, 1e-6, 1e-4 * (1 + 1e-6)).clamped);
   // One node along an axis: constant along it, any other value counts as outside.
   const OutcomeTable c = table_of({1.0}, {1e-6}, {1e-6}, [](double, double, double) { return 0.3; });
   EXPECT_DOUBLE_EQ(c.at(0.2, 1e-6, 1e-6).stick, 0.3);
   EXPECT_TRUE(c.at(0.2, 1e-6, 1e-6).clamped);
   EXPECT_FALSE(c.at(1.0, 1e-6, 1e-6).clamped);
+  EXPECT_FALSE(c.at(1.0, 1e-6 * (1 + 1e-12), 1e-6).clamped);
 }
 
 TEST(OutcomeTable, FileRoundTripAndMalformedTables) {
@@ -244,8 +249,8 @@ TEST(OutcomeTable, StickProbabilityOneIsAlwaysCoalesce) {
 
 namespace {
 
-// Solid spheres of 1 and 10 um (equal concentrations, 10000 samples each) in a 140 dB, 2 kHz wave with the
-// constant kernel (tau = K N t = 0.3 over 200 steps): the 1-10 um pairs meet at normal speeds of 0-0.7 m/s
+// Solid spheres of 1 and 10 um (1e12 m^-3 each, 4000 samples each) in a 140 dB, 2 kHz wave with the
+// constant kernel (K N t = 0.9 for the total N = 2e12 m^-3, over 100 steps of 1e-4 s): the 1-10 um pairs meet at normal speeds of 0-0.7 m/s
 // around v_cr,dry(1 um, 10 um) = 0.19 m/s, the equal-size pairs well below it.
 std::string two_size_case(std::uint64_t seed) {
   return fmt::format(R"(

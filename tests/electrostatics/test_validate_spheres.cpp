@@ -15,12 +15,13 @@ using namespace agglo::es;
 
 namespace {
 
-constexpr double R = 10e-6;
+constexpr double kSphereRadius = 10e-6;
 
 Problem good() {
   Problem p;
-  p.spheres = {Sphere{{0, 0, 0}, R, 1e-14, 2.5}, Sphere{{2.2 * R, 0, 0}, R, -1e-14, 2.5},
-               Sphere{{0, 2.5 * R, 0}, R, 0.0, 2.5}};
+  p.spheres = {Sphere{{0, 0, 0}, kSphereRadius, 1e-14, 2.5},
+               Sphere{{2.2 * kSphereRadius, 0, 0}, kSphereRadius, -1e-14, 2.5},
+               Sphere{{0, 2.5 * kSphereRadius, 0}, kSphereRadius, 0.0, 2.5}};
   return p;
 }
 
@@ -40,15 +41,15 @@ std::vector<Case> cases() {
       {"medium inf", [inf](Problem& p) { p.medium_permittivity = inf; }, Rs::medium_permittivity, -1, -1},
       {"field nan", [nan](Problem& p) { p.external_field.y = nan; }, Rs::external_field, -1, -1},
       {"radius 0", [](Problem& p) { p.spheres[1].radius = 0.0; }, Rs::radius, 1, -1},
-      {"radius < 0", [](Problem& p) { p.spheres[2].radius = -R; }, Rs::radius, 2, -1},
+      {"radius < 0", [](Problem& p) { p.spheres[2].radius = -kSphereRadius; }, Rs::radius, 2, -1},
       {"radius nan", [nan](Problem& p) { p.spheres[0].radius = nan; }, Rs::radius, 0, -1},
       {"kappa 0", [](Problem& p) { p.spheres[2].permittivity = 0.0; }, Rs::permittivity, 2, -1},
       {"kappa < 0", [](Problem& p) { p.spheres[0].permittivity = -2.0; }, Rs::permittivity, 0, -1},
       {"kappa inf", [inf](Problem& p) { p.spheres[1].permittivity = inf; }, Rs::permittivity, 1, -1},
       {"centre nan", [nan](Problem& p) { p.spheres[1].center.z = nan; }, Rs::non_finite, 1, -1},
       {"charge inf", [inf](Problem& p) { p.spheres[2].charge = inf; }, Rs::non_finite, 2, -1},
-      {"overlap", [](Problem& p) { p.spheres[2].center = {0.5 * R, 1.5 * R, 0}; }, Rs::overlap, 0, 2},
-      {"touch", [](Problem& p) { p.spheres[1].center = {2 * R, 0, 0}; }, Rs::overlap, 0, 1},
+      {"overlap", [](Problem& p) { p.spheres[2].center = {0.5 * kSphereRadius, 1.5 * kSphereRadius, 0}; }, Rs::overlap, 0, 2},
+      {"touch", [](Problem& p) { p.spheres[1].center = {2 * kSphereRadius, 0, 0}; }, Rs::overlap, 0, 1},
   };
 }
 

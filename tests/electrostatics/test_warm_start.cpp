@@ -14,12 +14,12 @@ using namespace agglo::es;
 namespace {
 
 constexpr double kRadius = 10e-6;   // [m]
-constexpr double Q0 = 1e-14;  // [C]
+constexpr double kCharge = 1e-14;  // [C]
 
 Problem three_spheres(double shift) {
   Problem p;
-  p.spheres = {Sphere{{0, 0, 0}, kRadius, Q0, 15}, Sphere{{2.2 * kRadius + shift, 0, 0}, kRadius, -Q0, 15},
-               Sphere{{kRadius, 2.1 * kRadius, shift}, kRadius, Q0, 15}};
+  p.spheres = {Sphere{{0, 0, 0}, kRadius, kCharge, 15}, Sphere{{2.2 * kRadius + shift, 0, 0}, kRadius, -kCharge, 15},
+               Sphere{{kRadius, 2.1 * kRadius, shift}, kRadius, kCharge, 15}};
   return p;
 }
 

@@ -19,17 +19,23 @@ struct AxisPos {
   double w = 0.0;
 };
 
+// A query within this relative distance of an end node lies on it (diameters computed from volumes
+// reach a node only up to rounding): clamped to it, but not counted as outside.
+constexpr double kOnNode = 1e-9;
+
+bool off_node(double x, double node) { return !(std::abs(x - node) <= kOnNode * node); }
+
 AxisPos locate_log(const std::vector<double>& a, double x, bool& clamped) {
   if (a.size() == 1) {
-    if (x != a[0]) clamped = true;
+    if (off_node(x, a[0])) clamped = true;
     return {};
   }
   if (!(x > a.front())) {  // also x <= 0 and NaN
-    if (x != a.front()) clamped = true;
+    if (off_node(x, a.front())) clamped = true;
     return {};
   }
   if (x >= a.back()) {
-    if (x != a.back()) clamped = true;
+    if (off_node(x, a.back())) clamped = true;
     return {a.size() - 2, 1.0};
   }
   const std::size_t hi = static_cast<std::size_t>(std::upper_bound(a.begin(), a.end(), x) - a.begin());

@@ -6,7 +6,7 @@
 //   P(x) = sum over the 8 corners c of the enclosing cell of  prod_k w_k(c) P_c,
 //   w_k = (ln x_k - ln a_k) / (ln b_k - ln a_k) towards the upper node b_k of axis k (1 - w_k for a_k),
 // which is exact for data that are linear in each of ln v_n, ln d_1 and ln d_2. A query outside an axis
-// is clamped to its end node and counted. An axis of one node holds the table constant along it.
+// is clamped to its end node and counted (a query within 1e-9 relative of an end node lies on it). An axis of one node holds the table constant along it.
 // File: NetCDF (io/netcdf_reader.hpp), dimensions `speed`, `diameter_1`, `diameter_2`, coordinate
 // variables of the same names in "m s-1", "m", "m" (strictly increasing, positive), and `p_stick`,
 // `p_bounce`, `p_break` (units "1", over (speed, diameter_1, diameter_2), each in [0, 1], their sum 1

@@ -23,17 +23,17 @@ double patch_bytes(const SolverOptions& opt) {
   return 8.0 * (std::min(opt.max_iterations, 100) + 1.0) + kArrayBytesPerPatch;
 }
 
-double memory_lower_bound(const SolverOptions& opt, double spheres) {
+double bem_memory_lower_bound(const SolverOptions& opt, double spheres) {
   return spheres * opt.patches_per_sphere * patch_bytes(opt);
 }
 
-double memory_bytes(const SolverOptions& opt, const Problem& p) {
-  return memory_lower_bound(opt, static_cast<double>(p.spheres.size()));
+double bem_memory_bytes(const SolverOptions& opt, const Problem& p) {
+  return bem_memory_lower_bound(opt, static_cast<double>(p.spheres.size()));
 }
 
 bool direct(const SolverOptions& opt) { return opt.matvec == "direct"; }
 
-double interactions(const SolverOptions& opt, const Problem& p) {
+double bem_interactions(const SolverOptions& opt, const Problem& p) {
   const double patches = static_cast<double>(p.spheres.size()) * opt.patches_per_sphere;
   return opt.max_iterations * patches * (direct(opt) ? patches : 27.0 * opt.fmm_leaf_size);
 }
@@ -43,9 +43,9 @@ double interactions(const SolverOptions& opt, const Problem& p) {
 SolverType bem_solver_type() {
   return {.name = kBemSolver,
           .make = &make_bem_solver,
-          .memory_bytes = &memory_bytes,
-          .memory_lower_bound = &memory_lower_bound,
-          .interactions = &interactions,
+          .memory_bytes = &bem_memory_bytes,
+          .memory_lower_bound = &bem_memory_lower_bound,
+          .interactions = &bem_interactions,
           .samples_per_sphere = [](const SolverOptions& opt) { return static_cast<double>(opt.patches_per_sphere); },
           .seconds_per_interaction = [](const SolverOptions& opt) { return direct(opt) ? kPointChargeSeconds : kFmmSeconds; },
           .cost_keys = {"patches_per_sphere"}};

@@ -75,7 +75,7 @@ int for_pair_degrees(const SolverOptions& opt, const Problem& p, F&& f) {
   return L;
 }
 
-double memory_bytes(const SolverOptions& opt, const Problem& p) {
+double spectral_memory_bytes(const SolverOptions& opt, const Problem& p) {
   double bytes = 0.0;
   const int L = for_pair_degrees(opt, p, [&](int Lp, double count) {
     bytes += count * (kPairBytes + 8.0 * rotation_doubles(Lp));
@@ -86,11 +86,11 @@ double memory_bytes(const SolverOptions& opt, const Problem& p) {
   return bytes + 8.0 * nc * (n * (10.0 + std::min(opt.max_iterations, 100) + 1.0) + 2.0 * block + 4.0 * threads);
 }
 
-double memory_lower_bound(const SolverOptions&, double spheres) {
+double spectral_memory_lower_bound(const SolverOptions&, double spheres) {
   return 0.5 * spheres * (spheres - 1.0) * (kPairBytes + 8.0 * rotation_doubles(2.0));
 }
 
-double interactions(const SolverOptions& opt, const Problem& p) {
+double spectral_interactions(const SolverOptions& opt, const Problem& p) {
   double work = 0.0;
   for_pair_degrees(opt, p, [&](int Lp, double count) { work += count * std::pow(Lp + 1.0, 3.0); });
   const double n = static_cast<double>(p.spheres.size());
@@ -106,9 +106,9 @@ double samples_per_sphere(const SolverOptions& opt) {
 SolverType spectral_solver_type() {
   return {.name = kSpectralSolver,
           .make = &make_spectral_solver,
-          .memory_bytes = &memory_bytes,
-          .memory_lower_bound = &memory_lower_bound,
-          .interactions = &interactions,
+          .memory_bytes = &spectral_memory_bytes,
+          .memory_lower_bound = &spectral_memory_lower_bound,
+          .interactions = &spectral_interactions,
           .samples_per_sphere = &samples_per_sphere,
           .seconds_per_interaction = [](const SolverOptions&) { return kSecondsPerInteraction; },
           .cost_keys = {"max_degree_limit"}};
