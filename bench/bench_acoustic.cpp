@@ -115,7 +115,7 @@ always_coalesce = true
 BENCHMARK(BM_AdditiveKernel1e5)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 void BM_BaselineCase(benchmark::State& st) {
-  agglo::Config cfg = agglo::Config::load(std::filesystem::path(__FILE__).parent_path().parent_path() / "cases" / "seed002_baseline.toml");
+  agglo::Config cfg = agglo::Config::load(std::filesystem::path(AGGLO_SOURCE_DIR) / "cases" / "seed002_baseline.toml");
   if (const char* e = std::getenv("AGGLO_BENCH_BASELINE_END")) {
     cfg.apply_override(std::string("time.end=") + e);
     cfg.apply_override("output.psd_times=[0.0]");

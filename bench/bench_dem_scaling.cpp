@@ -95,8 +95,7 @@ void BM_NeighborBuild(benchmark::State& state) {
 BENCHMARK(BM_NeighborBuild)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 void BM_Collision2ms(benchmark::State& state) {
-  // The case file lives next to this source (bench/ -> ../cases/); __FILE__ is absolute under CMake.
-  const auto src = std::filesystem::path(__FILE__).parent_path().parent_path();
+  const std::filesystem::path src = AGGLO_SOURCE_DIR;  // the source tree (CMakeLists.txt)
   auto cfg = agglo::Config::load(src / "cases" / "seed000_neutral_tetrahedron_e0p9.toml");
   for (const char* s : {"contact.break_rule=lammps", "contact.tangential=marshall", "material.restitution=0.9",
                         "material.friction=0.3", "time.early_stop=false"})  // full 2 ms, as LAMMPS

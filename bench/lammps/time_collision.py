@@ -42,7 +42,8 @@ def main():
         f.write(setup.lammps_input(a.speed, nsteps, "end.dump"))
     agglo_cmd = [os.path.abspath(a.agglo), "--no-plots", "collide", os.path.abspath(a.case), "--speed", repr(a.speed), "-j", "1",
                  "--set", "time.early_stop=false",  # same simulated time as LAMMPS
-                 "--set", "output.snapshot_interval=0", "--out", os.path.join(work, "agglo_out")]
+                 "--set", "output.snapshot_interval=0", "--out", os.path.join(work, "agglo_out"),
+                 "--overwrite"]  # every repetition writes into the same folder
     for s in a.sets:
         agglo_cmd += ["--set", s]
     lmp_cmd = [lmp_case.LMP, "-in", "in.collision", "-log", "log.lammps", "-screen", "none", "-nocite"]
