@@ -122,3 +122,12 @@ TEST(Table, MisfitColumnsAreRefused) {
   u.real("v", "1", "two headers for three components", {1, 2, 3}).over({"row", "xyz"}).header({"a", "b"});
   EXPECT_THROW(csv(u), std::logic_error);
 }
+
+TEST(Table, UnitsOfSummaryKeysFromTheirSuffix) {
+  EXPECT_EQ(io::units_of_key("pm2_5_vol_ug_m3"), "ug m-3");  // a mass concentration, not the volume "m3"
+  EXPECT_EQ(io::units_of_key("cell_volume_m3"), "m3");
+  EXPECT_EQ(io::units_of_key("n_total_final_cm3"), "cm-3");
+  EXPECT_EQ(io::units_of_key("u_amp_m_s"), "m s-1");
+  EXPECT_EQ(io::units_of_key("wall_time_s"), "s");
+  EXPECT_EQ(io::units_of_key("fine_efficiency"), "1");
+}

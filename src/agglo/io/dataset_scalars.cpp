@@ -14,15 +14,18 @@ bool ends_with(std::string_view s, std::string_view suffix) {
 }  // namespace
 
 std::string units_of_key(std::string_view key) {
-  static const std::array<std::pair<std::string_view, std::string_view>, 9> table{{{"_m_per_s", "m s-1"},
-                                                                                   {"_m_s", "m s-1"},
-                                                                                   {"_seconds", "s"},
-                                                                                   {"_cm3", "cm-3"},
-                                                                                   {"_m3", "m3"},
-                                                                                   {"_J", "J"},
-                                                                                   {"_s", "s"},
-                                                                                   {"_m", "m"},
-                                                                                   {"_C", "C"}}};
+  // First match wins: a longer suffix before the shorter one it ends with (PM's "_ug_m3" is a mass
+  // concentration, not a volume).
+  static const std::array<std::pair<std::string_view, std::string_view>, 10> table{{{"_m_per_s", "m s-1"},
+                                                                                    {"_m_s", "m s-1"},
+                                                                                    {"_seconds", "s"},
+                                                                                    {"_cm3", "cm-3"},
+                                                                                    {"_ug_m3", "ug m-3"},
+                                                                                    {"_m3", "m3"},
+                                                                                    {"_J", "J"},
+                                                                                    {"_s", "s"},
+                                                                                    {"_m", "m"},
+                                                                                    {"_C", "C"}}};
   for (const auto& [suffix, units] : table)
     if (ends_with(key, suffix)) return std::string(units);
   return "1";
