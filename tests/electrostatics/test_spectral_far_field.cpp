@@ -86,7 +86,7 @@ double product_error(const Problem& p, const std::vector<double>& beta, const sh
   return relative_difference(spectral_product(fast, p, beta, far), spectral_product(dense, p, beta));
 }
 
-// The fmm solve, and the dense solve warm-started from it (its own GMRES to its own tolerance).
+// The fmm solve and the dense solve, each cold.
 struct TwinSolves {
   Solution fast, dense;
   std::vector<double> beta;  // the fmm solution's multipoles
@@ -95,9 +95,7 @@ TwinSolves twin_solves(const Problem& p) {
   TwinSolves t;
   auto f = make_solver(far_field_options("fmm"));
   t.fast = f->solve(p);
-  auto d = make_solver(far_field_options("dense"));
-  d->set_warm_start(f->warm_start());
-  t.dense = d->solve(p);
+  t.dense = make_solver(far_field_options("dense"))->solve(p);
   t.beta = f->warm_start().values;
   return t;
 }
@@ -142,10 +140,12 @@ struct ClusterCase {
 
 class FarFieldTwin : public ::testing::TestWithParam<ClusterCase> {};
 
-// Product and forces of the fast far field within the stated tolerance of the dense twin:
-// product (relative 2-norm) <= far_field_tolerance = 0.1 target_accuracy (1e-5), forces (largest
-// difference over the largest force) <= 1e-5 as well. Measured: product 5e-7..8e-6 (N = 50: 7e-7,
-// N = 200: 5e-6 ... including the dense twin's own pair truncation, see spectral_solver.hpp).
+// Product and forces of the fast far field within the stated tolerance of the dense twin (both solves
+// cold): product (relative 2-norm, the solution's multipoles) <= far_field_tolerance = 0.1
+// target_accuracy = 1e-5, forces (largest difference over the largest force) <= 1e-5, GMRES iterations
+// equal within 1. Measured (product / forces): N = 50 mono 7.4e-7 / 1.8e-7, N = 200 mono 6.4e-6 / 4.2e-6,
+// N = 50 ratio 3 9.3e-7 / 2.3e-7, N = 150 ratio 3 2.9e-6 / 3.2e-6 (N = 150: the ratio-3 cluster needs
+// L = 80 and N = 200 took 6 s); 8 iterations each.
 TEST_P(FarFieldTwin, ProductAndForcesWithinTheStatedTolerance) {
   const auto [n, ratio] = GetParam();
   const Problem p = random_cluster(n, ratio, 2.5, 11);
@@ -153,13 +153,17 @@ TEST_P(FarFieldTwin, ProductAndForcesWithinTheStatedTolerance) {
   const double tol = far_field_tolerance(far_field_options("fmm"));
   ASSERT_EQ(tol, 1e-5);
   EXPECT_GT(t.fast.stats.extra.at("m2l").get<int>(), 0) << "no pair went through the octree";
-  EXPECT_LE(product_error(p, t.beta), tol);
-  EXPECT_LE(force_difference(t.fast, t.dense), tol);
+  const double product = product_error(p, t.beta), force = force_difference(t.fast, t.dense);
+  std::printf("N = %d, radius ratio %g: product %.2e, forces %.2e, GMRES iterations fmm %d dense %d\n", n, ratio,
+              product, force, t.fast.stats.iterations, t.dense.stats.iterations);
+  EXPECT_LE(product, tol);
+  EXPECT_LE(force, tol);
+  EXPECT_LE(std::abs(t.fast.stats.iterations - t.dense.stats.iterations), 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(Clusters, FarFieldTwin,
                          ::testing::Values(ClusterCase{50, 1.0}, ClusterCase{200, 1.0}, ClusterCase{50, 3.0},
-                                           ClusterCase{200, 3.0}),
+                                           ClusterCase{150, 3.0}),
                          [](const auto& info) {
                            return "N" + std::to_string(info.param.n) + (info.param.ratio == 1.0 ? "_mono" : "_poly3");
                          });
@@ -181,10 +185,12 @@ TEST(SpectralFarField, GmresIterationsDoNotGrowWithN) {
     auto s = make_solver(o);
     its.push_back(s->solve(random_cluster(n, 1.0, 2.5, 3)).stats.iterations);
   }
+  std::printf("GMRES iterations N = 100: %d, N = 300: %d\n", its[0], its[1]);
   EXPECT_LE(std::abs(its[1] - its[0]), 2) << its[0] << " vs " << its[1];
 }
 
-// Negative controls: the tolerance check fails for a far field truncated too low or accepted too early.
+// Negative controls: the tolerance check fails for a far field truncated one order too low (measured
+// 1.09e-5 against 1e-5: the order model is tight here) or accepted too early (theta 0.9: 2.4e-3).
 TEST(SpectralFarField, TooLowOrderOrTooLooseAcceptanceFailsTheTolerance) {
   const Problem p = random_cluster(200, 1.0, 2.5, 11);
   auto s = make_solver(far_field_options("fmm"));
@@ -194,8 +200,10 @@ TEST(SpectralFarField, TooLowOrderOrTooLooseAcceptanceFailsTheTolerance) {
   const int order = sh::far_field_order(tol);
   sh::FarFieldOptions low{.tolerance = tol, .order = order - 1};
   sh::FarFieldOptions loose{.theta = 0.9, .tolerance = tol, .order = order};
-  EXPECT_GT(product_error(p, beta, &low), tol);
-  EXPECT_GT(product_error(p, beta, &loose), tol);
+  const double e_low = product_error(p, beta, &low), e_loose = product_error(p, beta, &loose);
+  std::printf("order %d: %.2e, theta 0.9: %.2e (tolerance %.0e)\n", order - 1, e_low, e_loose, tol);
+  EXPECT_GT(e_low, tol);
+  EXPECT_GT(e_loose, tol);
 }
 
 TEST(SpectralFarField, DISABLED_ErrorVersusOrderDiagnostic) {
