@@ -54,7 +54,8 @@ class SpectralSolver final : public Solver {
   std::string name() const override { return std::string(kSpectralSolver); }
   Solution solve(const Problem& p) override;
   // alpha = M beta for p at the degree solve() would choose (spectral_product()).
-  std::vector<double> product(const Problem& p, const std::vector<double>& beta, const sh::FarFieldOptions* far);
+  std::vector<double> product(const Problem& p, const std::vector<double>& beta, const sh::FarFieldOptions* far,
+                              int repeat);
   int degree(const Problem& p) {
     double est_err = 0.0;
     return choose_degree(p, est_err);
@@ -419,13 +420,13 @@ void SpectralSolver::prepare(const Problem& p, int L) {
 }
 
 std::vector<double> SpectralSolver::product(const Problem& p, const std::vector<double>& beta,
-                                            const sh::FarFieldOptions* far) {
+                                            const sh::FarFieldOptions* far, int repeat) {
   validate_spheres(p);
   if (far) far_options_ = *far;
   prepare(p, degree(p));
   if (beta.size() != std::size_t(N_) * nc_) throw std::invalid_argument("spectral_product: beta of the wrong size");
   std::vector<double> alpha(beta.size());
-  matvec_M(beta.data(), alpha.data());
+  for (int r = 0; r < std::max(1, repeat); ++r) matvec_M(beta.data(), alpha.data());
   return alpha;
 }
 
@@ -489,8 +490,8 @@ double far_field_tolerance(const SolverOptions& opt) { return kFarFieldAccuracy 
 int spectral_degree(const SolverOptions& opt, const Problem& p) { return SpectralSolver(opt).degree(p); }
 
 std::vector<double> spectral_product(const SolverOptions& opt, const Problem& p, const std::vector<double>& beta,
-                                     const sh::FarFieldOptions* far) {
-  return SpectralSolver(opt).product(p, beta, far);
+                                     const sh::FarFieldOptions* far, int repeat) {
+  return SpectralSolver(opt).product(p, beta, far, repeat);
 }
 
 }  // namespace agglo::es

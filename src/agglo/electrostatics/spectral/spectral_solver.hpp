@@ -42,10 +42,11 @@ double far_field_tolerance(const SolverOptions& opt);
 // The twin checks of the far field: the degree L solve() chooses for p, and the sphere-sphere part of
 // the product, alpha = M beta (scaled coefficients, ncoef(L) per sphere, layout of spectral_solver.cpp:
 // beta_lm = B_lm / a^(l+1), alpha_lm = a^l A_lm), with opt.far_field; `far` replaces the far field's
-// options (the negative controls of the tests).
+// options (the negative controls of the tests); the product is applied `repeat` times after one set-up
+// (the cost of one product, bench/bench_spectral_far_field.cpp).
 int spectral_degree(const SolverOptions& opt, const Problem& p);
 std::vector<double> spectral_product(const SolverOptions& opt, const Problem& p, const std::vector<double>& beta,
-                                     const sh::FarFieldOptions* far = nullptr);
+                                     const sh::FarFieldOptions* far = nullptr, int repeat = 1);
 
 // Its entry in the solver registry (registry.hpp), with its cost model.
 SolverType spectral_solver_type();
