@@ -25,22 +25,23 @@ best, counters = {}, {}
 for b in json.load(open(sys.argv[1]))["benchmarks"]:
     if b.get("run_type") != "iteration":
         continue
-    kind, ff, n, k = re.match(r"(\w+)/(\w+)_k[\d.]+/N:(\d+)/(?:products:(\d+)/)?", b["name"]).groups()
-    key = (int(n), ff, kind, int(k or 0))
+    kind, ff, kap, n, k = re.match(r"(\w+)/(\w+)_k([\d.]+)/N:(\d+)/(?:products:(\d+)/)?", b["name"]).groups()
+    key = (kap, int(n), ff, kind, int(k or 0))
     best[key] = min(best.get(key, float("inf")), b["cpu_time"])
     counters[key] = b
-print(f"{'N':>5} {'far':>5} {'solve_s':>8} {'it':>3} {'product_s':>9} {'setup_s':>8} {'near':>7} {'m2l':>6} {'F_vs_dense':>10}")
-for n in sorted({k[0] for k in best}):
+print(f"{'kappa':>5} {'N':>5} {'far':>5} {'solve_s':>8} {'it':>3} {'product_s':>9} {'setup_s':>8} {'near':>7} {'m2l':>6} {'F_vs_dense':>10}")
+for kap, n in sorted({k[:2] for k in best}, key=lambda t: (float(t[0]), t[1])):
     row = {}
     for ff in ("dense", "fmm"):
-        if (n, ff, "solve", 0) not in best:
+        if (kap, n, ff, "solve", 0) not in best:
             continue
-        s, c = best[(n, ff, "solve", 0)], counters[(n, ff, "solve", 0)]
-        p1, p6 = best.get((n, ff, "product", 1), float("nan")), best.get((n, ff, "product", 6), float("nan"))
+        s, c = best[(kap, n, ff, "solve", 0)], counters[(kap, n, ff, "solve", 0)]
+        p1 = best.get((kap, n, ff, "product", 1), float("nan"))
+        p6 = best.get((kap, n, ff, "product", 6), float("nan"))
         prod = (p6 - p1) / 5
         row[ff] = (s, prod)
-        print(f"{n:>5} {ff:>5} {s:>8.3f} {int(c['gmres_iterations']):>3} {prod:>9.4f} {p1 - prod:>8.3f} "
+        print(f"{kap:>5} {n:>5} {ff:>5} {s:>8.3f} {int(c['gmres_iterations']):>3} {prod:>9.4f} {p1 - prod:>8.3f} "
               f"{c.get('near_pairs', n * (n - 1) // 2):>7.0f} {c.get('m2l', 0):>6.0f} {c.get('force_vs_dense', 0):>10.2e}")
     if len(row) == 2:
-        print(f"{n:>5} dense/fmm: solve {row['dense'][0] / row['fmm'][0]:.2f}x, product {row['dense'][1] / row['fmm'][1]:.2f}x")
+        print(f"{kap:>5} {n:>5} dense/fmm: solve {row['dense'][0] / row['fmm'][0]:.2f}x, product {row['dense'][1] / row['fmm'][1]:.2f}x")
 PY

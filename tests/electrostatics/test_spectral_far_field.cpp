@@ -173,6 +173,13 @@ TEST(SpectralFarField, ActionReactionAtN200) {
   const Problem p = random_cluster(200, 1.0, 2.5, 5);
   auto s = make_solver(far_field_options("fmm"));
   const Solution sol = s->solve(p);
+  Vec3 sum;
+  double largest = 0.0;
+  for (const auto& f : sol.force) {
+    sum += f;
+    largest = std::max(largest, norm(f));
+  }
+  std::printf("|sum F| / max |F| = %.2e\n", norm(sum) / largest);
   testing::expect_newton_third_law(sol, 1e-5);
 }
 
