@@ -1,6 +1,7 @@
 // Fast far field of the spectral solver (electrostatics.far_field = "fmm", spectral/far_field.hpp)
 // against its twin, the dense product (every pair re-expanded directly).
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cmath>
 #include <cstdio>
@@ -193,6 +194,25 @@ TEST(SpectralFarField, GmresIterationsDoNotGrowWithN) {
   }
   std::printf("GMRES iterations N = 100: %d, N = 300: %d\n", its[0], its[1]);
   EXPECT_LE(std::abs(its[1] - its[0]), 2) << its[0] << " vs " << its[1];
+}
+
+// The fmm solution is the same at any thread count (bit for bit), with the far-field passes in parallel.
+TEST(SpectralFarField, SolutionDoesNotDependOnTheThreadCount) {
+  SolverOptions o = far_field_options("fmm");
+  o.target_accuracy = 1e-3;
+  const Problem p = random_cluster(300, 1.0, 2.5, 3);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const Solution one = make_solver(o)->solve(p);
+  omp_set_num_threads(2);
+  const Solution two = make_solver(o)->solve(p);
+  omp_set_num_threads(saved);
+  EXPECT_TRUE(two.stats.extra.at("far_field_parallel").get<bool>()) << "the far field ran serially";
+  EXPECT_EQ(two.energy, one.energy);
+  for (std::size_t i = 0; i < p.spheres.size(); ++i)
+    EXPECT_TRUE(two.force[i].x == one.force[i].x && two.force[i].y == one.force[i].y &&
+                two.force[i].z == one.force[i].z)
+        << "sphere " << i;
 }
 
 // Negative controls: the tolerance check fails for a far field truncated one order too low (measured

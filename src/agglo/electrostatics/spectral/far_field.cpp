@@ -28,9 +28,6 @@ double largest_radius(const Problem& p) {
 
 Vec3 sorted_point(const fmm::Octree& t, int k) { return {t.sorted.x[k], t.sorted.y[k], t.sorted.z[k]}; }
 
-// Parallel passes only when there is enough work (see spectral_solver.cpp on spinning threads).
-constexpr std::size_t kParallelCells = 64;
-
 }  // namespace
 
 int far_field_order(double tol) {
@@ -131,12 +128,12 @@ void SphereFarField::upward(const double* beta) const {
 void SphereFarField::interact() const {
   const int ts = fmm::tri_size(p_), fs = ncoef(p_);
   const int ncell = static_cast<int>(tree_.cells.size());
-  const bool parallel = std::size_t(ncell) >= kParallelCells;
-#pragma omp parallel for schedule(static) if (parallel)
+  const bool threaded = parallel();
+#pragma omp parallel for schedule(static) if (threaded)
   for (int c = 0; c < ncell; ++c)
     fmm::split_multipole(&M_[std::size_t(c) * ts], p_, &Mre_[std::size_t(c) * fs], &Mim_[std::size_t(c) * fs]);
   std::fill(Lc_.begin(), Lc_.end(), fmm::cplx(0.0, 0.0));
-#pragma omp parallel if (parallel)
+#pragma omp parallel if (threaded)
   {
     fmm::OperatorScratch scratch(p_);
 #pragma omp for schedule(dynamic, 2)

@@ -34,6 +34,8 @@ inline constexpr double kFarFieldTheta = 0.5;
 inline constexpr int kFarFieldLeafSize = 8;
 inline constexpr double kFarFieldErrorPrefactor = 0.1;
 inline constexpr double kFarFieldErrorRatio = 0.35;
+// Passes over at least this many cells run in parallel (see spectral_solver.cpp on spinning threads).
+inline constexpr std::size_t kParallelCells = 64;
 
 struct FarFieldOptions {
   double theta = kFarFieldTheta;
@@ -55,6 +57,9 @@ class SphereFarField {
   void add(const double* beta, double* alpha) const;
   int order() const { return p_; }
   std::size_t m2l_count() const { return n_m2l_; }
+  // Whether the M2L pass runs in parallel (kParallelCells cells or more; the result does not depend on
+  // it nor on the thread count: every cell and sphere sums its own terms in a fixed order).
+  bool parallel() const { return tree_.cells.size() >= kParallelCells; }
 
  private:
   void classify(double theta);

@@ -403,6 +403,7 @@ Solution SpectralSolver::solve(const Problem& p) {
     sol.stats.extra["far_field_order"] = far_->order();
     sol.stats.extra["near_pairs"] = pairs_.size();
     sol.stats.extra["m2l"] = far_->m2l_count();
+    sol.stats.extra["far_field_parallel"] = far_->parallel();
   }
   return sol;
 }
