@@ -185,6 +185,8 @@ max_steps, max_memory : number, str or None
     max_degree (int, spectral: fixed degree L, 0 = adaptive; default 0),
     target_accuracy (spectral: relative force accuracy of the adaptive degree; default 1e-4),
     max_degree_limit (int, spectral: highest adaptive degree; default 80),
+    far_field ("dense" or "fmm", spectral: every pair re-expanded directly, or well-separated pairs
+    through an octree; default "dense"),
     patches_per_sphere (int, bem; default 2000),
     tolerance (bem, spectral: relative GMRES tolerance; default 1e-6),
     max_iterations (int, most GMRES iterations; default 200),

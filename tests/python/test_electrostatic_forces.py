@@ -193,7 +193,7 @@ GOOD = dict(positions=[[0.0, 0.0, 0.0], [0.0, 0.0, 30e-6]], radii=[10e-6, 10e-6]
     (dict(tolerance="small"), "argument 'tolerance' = \"small\""),
     (dict(matvec=[1]), "argument 'matvec' has type list (must be a number or a string)"),
     (dict(degree=10), "unknown option 'degree' (allowed: max_degree, target_accuracy, max_degree_limit, "
-                      "patches_per_sphere, tolerance, max_iterations, matvec, fmm_order, fmm_leaf_size)"),
+                      "far_field, patches_per_sphere, tolerance, max_iterations, matvec, fmm_order, fmm_leaf_size)"),
     (dict(threads=-1), "argument 'threads' = -1 (must be a whole number >= 0"),
     # The physical ranges of the CLI's [[particles]] and [electrostatics] keys (issue 23 item 10: all ran).
     (dict(radii=10.0), "radii[0] = 10 m (must be in (0, 0.1] m, the range of particles.radius)"),

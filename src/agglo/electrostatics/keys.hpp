@@ -54,6 +54,11 @@ struct SolverKeys {
                                  Range::closed_open(1e-12, 1.0)};
   settings::Integer max_degree_limit{
       t, {"electrostatics.max_degree_limit", "", "spectral: highest adaptive degree"}, 80, 2, 200};
+  settings::Choice far_field{t,
+                             {"electrostatics.far_field", "",
+                              "spectral: far field of the product, every pair directly (dense) or through an octree (fmm)"},
+                             kFarFieldNames[0],
+                             std::vector<std::string_view>(kFarFieldNames.begin(), kFarFieldNames.end())};
   settings::Integer patches_per_sphere{t,
                                        {"electrostatics.patches_per_sphere", "", "bem: surface patches per sphere"},
                                        2000,

@@ -84,6 +84,10 @@ class Solver {
 // (caches of solver results, e.g. impact/pair_table.hpp, key on the whole struct through it).
 // The solver a case gets when it names none (electrostatics.solver); the spectral solver's name.
 inline constexpr std::string_view kDefaultSolver = "spectral";
+// Far field of the spectral product (electrostatics.far_field; spectral/far_field.hpp): every pair
+// re-expanded directly ("dense", the default and the reference twin) or well-separated pairs through an
+// octree of sphere expansions ("fmm"). The key's allowed values are these names.
+inline constexpr std::array<std::string_view, 2> kFarFieldNames{"dense", "fmm"};
 
 struct SolverOptions {
   std::string solver{kDefaultSolver};  // a registered name (registry.hpp)
@@ -91,6 +95,7 @@ struct SolverOptions {
   int max_degree = 0;               // 0 = choose L from the smallest gap for `target_accuracy`
   double target_accuracy = 1e-4;    // relative force accuracy used to pick L
   int max_degree_limit = 80;        // hard cap on automatically chosen L
+  std::string far_field{kFarFieldNames[0]};  // a name of kFarFieldNames
   // bem
   int patches_per_sphere = 2000;
   double tolerance = 1e-6;          // GMRES relative residual

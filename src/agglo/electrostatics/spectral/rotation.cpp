@@ -53,42 +53,47 @@ void FrameRotation::build(const Vec3& e, int L, int M) {
     cosa_[m] = std::cos(m * a);
     sina_[m] = std::sin(m * a);
   }
-  grow_tables(L);
+  // The recurrence tables and the Wigner d of one build depend on L only or are scratch: one set per
+  // thread (the pairs of a solve are built in parallel), not one per pair.
+  thread_local RotationTables tables;
+  thread_local std::vector<double> d;
+  grow_tables(tables, L);
   std::vector<std::size_t> doff(L + 2, 0);
   for (int j = 0; j <= L; ++j) doff[j + 1] = doff[j] + std::size_t(j + 1) * (j + 1);
-  d_.resize(doff[L + 1]);
-  wigner_d(b, doff);
-  real_blocks(doff);
+  d.resize(doff[L + 1]);
+  wigner_d(b, doff, tables, d);
+  real_blocks(doff, d);
 }
 
 // log k! and the square roots sqrt(j^2 - m^2) (with inverses) used by the d recurrence; grow only.
-void FrameRotation::grow_tables(int L) {
-  if (static_cast<int>(lf_.size()) < 2 * L + 2) {
-    lf_.resize(2 * L + 2);
-    for (int k = 0; k < 2 * L + 2; ++k) lf_[k] = std::lgamma(k + 1.0);
+void grow_tables(RotationTables& t, int L) {
+  if (static_cast<int>(t.lf.size()) < 2 * L + 2) {
+    t.lf.resize(2 * L + 2);
+    for (int k = 0; k < 2 * L + 2; ++k) t.lf[k] = std::lgamma(k + 1.0);
   }
-  if (sqL_ < L + 1) {
-    sqL_ = L + 1;
-    sq_.assign(std::size_t(sqL_ + 1) * (sqL_ + 1), 0.0);
-    isq_.assign(sq_.size(), 0.0);
-    ij_.assign(sqL_ + 1, 0.0);
-    for (int j = 0; j <= sqL_; ++j) {
-      ij_[j] = j > 0 ? 1.0 / j : 0.0;
+  if (t.sqL < L + 1) {
+    t.sqL = L + 1;
+    t.sq.assign(std::size_t(t.sqL + 1) * (t.sqL + 1), 0.0);
+    t.isq.assign(t.sq.size(), 0.0);
+    t.ij.assign(t.sqL + 1, 0.0);
+    for (int j = 0; j <= t.sqL; ++j) {
+      t.ij[j] = j > 0 ? 1.0 / j : 0.0;
       for (int m = 0; m <= j; ++m) {
         double v = std::sqrt(double(j * j - m * m));
-        sq_[std::size_t(j) * (sqL_ + 1) + m] = v;
-        isq_[std::size_t(j) * (sqL_ + 1) + m] = v > 0 ? 1.0 / v : 0.0;
+        t.sq[std::size_t(j) * (t.sqL + 1) + m] = v;
+        t.isq[std::size_t(j) * (t.sqL + 1) + m] = v > 0 ? 1.0 / v : 0.0;
       }
     }
   }
 }
 
-// Wigner d^j_{p q}(b), p >= |q|, j = 0..L_, into d_ at doff[j] + p^2 + p + q (doff[j] = sum_{k<j} (k+1)^2).
-void FrameRotation::wigner_d(double b, const std::vector<std::size_t>& doff) {
+// Wigner d^j_{p q}(b), p >= |q|, j = 0..L_, into d at doff[j] + p^2 + p + q (doff[j] = sum_{k<j} (k+1)^2).
+void FrameRotation::wigner_d(double b, const std::vector<std::size_t>& doff, const RotationTables& t,
+                             std::vector<double>& d) const {
   const int L = L_;
   const double cb = std::cos(b), ch = std::cos(0.5 * b), sh = std::sin(0.5 * b);
   const double lc = std::log(ch), ls = std::log(sh);
-  const std::size_t S1 = std::size_t(sqL_) + 1;
+  const std::size_t S1 = std::size_t(t.sqL) + 1;
   // Three-term recurrence in j for every (p, q); the chains of one p (all q) are independent and
   // advanced together so that the processor overlaps them. Index of d^j_{pq}: doff[j] + p^2 + p + q.
   std::vector<double> prev(2 * L + 1), cur(2 * L + 1), c2q(2 * L + 1), icq(2 * L + 1);
@@ -97,17 +102,17 @@ void FrameRotation::wigner_d(double b, const std::vector<std::size_t>& doff) {
     const int nq = 2 * qm + 1;
     for (int q = -qm; q <= qm; ++q) {
       // start: d^p_{p q} = (-1)^(p-q) sqrt((2p)!/((p+q)!(p-q)!)) c^(p+q) s^(p-q)
-      double e = 0.5 * (lf_[2 * p] - lf_[p + q] - lf_[p - q]);
+      double e = 0.5 * (t.lf[2 * p] - t.lf[p + q] - t.lf[p - q]);
       if (p + q > 0) e += (p + q) * lc;
       if (p - q > 0) e += (p - q) * ls;
       double v = std::exp(e);
       if ((p - q) & 1) v = -v;
-      d_[doff[p] + std::size_t(p * p + p + q)] = v;
+      d[doff[p] + std::size_t(p * p + p + q)] = v;
       prev[q + qm] = 0.0;
       cur[q + qm] = v;
     }
     for (int j = p; j < L; ++j) {
-      double* out = &d_[doff[j + 1] + std::size_t(p * p + p - qm)];
+      double* out = &d[doff[j + 1] + std::size_t(p * p + p - qm)];
       if (j == 0) {  // p = q = 0: d^1_00
         out[0] = cb;
         prev[0] = cur[0];
@@ -115,12 +120,12 @@ void FrameRotation::wigner_d(double b, const std::vector<std::size_t>& doff) {
         continue;
       }
       const double jj = j;
-      const double sjp = sq_[std::size_t(j) * S1 + p], isjp = isq_[std::size_t(j + 1) * S1 + p];
+      const double sjp = t.sq[std::size_t(j) * S1 + p], isjp = t.isq[std::size_t(j + 1) * S1 + p];
       const double tj = jj * (jj + 1) * cb;
       for (int k = 0; k < nq; ++k) {
         const int aq = std::abs(k - qm);
-        c2q[k] = (jj + 1) * sq_[std::size_t(j) * S1 + aq] * sjp;
-        icq[k] = ij_[j] * isq_[std::size_t(j + 1) * S1 + aq] * isjp;
+        c2q[k] = (jj + 1) * t.sq[std::size_t(j) * S1 + aq] * sjp;
+        icq[k] = t.ij[j] * t.isq[std::size_t(j + 1) * S1 + aq] * isjp;
       }
       for (int k = 0; k < nq; ++k) {
         const double c1 = (2 * jj + 1) * (tj - double(p) * (k - qm));
@@ -134,7 +139,7 @@ void FrameRotation::wigner_d(double b, const std::vector<std::size_t>& doff) {
 }
 
 // The real cos/sin blocks of every degree (blk_, off_) from d_.
-void FrameRotation::real_blocks(const std::vector<std::size_t>& doff) {
+void FrameRotation::real_blocks(const std::vector<std::size_t>& doff, const std::vector<double>& d) {
   const int L = L_;
   // Real blocks. G_{m' m} = coefficient of Z_{m'} in Z_m(R^{-1} x), R = R_y(b), orthonormal real Z;
   // in our basis (Y = Z * s_m * const, s_0 = 1, s_m = 1/sqrt2) the frame map is
@@ -153,7 +158,7 @@ void FrameRotation::real_blocks(const std::vector<std::size_t>& doff) {
     double* C = &blk_[off_[l]];
     const int ml = std::min(l, M_);
     double* S = C + (ml + 1) * (l + 1);
-    const double* Dl = &d_[doff[l]];
+    const double* Dl = &d[doff[l]];
     auto at = [Dl](int p, int q) { return Dl[p * p + p + q]; };
     // m' = 0 row: G(m, 0) s_m.
     C[0] = at(0, 0);

@@ -14,6 +14,13 @@
 
 namespace agglo::es::sh {
 
+// log k! and sqrt(j^2 - m^2) with inverses, the tables of the Wigner-d recurrence (grow only).
+struct RotationTables {
+  std::vector<double> lf, sq, isq, ij;
+  int sqL = -1;
+};
+void grow_tables(RotationTables& t, int L);
+
 class FrameRotation {
  public:
   // Build for direction e (any length > 0), degrees <= L and frame orders |m| <= M (M < 0: all).
@@ -31,16 +38,13 @@ class FrameRotation {
   void from_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1, double* out2) const;
 
  private:
-  void grow_tables(int L);
-  void wigner_d(double b, const std::vector<std::size_t>& doff);
-  void real_blocks(const std::vector<std::size_t>& doff);
+  void wigner_d(double b, const std::vector<std::size_t>& doff, const RotationTables& t,
+                std::vector<double>& d) const;
+  void real_blocks(const std::vector<std::size_t>& doff, const std::vector<double>& d);
   int L_ = -1, M_ = -1;
   std::vector<double> cosa_, sina_;   // cos(m a), sin(m a), m = 0..L
   std::vector<double> blk_;           // per l: cos block (l+1)^2 then sin block l^2, row-major
   std::vector<int> off_;              // offset of degree l's blocks in blk_
-  std::vector<double> d_;             // scratch: Wigner d
-  std::vector<double> lf_, sq_, isq_, ij_;  // log k!, sqrt(j^2 - m^2), inverses (grow only)
-  int sqL_ = -1;
 };
 
 }  // namespace agglo::es::sh

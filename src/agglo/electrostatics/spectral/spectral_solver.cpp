@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -14,6 +15,7 @@
 #include "agglo/electrostatics/keys.hpp"
 #include "agglo/electrostatics/gmres.hpp"
 #include "agglo/electrostatics/spectral/degree.hpp"
+#include "agglo/electrostatics/spectral/far_field.hpp"
 #include "agglo/electrostatics/spectral/harmonics.hpp"
 #include "agglo/electrostatics/spectral/rotation.hpp"
 #include "agglo/electrostatics/spectral/translation.hpp"
@@ -46,9 +48,18 @@ constexpr double kParallelPairWork = 1e6;
 //   beta_lm = -gamma_l alpha_lm (l >= 1),  beta_00 = q / (4 pi eps0 kappa0 a).
 class SpectralSolver final : public Solver {
  public:
-  explicit SpectralSolver(const SolverOptions& opt) : opt_(opt) {}
+  explicit SpectralSolver(const SolverOptions& opt) : opt_(opt) {
+    far_options_.tolerance = far_field_tolerance(opt);
+  }
   std::string name() const override { return std::string(kSpectralSolver); }
   Solution solve(const Problem& p) override;
+  // alpha = M beta for p at the degree solve() would choose (spectral_product()).
+  std::vector<double> product(const Problem& p, const std::vector<double>& beta, const sh::FarFieldOptions* far,
+                              int repeat);
+  int degree(const Problem& p) {
+    double est_err = 0.0;
+    return choose_degree(p, est_err);
+  }
   std::vector<SurfaceSample> surface() const override;
   std::vector<std::array<int, 3>> surface_triangles() const override;
   WarmStart warm_start() const override { return {{prev_L_, prev_N_}, prev_beta_}; }
@@ -71,6 +82,7 @@ class SpectralSolver final : public Solver {
   void pair_product(const Pair& pr, const double* beta, double* out_i, double* out_k, double* s) const;
   std::size_t block_end(std::size_t b0, double& work) const;
   int choose_degree(const Problem& p, double& est_err);
+  void prepare(const Problem& p, int L);
   void build_pairs(const Problem& p);
   void applied_field(const Problem& p, std::vector<double>& alpha_ext, std::vector<double>& rhs);
   void apply_system(std::span<const double> x, std::span<double> y);
@@ -80,6 +92,8 @@ class SpectralSolver final : public Solver {
   SolverOptions opt_;
   sh::AxialTranslation T_;
   std::vector<Pair> pairs_;
+  std::unique_ptr<sh::SphereFarField> far_;  // far_field = "fmm": the well-separated pairs
+  sh::FarFieldOptions far_options_;
   int L_ = 0, N_ = 0, nc_ = 0;
   std::vector<double> gamma_;  // per sphere, per l
   std::vector<double> beta_, alpha_;
@@ -178,6 +192,7 @@ void SpectralSolver::matvec_M(const double* beta, double* alpha, bool counting) 
       }
     }
   }
+  if (far_) far_->add(beta, alpha);
 }
 
 // End of the block of pair products that starts at pair b0: pairs are added until the block holds
@@ -192,14 +207,21 @@ std::size_t SpectralSolver::block_end(std::size_t b0, double& work) const {
 // Pairs with their own truncation degree and frame order (at 1e-3 x target accuracy).
 void SpectralSolver::build_pairs(const Problem& p) {
   const int N = N_;
-  const std::size_t npairs = std::size_t(N) * (N - 1) / 2;
+  const std::size_t npairs = far_ ? far_->near_pairs().size() : std::size_t(N) * (N - 1) / 2;
   pairs_.resize(npairs);
-  std::size_t q = 0;
-  for (int i = 0; i < N; ++i)
-    for (int k = i + 1; k < N; ++k, ++q) {
-      pairs_[q].i = i;
-      pairs_[q].k = k;
+  if (far_) {
+    for (std::size_t q = 0; q < npairs; ++q) {
+      pairs_[q].i = far_->near_pairs()[q][0];
+      pairs_[q].k = far_->near_pairs()[q][1];
     }
+  } else {
+    std::size_t q = 0;
+    for (int i = 0; i < N; ++i)
+      for (int k = i + 1; k < N; ++k, ++q) {
+        pairs_[q].i = i;
+        pairs_[q].k = k;
+      }
+  }
   const double tol_pair = 1e-3 * opt_.target_accuracy;
   for (std::size_t b0 = 0; b0 < npairs; b0 += kPairBlock) {
     poll_cancel();
@@ -347,11 +369,7 @@ Solution SpectralSolver::solve(const Problem& p) {
   const int N = static_cast<int>(p.spheres.size());
   double est_err = 0.0;
   const int L = choose_degree(p, est_err);
-  L_ = L;
-  N_ = N;
-  nc_ = sh::ncoef(L);
-  if (L > T_.degree()) T_.prepare(std::max(L, std::min(opt_.max_degree_limit, L + 8)));  // grows only
-  build_pairs(p);
+  prepare(p, L);
   std::vector<double> alpha_ext, rhs;
   applied_field(p, alpha_ext, rhs);
   const double tol = std::min(opt_.tolerance, 1e-2 * opt_.target_accuracy);
@@ -381,7 +399,36 @@ Solution SpectralSolver::solve(const Problem& p) {
                      {"max_pair_order", maxorder},
                      {"gmres_tolerance", tol},
                      {"parallel_pair_blocks", parallel_blocks_}};
+  if (far_) {
+    sol.stats.extra["far_field_order"] = far_->order();
+    sol.stats.extra["near_pairs"] = pairs_.size();
+    sol.stats.extra["m2l"] = far_->m2l_count();
+    sol.stats.extra["far_field_parallel"] = far_->parallel();
+  }
   return sol;
+}
+
+// Degree, far field (far_field = "fmm") and pairs for problem p at degree L.
+void SpectralSolver::prepare(const Problem& p, int L) {
+  L_ = L;
+  N_ = static_cast<int>(p.spheres.size());
+  nc_ = sh::ncoef(L);
+  if (L > T_.degree()) T_.prepare(std::max(L, std::min(opt_.max_degree_limit, L + 8)));  // grows only
+  far_.reset();
+  if (opt_.far_field == kFarFieldNames[1])
+    far_ = std::make_unique<sh::SphereFarField>(p, L, far_options_);
+  build_pairs(p);
+}
+
+std::vector<double> SpectralSolver::product(const Problem& p, const std::vector<double>& beta,
+                                            const sh::FarFieldOptions* far, int repeat) {
+  validate_spheres(p);
+  if (far) far_options_ = *far;
+  prepare(p, degree(p));
+  if (beta.size() != std::size_t(N_) * nc_) throw std::invalid_argument("spectral_product: beta of the wrong size");
+  std::vector<double> alpha(beta.size());
+  for (int r = 0; r < std::max(1, repeat); ++r) matvec_M(beta.data(), alpha.data());
+  return alpha;
 }
 
 std::vector<SurfaceSample> SpectralSolver::surface() const {
@@ -437,6 +484,15 @@ std::vector<std::array<int, 3>> SpectralSolver::surface_triangles() const {
 
 std::unique_ptr<Solver> make_spectral_solver(const SolverOptions& opt) {
   return std::make_unique<SpectralSolver>(opt);
+}
+
+double far_field_tolerance(const SolverOptions& opt) { return kFarFieldAccuracy * opt.target_accuracy; }
+
+int spectral_degree(const SolverOptions& opt, const Problem& p) { return SpectralSolver(opt).degree(p); }
+
+std::vector<double> spectral_product(const SolverOptions& opt, const Problem& p, const std::vector<double>& beta,
+                                     const sh::FarFieldOptions* far, int repeat) {
+  return SpectralSolver(opt).product(p, beta, far, repeat);
 }
 
 }  // namespace agglo::es

@@ -21,14 +21,32 @@
 // Errors: invalid input (validate_spheres.hpp) throws InvalidSpheres, GMRES not converging
 // agglo::NumericalError.
 #include <memory>
+#include <vector>
 
 #include "agglo/electrostatics/registry.hpp"
+#include "agglo/electrostatics/spectral/far_field.hpp"
 
 namespace agglo::es {
 // The default solver (solver.hpp).
 inline constexpr std::string_view kSpectralSolver = kDefaultSolver;
 
 std::unique_ptr<Solver> make_spectral_solver(const SolverOptions& opt);
+
+// far_field = "fmm" (far_field.hpp): the product is accurate to kFarFieldAccuracy x target_accuracy
+// (relative 2-norm against the dense twin). Tighter is not meaningful: the dense product's own pair
+// truncation (pair degrees at 1e-3 x target) differs from a product at higher pair degrees by ~5e-6 at
+// the default target on the clusters of the tests.
+inline constexpr double kFarFieldAccuracy = 0.1;
+double far_field_tolerance(const SolverOptions& opt);
+
+// The twin checks of the far field: the degree L solve() chooses for p, and the sphere-sphere part of
+// the product, alpha = M beta (scaled coefficients, ncoef(L) per sphere, layout of spectral_solver.cpp:
+// beta_lm = B_lm / a^(l+1), alpha_lm = a^l A_lm), with opt.far_field; `far` replaces the far field's
+// options (the negative controls of the tests); the product is applied `repeat` times after one set-up
+// (the cost of one product, bench/bench_spectral_far_field.cpp).
+int spectral_degree(const SolverOptions& opt, const Problem& p);
+std::vector<double> spectral_product(const SolverOptions& opt, const Problem& p, const std::vector<double>& beta,
+                                     const sh::FarFieldOptions* far = nullptr, int repeat = 1);
 
 // Its entry in the solver registry (registry.hpp), with its cost model.
 SolverType spectral_solver_type();

@@ -1,0 +1,252 @@
+// Fast far field of the spectral solver (electrostatics.far_field = "fmm", spectral/far_field.hpp)
+// against its twin, the dense product (every pair re-expanded directly).
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "agglo/electrostatics/fmm/solid_harmonics.hpp"
+#include "agglo/electrostatics/spectral/complex_basis.hpp"
+#include "agglo/electrostatics/spectral/far_field.hpp"
+#include "agglo/electrostatics/spectral/harmonics.hpp"
+#include "agglo/electrostatics/spectral/spectral_solver.hpp"
+#include "es_test_helpers.hpp"
+
+namespace agglo::es {
+namespace {
+
+using testing::kQ0;
+using testing::kR;
+
+// A random connected cluster: each new sphere (radius r, or uniform in [r, ratio r]) is put at a random
+// direction from a random earlier one, at a gap 0.01 r (every third sphere) or uniform in [0.01, 1] r,
+// and kept when it clears every other sphere by 0.01 r. Charges alternate +-kQ0 (neutral total for
+// even N); permittivity kappa.
+Problem random_cluster(int n, double ratio, double kappa, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Problem p;
+  auto radius = [&] { return kR * (ratio == 1.0 ? 1.0 : 1.0 + (ratio - 1.0) * u(rng)); };
+  p.spheres.push_back({Vec3{}, radius(), kQ0, kappa});
+  while (static_cast<int>(p.spheres.size()) < n) {
+    const auto& base = p.spheres[std::size_t(u(rng) * p.spheres.size())];
+    const double r = radius();
+    const double gap = (p.spheres.size() % 3 == 0 ? 0.01 : 0.01 + 0.99 * u(rng)) * kR;
+    const double z = 2 * u(rng) - 1, phi = 2 * constants::pi * u(rng), s = std::sqrt(1 - z * z);
+    const Vec3 c = base.center + (base.radius + r + gap) * Vec3{s * std::cos(phi), s * std::sin(phi), z};
+    bool clear = true;
+    for (const auto& o : p.spheres) clear = clear && norm(o.center - c) >= o.radius + r + 0.01 * kR * 0.999;
+    if (!clear) continue;
+    const double q = (p.spheres.size() % 2 == 0 ? 1.0 : -1.0) * kQ0;
+    p.spheres.push_back({c, r, q, kappa});
+  }
+  return p;
+}
+
+SolverOptions far_field_options(const std::string& far_field) {
+  SolverOptions o;
+  o.far_field = far_field;
+  return o;
+}
+
+// Random multipoles, O(1) at every degree (the hardest input for a truncated far field).
+std::vector<double> random_beta(std::size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> b(n);
+  for (auto& v : b) v = u(rng);
+  return b;
+}
+
+double relative_difference(const std::vector<double>& a, const std::vector<double>& ref) {
+  double d = 0.0, r = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    d += (a[k] - ref[k]) * (a[k] - ref[k]);
+    r += ref[k] * ref[k];
+  }
+  return std::sqrt(d / r);
+}
+
+// max_k |F_k - G_k| / max_k |G_k|
+double force_difference(const Solution& a, const Solution& ref) {
+  double d = 0.0, r = 0.0;
+  for (std::size_t k = 0; k < a.force.size(); ++k) {
+    d = std::max(d, norm(a.force[k] - ref.force[k]));
+    r = std::max(r, norm(ref.force[k]));
+  }
+  return d / r;
+}
+
+// Product error of the fast far field against the dense twin (far: options replacing the far field's).
+double product_error(const Problem& p, const std::vector<double>& beta, const sh::FarFieldOptions* far = nullptr) {
+  const SolverOptions dense = far_field_options("dense"), fast = far_field_options("fmm");
+  return relative_difference(spectral_product(fast, p, beta, far), spectral_product(dense, p, beta));
+}
+
+// The fmm solve and the dense solve, each cold.
+struct TwinSolves {
+  Solution fast, dense;
+  std::vector<double> beta;  // the fmm solution's multipoles
+};
+TwinSolves twin_solves(const Problem& p) {
+  TwinSolves t;
+  auto f = make_solver(far_field_options("fmm"));
+  t.fast = f->solve(p);
+  t.dense = make_solver(far_field_options("dense"))->solve(p);
+  t.beta = f->warm_start().values;
+  return t;
+}
+
+TEST(ComplexBasis, MultipoleAndLocalMatchTheRealHarmonics) {
+  const int p = 12;
+  const sh::ComplexBasis basis(p);
+  const auto beta = random_beta(sh::ncoef(p), 3);
+  const double rho = 0.7;
+  std::vector<fmm::cplx> M(fmm::tri_size(p)), I(fmm::tri_size(p)), R(fmm::tri_size(p));
+  std::vector<double> y(sh::ncoef(p));
+  basis.multipole_from_real(p, rho, beta.data(), M.data());
+  const Vec3 x{1.3, -2.1, 0.8};
+  fmm::irregular_harmonics(x, p, I.data());
+  sh::eval_irregular(p, x, y.data());
+  double phi_real = 0.0, phi_complex = 0.0, rn = rho;
+  for (int n = 0; n <= p; ++n, rn *= rho)
+    for (int m = -n; m <= n; ++m) {
+      phi_real += rn * beta[sh::idx(n, m)] * y[sh::idx(n, m)];
+      phi_complex += (m == 0 ? 1.0 : 2.0) * (m >= 0 ? (M[fmm::tri(n, m)] * I[fmm::tri(n, m)]).real() : 0.0);
+    }
+  EXPECT_NEAR(phi_complex, phi_real, 1e-12 * std::abs(phi_real));
+  // local: phi = sum_{|m|<=n} L R (L from the same numbers) against the real coefficients it gives
+  std::vector<double> alpha(sh::ncoef(p), 0.0);
+  basis.add_real_local(p, rho, M.data(), alpha.data());
+  fmm::regular_harmonics(x, p, R.data());
+  sh::eval_regular(p, x, y.data());
+  phi_real = phi_complex = 0.0;
+  double rinv = 1.0;
+  for (int n = 0; n <= p; ++n, rinv /= rho)
+    for (int m = -n; m <= n; ++m) {
+      phi_real += rinv * alpha[sh::idx(n, m)] * y[sh::idx(n, m)];
+      phi_complex += (m == 0 ? 1.0 : 2.0) * (m >= 0 ? (M[fmm::tri(n, m)] * R[fmm::tri(n, m)]).real() : 0.0);
+    }
+  EXPECT_NEAR(phi_complex, phi_real, 1e-12 * std::abs(phi_real));
+}
+
+struct ClusterCase {
+  int n;
+  double ratio;
+};
+
+class FarFieldTwin : public ::testing::TestWithParam<ClusterCase> {};
+
+// Product and forces of the fast far field within the stated tolerance of the dense twin (both solves
+// cold): product (relative 2-norm, the solution's multipoles) <= far_field_tolerance = 0.1
+// target_accuracy = 1e-5, forces (largest difference over the largest force) <= 1e-5, GMRES iterations
+// equal within 1. Measured (product / forces): N = 50 mono 7.4e-7 / 1.8e-7, N = 200 mono 6.4e-6 / 4.2e-6,
+// N = 50 ratio 3 9.3e-7 / 2.3e-7, N = 150 ratio 3 2.9e-6 / 3.2e-6 (N = 150: the ratio-3 cluster needs
+// L = 80 and N = 200 took 6 s); 8 iterations each.
+TEST_P(FarFieldTwin, ProductAndForcesWithinTheStatedTolerance) {
+  const auto [n, ratio] = GetParam();
+  const Problem p = random_cluster(n, ratio, 2.5, 11);
+  const TwinSolves t = twin_solves(p);
+  const double tol = far_field_tolerance(far_field_options("fmm"));
+  ASSERT_EQ(tol, 1e-5);
+  EXPECT_GT(t.fast.stats.extra.at("m2l").get<int>(), 0) << "no pair went through the octree";
+  const double product = product_error(p, t.beta), force = force_difference(t.fast, t.dense);
+  std::printf("N = %d, radius ratio %g: product %.2e, forces %.2e, GMRES iterations fmm %d dense %d\n", n, ratio,
+              product, force, t.fast.stats.iterations, t.dense.stats.iterations);
+  EXPECT_LE(product, tol);
+  EXPECT_LE(force, tol);
+  EXPECT_LE(std::abs(t.fast.stats.iterations - t.dense.stats.iterations), 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Clusters, FarFieldTwin,
+                         ::testing::Values(ClusterCase{50, 1.0}, ClusterCase{200, 1.0}, ClusterCase{50, 3.0},
+                                           ClusterCase{150, 3.0}),
+                         [](const auto& info) {
+                           return "N" + std::to_string(info.param.n) + (info.param.ratio == 1.0 ? "_mono" : "_poly3");
+                         });
+
+// An isolated system of neutral total charge (alternating +-Q0, N = 200): sum F ~ 0.
+TEST(SpectralFarField, ActionReactionAtN200) {
+  const Problem p = random_cluster(200, 1.0, 2.5, 5);
+  auto s = make_solver(far_field_options("fmm"));
+  const Solution sol = s->solve(p);
+  Vec3 sum;
+  double largest = 0.0;
+  for (const auto& f : sol.force) {
+    sum += f;
+    largest = std::max(largest, norm(f));
+  }
+  std::printf("|sum F| / max |F| = %.2e\n", norm(sum) / largest);
+  testing::expect_newton_third_law(sol, 1e-5);
+}
+
+// GMRES iterations with the fast far field do not grow with N (target 1e-3 to keep the test short).
+TEST(SpectralFarField, GmresIterationsDoNotGrowWithN) {
+  SolverOptions o = far_field_options("fmm");
+  o.target_accuracy = 1e-3;
+  std::vector<int> its;
+  for (int n : {100, 300}) {
+    auto s = make_solver(o);
+    its.push_back(s->solve(random_cluster(n, 1.0, 2.5, 3)).stats.iterations);
+  }
+  std::printf("GMRES iterations N = 100: %d, N = 300: %d\n", its[0], its[1]);
+  EXPECT_LE(std::abs(its[1] - its[0]), 2) << its[0] << " vs " << its[1];
+}
+
+// The fmm solution is the same at any thread count (bit for bit), with the far-field passes in parallel.
+TEST(SpectralFarField, SolutionDoesNotDependOnTheThreadCount) {
+  SolverOptions o = far_field_options("fmm");
+  o.target_accuracy = 1e-3;
+  const Problem p = random_cluster(300, 1.0, 2.5, 3);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const Solution one = make_solver(o)->solve(p);
+  omp_set_num_threads(2);
+  const Solution two = make_solver(o)->solve(p);
+  omp_set_num_threads(saved);
+  EXPECT_TRUE(two.stats.extra.at("far_field_parallel").get<bool>()) << "the far field ran serially";
+  EXPECT_EQ(two.energy, one.energy);
+  for (std::size_t i = 0; i < p.spheres.size(); ++i)
+    EXPECT_TRUE(two.force[i].x == one.force[i].x && two.force[i].y == one.force[i].y &&
+                two.force[i].z == one.force[i].z)
+        << "sphere " << i;
+}
+
+// Negative controls: the tolerance check fails for a far field truncated one order too low (measured
+// 1.09e-5 against 1e-5: the order model is tight here) or accepted too early (theta 0.9: 2.4e-3).
+TEST(SpectralFarField, TooLowOrderOrTooLooseAcceptanceFailsTheTolerance) {
+  const Problem p = random_cluster(200, 1.0, 2.5, 11);
+  auto s = make_solver(far_field_options("fmm"));
+  (void)s->solve(p);
+  const auto beta = s->warm_start().values;
+  const double tol = far_field_tolerance(far_field_options("fmm"));
+  const int order = sh::far_field_order(tol);
+  sh::FarFieldOptions low{.tolerance = tol, .order = order - 1};
+  sh::FarFieldOptions loose{.theta = 0.9, .tolerance = tol, .order = order};
+  const double e_low = product_error(p, beta, &low), e_loose = product_error(p, beta, &loose);
+  std::printf("order %d: %.2e, theta 0.9: %.2e (tolerance %.0e)\n", order - 1, e_low, e_loose, tol);
+  EXPECT_GT(e_low, tol);
+  EXPECT_GT(e_loose, tol);
+}
+
+// The measurements behind the order model of far_field.hpp (0.1 x 0.35^p): product error against the
+// dense twin for p = 2..12 on the four clusters (run with --gtest_also_run_disabled_tests).
+TEST(SpectralFarField, DISABLED_ErrorVersusOrder) {
+  for (double ratio : {1.0, 3.0})
+    for (int n : {50, 200}) {
+      const Problem p = random_cluster(n, ratio, 2.5, 11);
+      auto dense = make_solver(far_field_options("dense"));
+      (void)dense->solve(p);
+      const auto beta = dense->warm_start().values;
+      for (int order = 2; order <= 12; ++order) {
+        const sh::FarFieldOptions fo{.order = order};
+        std::printf("N = %d, radius ratio %g, p = %d: %.3e\n", n, ratio, order, product_error(p, beta, &fo));
+      }
+    }
+}
+
+}  // namespace
+}  // namespace agglo::es
