@@ -61,6 +61,10 @@ struct Motion {
   void advance_exact_block(SampleSet& p, std::size_t begin, std::size_t end, const StepTrig& tr, double h) const;
   // The same step of sample i alone, written plainly (the tested reference of advance_exact_block).
   void advance_exact(SampleSet& p, std::size_t i, const StepTrig& tr, double h) const;
+  // The same step two samples at a time in SSE2 lanes (drag_pairs.cpp; the step used by advance):
+  // the reference's operations in the reference's order, so bit for bit advance_exact's results.
+  // Without sound or without C_I (not the default) it is advance_exact_block.
+  void advance_exact_pairs(SampleSet& p, std::size_t begin, std::size_t end, const StepTrig& tr, double h) const;
   void advance_explicit(SampleSet& p, std::size_t i, double t, double h) const;
   void wrap(SampleSet& p, std::size_t i) const;
 };

@@ -70,13 +70,17 @@ void Engine::compute_cells(std::size_t begin, std::size_t end) {
 bool Engine::state_ok(std::size_t begin, std::size_t end) const {
   // Branch-free form of check_state's tests: v - v is 0 for finite v and NaN otherwise, so the sum
   // `nf` is 0 iff everything is finite; x < L iff x - L < 0. A false alarm (none is expected) only
-  // costs a call of check_state.
+  // costs a call of check_state. The answer does not depend on the order of the sums, minima and maxima
+  // (a NaN or infinity makes nf NaN whatever the order), so the loop runs in SIMD lanes.
   const Domain& D = s_.motion.domain;
   const double Lx = D.L[0], Ly = D.L[1], Lz = D.L[2];
   double nf = 0.0, lo = 0.0, hi = -1.0;
+  const double *px = p_.x.data(), *py = p_.y.data(), *pz = p_.z.data();
+  const double *pvx = p_.vx.data(), *pvy = p_.vy.data(), *pvz = p_.vz.data(), *pw = p_.w.data(), *pm = p_.mass.data();
+#pragma omp simd reduction(+ : nf) reduction(min : lo) reduction(max : hi)
   for (std::size_t i = begin; i < end; ++i) {
-    const double x = p_.x[i], y = p_.y[i], z = p_.z[i], vx = p_.vx[i], vy = p_.vy[i], vz = p_.vz[i];
-    const double w = p_.w[i], m = p_.mass[i];
+    const double x = px[i], y = py[i], z = pz[i], vx = pvx[i], vy = pvy[i], vz = pvz[i];
+    const double w = pw[i], m = pm[i];
     nf += ((x - x) + (y - y)) + ((z - z) + (vx - vx)) + ((vy - vy) + (vz - vz)) + ((w - w) + (m - m));
     lo = std::min(lo, std::min(std::min(x, y), std::min(z, w)));
     hi = std::max(hi, std::max(std::max(x - Lx, y - Ly), z - Lz));
