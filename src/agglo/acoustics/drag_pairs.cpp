@@ -17,20 +17,26 @@ namespace agglo::acoustics {
 #if defined(__SSE2__)
 namespace {
 namespace pair_lanes {  // (named: unity batches join the anonymous namespaces of several files)
+// Forced inline: the helpers are compiled inside each target clone of advance_exact_pairs.
+#if defined(__GNUC__)
+#define AGGLO_LANES inline __attribute__((always_inline))
+#else
+#define AGGLO_LANES inline
+#endif
 using v2 = __m128d;  // two doubles; + - * / are the IEEE operations of the scalar code per lane
 
-inline v2 set1(double a) { return _mm_set1_pd(a); }
-inline v2 load(const std::vector<double>& a, std::size_t i) { return _mm_loadu_pd(a.data() + i); }
-inline void store(std::vector<double>& a, std::size_t i, v2 v) { _mm_storeu_pd(a.data() + i, v); }
-inline double lane(v2 v, int l) { return l == 0 ? _mm_cvtsd_f64(v) : _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)); }
-inline v2 with_lane(v2 v, int l, double a) {
+AGGLO_LANES v2 set1(double a) { return _mm_set1_pd(a); }
+AGGLO_LANES v2 load(const std::vector<double>& a, std::size_t i) { return _mm_loadu_pd(a.data() + i); }
+AGGLO_LANES void store(std::vector<double>& a, std::size_t i, v2 v) { _mm_storeu_pd(a.data() + i, v); }
+AGGLO_LANES double lane(v2 v, int l) { return l == 0 ? _mm_cvtsd_f64(v) : _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)); }
+AGGLO_LANES v2 with_lane(v2 v, int l, double a) {
   return l == 0 ? _mm_move_sd(v, _mm_set_sd(a)) : _mm_unpacklo_pd(v, _mm_set_sd(a));
 }
-inline v2 select(v2 mask, v2 a, v2 b) { return _mm_or_pd(_mm_and_pd(mask, a), _mm_andnot_pd(mask, b)); }
-inline v2 neg(v2 a) { return _mm_xor_pd(a, _mm_set1_pd(-0.0)); }  // -a (sign flip, as unary minus)
+AGGLO_LANES v2 select(v2 mask, v2 a, v2 b) { return _mm_or_pd(_mm_and_pd(mask, a), _mm_andnot_pd(mask, b)); }
+AGGLO_LANES v2 neg(v2 a) { return _mm_xor_pd(a, _mm_set1_pd(-0.0)); }  // -a (sign flip, as unary minus)
 
 // gas.hpp's detail_log on two lanes (the exponent as an exact double through 2^52 + e).
-inline v2 log2l(v2 x) {
+AGGLO_LANES v2 log2l(v2 x) {
   const __m128i b = _mm_castpd_si128(x);
   const __m128i eb = _mm_and_si128(_mm_srli_epi64(b, 52), _mm_set1_epi64x(0x7ff));
   v2 e = _mm_sub_pd(_mm_castsi128_pd(_mm_or_si128(eb, _mm_set1_epi64x(0x4330000000000000LL))),
@@ -48,7 +54,7 @@ inline v2 log2l(v2 x) {
 }
 
 // gas.hpp's detail_exp_small on two lanes: 2^n from the low bits of y log2(e) + 1.5 2^52, which hold n.
-inline v2 exp2l(v2 y) {
+AGGLO_LANES v2 exp2l(v2 y) {
   const v2 big = y * set1(1.4426950408889634) + set1(0x1.8p52);
   const v2 n = big - set1(0x1.8p52);
   const v2 r = (y - n * set1(0.6931471805599453)) - n * set1(2.3190468138462996e-17);
@@ -67,7 +73,7 @@ struct PairConst {
 
 // wave_phase of drag.cpp on samples i, i + 1: s0, c0 = sin, cos(omega t - k x). A lane whose cache
 // must be refilled is refilled by the scalar code first (its delta is then exactly 0, as there).
-inline void phase2(SampleSet& p, std::size_t i, const PairConst& c, v2& s0, v2& c0) {
+AGGLO_LANES void phase2(SampleSet& p, std::size_t i, const PairConst& c, v2& s0, v2& c0) {
   v2 dlt = c.k * (load(p.x, i) - load(p.x_ref, i));
   const v2 ok = _mm_cmple_pd(_mm_andnot_pd(set1(-0.0), dlt), set1(0.05));
   if (_mm_movemask_pd(ok) != 3)
@@ -92,7 +98,7 @@ inline void phase2(SampleSet& p, std::size_t i, const PairConst& c, v2& s0, v2& 
 }
 
 // Gas::inertia_correction_fast of two Reynolds numbers (lanes outside the polynomial's range by the scalar code).
-inline v2 ci2(v2 re) {
+AGGLO_LANES v2 ci2(v2 re) {
   const v2 inr = _mm_and_pd(_mm_cmpge_pd(re, set1(1e-30)), _mm_cmple_pd(re, set1(1e30)));  // also re > 0
   v2 ci = set1(1.0) + set1(0.15) * exp2l(set1(0.687) * log2l(select(inr, re, set1(1.0))));
   const int in = _mm_movemask_pd(inr);
@@ -103,13 +109,13 @@ inline v2 ci2(v2 re) {
 }
 
 // Gas::reynolds(|(gas velocity - v)|, d) with the slip components sx, vy, vz.
-inline v2 reynolds2(const Gas& gas, SampleSet& p, std::size_t i, v2 sx, v2 vy, v2 vz) {
+AGGLO_LANES v2 reynolds2(const Gas& gas, SampleSet& p, std::size_t i, v2 sx, v2 vy, v2 vz) {
   const v2 slip = _mm_sqrt_pd(sx * sx + vy * vy + vz * vz);
   return slip * load(p.d, i) * set1(gas.density) / set1(gas.viscosity);
 }
 
 // midstep_tau of drag.cpp on two lanes (exp(-h/(2 te)) from libm per lane, as there).
-inline v2 midstep2(const Motion& m, SampleSet& p, std::size_t i, const PairConst& c, v2 s0, v2 c0, v2 te,
+AGGLO_LANES v2 midstep2(const Motion& m, SampleSet& p, std::size_t i, const PairConst& c, v2 s0, v2 c0, v2 te,
                    const Motion::StepTrig& tr) {
   const v2 xh = set1(0.5) * c.h / te;
   const v2 Eh = _mm_set_pd(std::exp(-lane(xh, 1)), std::exp(-lane(xh, 0)));
@@ -124,7 +130,7 @@ inline v2 midstep2(const Motion& m, SampleSet& p, std::size_t i, const PairConst
 
 // tau_e = tau / C_I at the start-of-step slip (start_reynolds, Gas::inertia_correction_fast), with the
 // mid-step C_I (midstep_tau) of drag.cpp in lanes where C_I > 1.001.
-inline v2 tau_e2(const Motion& m, SampleSet& p, std::size_t i, const PairConst& c, v2 s0, v2 c0,
+AGGLO_LANES v2 tau_e2(const Motion& m, SampleSet& p, std::size_t i, const PairConst& c, v2 s0, v2 c0,
                  const Motion::StepTrig& tr) {
   const v2 ci = ci2(reynolds2(m.gas, p, i, c.A * s0 - load(p.vx, i), load(p.vy, i), load(p.vz, i)));
   const v2 te = load(p.tau, i) / ci;
@@ -134,8 +140,13 @@ inline v2 tau_e2(const Motion& m, SampleSet& p, std::size_t i, const PairConst& 
 }
 
 // decay of drag.cpp: E = exp(-h/te) and omE = 1 - E, E = 0 beyond h/te = 40, expm1 at or below 0.01.
-inline void decay2(v2 x, v2& E, v2& omE) {
+AGGLO_LANES void decay2(v2 x, v2& E, v2& omE) {
   const v2 far = _mm_cmpgt_pd(x, set1(40.0));
+  if (_mm_movemask_pd(far) == 3) {  // both beyond 40 (most fine solids at the default step)
+    E = set1(0.0);
+    omE = set1(1.0);
+    return;
+  }
   const v2 Ep = exp2l(neg(_mm_min_pd(x, set1(700.0))));
   E = select(far, set1(0.0), Ep);
   omE = select(far, set1(1.0), set1(1.0) - Ep);
@@ -151,7 +162,7 @@ inline void decay2(v2 x, v2& E, v2& omE) {
 
 // drift_correction of drag.cpp on two lanes (same expressions; G0 = 0.5 A A k / omega, AiwN = A / omega,
 // Ak = A k, hiw = 0.5 / omega).
-inline void drift2(const PairConst& c, v2 te, v2 iD, v2 E, v2 omE, v2 s0, v2 c0, v2 s1, v2 c1, v2 dv, v2& dx,
+AGGLO_LANES void drift2(const PairConst& c, v2 te, v2 iD, v2 E, v2 omE, v2 s0, v2 c0, v2 s1, v2 c1, v2 dv, v2& dx,
                    v2& dvx) {
   const v2 q = c.w * te;
   const v2 G = c.G0 * iD;
@@ -178,7 +189,7 @@ inline void drift2(const PairConst& c, v2 te, v2 iD, v2 E, v2 omE, v2 s0, v2 c0,
 }
 
 // exact_update and transverse_step of drag.cpp (sound on) on samples i, i + 1; wraps by the scalar code.
-inline void update2(const Motion& m, SampleSet& p, std::size_t i, const PairConst& c, v2 te, v2 E, v2 omE, v2 s0,
+AGGLO_LANES void update2(const Motion& m, SampleSet& p, std::size_t i, const PairConst& c, v2 te, v2 E, v2 omE, v2 s0,
                     v2 c0) {
   const v2 q = c.w * te, iD = set1(1.0) / (set1(1.0) + q * q), AD = c.A * iD;
   const v2 s1 = s0 * c.cwh + c0 * c.swh, c1 = c0 * c.cwh - s0 * c.swh;
@@ -206,9 +217,15 @@ inline void update2(const Motion& m, SampleSet& p, std::size_t i, const PairCons
   if (wr & 1) m.wrap(p, i);
   if (wr & 2) m.wrap(p, i + 1);
 }
+#undef AGGLO_LANES
 }  // namespace pair_lanes
 }  // namespace
 
+// With GCC on x86-64 the step is also compiled for AVX2 (three-operand VEX encoding, the same IEEE
+// operations: no FMA, so the same bits) and the loader picks that clone where the processor has it.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(AGGLO_NO_TARGET_CLONES)
+__attribute__((target_clones("avx2", "default")))
+#endif
 void Motion::advance_exact_pairs(SampleSet& p, std::size_t begin, std::size_t end, const StepTrig& tr,
                                  double h) const {
   const double A = sound.u_amp;
