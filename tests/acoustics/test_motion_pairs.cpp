@@ -1,6 +1,6 @@
-// The exact step two samples at a time (Motion::advance_exact_pairs, drag_pairs.cpp, the step the engine
-// uses) against its reference twin, the one-sample step Motion::advance_exact: every bit equal for a
-// population of mixed sizes (fine solids of the seed-002 lognormal, droplets, mixed particles),
+// The exact step several samples at a time (Motion::advance_exact_pairs, drag_pairs.cpp: AVX2 four-lane
+// and SSE2 two-lane, the step the engine uses) against its reference twin, the one-sample step
+// Motion::advance_exact: every bit equal for a population of mixed sizes (fine solids of the seed-002 lognormal, droplets, mixed particles),
 // through every branch (cache refills, C_I > 1.001, all three exp branches, wraps), odd counts,
 // and after coalescences that change sizes mid-run.
 #include <bit>
@@ -18,8 +18,9 @@ using namespace agglo::acoustics;
 
 namespace {
 
-Motion pair_motion(bool sound_on, bool ci) {
+Motion pair_motion(bool sound_on, bool ci, int lanes) {
   Motion m;
+  m.max_lanes = lanes;
   m.gas = Gas::air(298.15, 101325.0, true);
   m.sound = Sound::make(m.gas, sound_on, 140.0, 2000.0);
   m.domain.L[0] = m.gas.sound_speed / 2000.0;
@@ -73,11 +74,12 @@ SampleSet pair_population(const Motion& m, std::size_t n, std::uint64_t seed) {
 }  // namespace
 
 TEST(MotionPairs, EqualsOneSampleReferenceBitForBit) {
+  for (int lanes : {4, 2})
   for (bool sound_on : {true, false})
     for (bool ci : {true, false})
       for (double h : {1e-7, 5e-5, 2.5e-3})
         for (std::size_t n : {std::size_t{301}, std::size_t{64}}) {
-          const Motion m = pair_motion(sound_on, ci);
+          const Motion m = pair_motion(sound_on, ci, lanes);
           SampleSet fast = pair_population(m, n, 27 + n);
           SampleSet ref = fast;
           double t = 1.3e-4;
@@ -85,13 +87,15 @@ TEST(MotionPairs, EqualsOneSampleReferenceBitForBit) {
             const Motion::StepTrig tr = m.trig(t, h);
             m.advance_exact_pairs(fast, 1, fast.size(), tr, h);  // an odd start as in the engine's chunks
             for (std::size_t i = 1; i < ref.size(); ++i) m.advance_exact(ref, i, tr, h);
-            ASSERT_TRUE(same_state(fast, ref)) << "h = " << h << " step " << s << " sound " << sound_on << " C_I " << ci;
+            ASSERT_TRUE(same_state(fast, ref)) << "h = " << h << " step " << s << " sound " << sound_on << " C_I " << ci
+                                               << " lanes " << lanes;
           }
         }
 }
 
 TEST(MotionPairs, EqualsReferenceAfterMergesChangeSizes) {
-  const Motion m = pair_motion(true, true);
+  for (int lanes : {4, 2}) {
+  const Motion m = pair_motion(true, true, lanes);
   SampleSet fast = pair_population(m, 400, 5);
   std::mt19937_64 rng(9);
   const double h = 5e-5;
@@ -106,7 +110,8 @@ TEST(MotionPairs, EqualsReferenceAfterMergesChangeSizes) {
       const Motion::StepTrig tr = m.trig(t, h);
       m.advance_exact_pairs(fast, 0, fast.size(), tr, h);
       for (std::size_t i = 0; i < ref.size(); ++i) m.advance_exact(ref, i, tr, h);
-      ASSERT_TRUE(same_state(fast, ref)) << "round " << round << " step " << s;
+      ASSERT_TRUE(same_state(fast, ref)) << "round " << round << " step " << s << " lanes " << lanes;
     }
+  }
   }
 }
