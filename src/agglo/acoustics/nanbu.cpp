@@ -170,8 +170,8 @@ bool CellCollision::skip_to_passing_trial(std::size_t& a, double pe) {
     const double g = std::floor(std::log1p(-rng.uniform()) / std::log1p(-std::min(pe, 1.0 - 1e-16)));
     if (g < static_cast<double>(n - a)) skip = static_cast<std::size_t>(g);
   }
-  std::uint64_t live = 0;
-  for (const std::size_t stop = a + skip; a < stop; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
+  std::uint64_t live = count_positive(p.w.data(), idx, a, a + skip);
+  a += skip;
   if (a < n && p.w[idx[a]] > 0.0) ++live;
   if (live > 0) {
     st.particle_steps += live;
@@ -253,9 +253,7 @@ void CellCollision::run() {
 
 void collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
                   const CollisionContext& ctx, CollisionStats& st) {
-  std::size_t live = 0;
-  for (std::size_t a = 0; a < n; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
-  if (live < 2) return;
+  if (count_positive(p.w.data(), idx, 0, n) < 2) return;
   CellCollision(p, idx, n, cell, step, ctx, st).run();
 }
 
