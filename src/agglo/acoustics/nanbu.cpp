@@ -253,7 +253,9 @@ void CellCollision::run() {
 
 void collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
                   const CollisionContext& ctx, CollisionStats& st) {
-  if (count_positive(p.w.data(), idx, 0, n) < 2) return;
+  std::size_t live = 0;  // a cell needs two live samples: stop counting at the second
+  for (std::size_t a = 0; a < n && live < 2; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
+  if (live < 2) return;
   CellCollision(p, idx, n, cell, step, ctx, st).run();
 }
 
