@@ -12,7 +12,8 @@
 #   SCALES="1 9 100" (square numbers), T1=0.005, T2=0.025 (shipped step 5e-5 s: 100 and 500 steps),
 #   CALLGRIND=0 skips part 4 (needs valgrind), CG_T1=0.0025, CG_T2=0.005.
 #   BEFORE=REV (a commit, e.g. 7181dfe): part 4 also for agglo built from REV (a detached git worktree
-#   in OUT/before_src, built in OUT/before_build with ccache when present), printed before/after.
+#   in OUT/before_src, built in OUT/before_build with ccache when present; both kept for the next run:
+#   `git worktree remove OUT/before_src` when done), printed before/after.
 #   BEFORE_AGGLO=PATH: an agglo already built from REV (no rebuild). SCALES= (empty): parts 1-3 skipped.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
