@@ -85,7 +85,9 @@ AGGLO_AVX2_CLONES bool Engine::state_ok(std::size_t begin, std::size_t end) cons
   double nf = 0.0, lo = 0.0, hi = -1.0;
   const double *px = p_.x.data(), *py = p_.y.data(), *pz = p_.z.data();
   const double *pvx = p_.vx.data(), *pvy = p_.vy.data(), *pvz = p_.vz.data(), *pw = p_.w.data(), *pm = p_.mass.data();
+#if !defined(__clang__)  // (clang 14 cannot vectorize the min/max reductions and warns)
 #pragma omp simd reduction(+ : nf) reduction(min : lo) reduction(max : hi)
+#endif
   for (std::size_t i = begin; i < end; ++i) {
     const double x = px[i], y = py[i], z = pz[i], vx = pvx[i], vy = pvy[i], vz = pvz[i];
     const double w = pw[i], m = pm[i];
