@@ -11,11 +11,15 @@
 #   bench/dsmc_sample_cost.sh [AGGLO] [OUT_DIR]
 #   SCALES="1 9 100" (square numbers), T1=0.005, T2=0.025 (shipped step 5e-5 s: 100 and 500 steps),
 #   CALLGRIND=0 skips part 4 (needs valgrind), CG_T1=0.0025, CG_T2=0.005.
+#   BEFORE=REV (a commit, e.g. 7181dfe): part 4 also for agglo built from REV (a detached git worktree
+#   in OUT/before_src, built in OUT/before_build with ccache when present; both kept for the next run:
+#   `git worktree remove OUT/before_src` when done), printed before/after.
+#   BEFORE_AGGLO=PATH: an agglo already built from REV (no rebuild). SCALES= (empty): parts 1-3 skipped.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 AGGLO=${1:-$SRC/build/agglo}
 OUT=${2:-$SRC/results/bench_dsmc_sample_cost}
-SCALES=${SCALES:-"1 9 100"}
+SCALES=${SCALES-"1 9 100"}
 T1=${T1:-0.005}
 T2=${T2:-0.025}
 CALLGRIND=${CALLGRIND:-1}
@@ -38,6 +42,7 @@ opts() {
  --set population.0.samples=$((8243 * s)) --set population.1.samples=$((160 * s))"
 }
 
+if [ -n "$SCALES" ]; then
 table="$OUT/sample_cost.tsv"
 printf 'scale\tsamples\tcells\tT_s\twall_s\tuser_s\tpeak_rss_kB\n' > "$table"
 for s in $SCALES; do
@@ -84,19 +89,50 @@ for s in $(echo "$SCALES" | cut -d' ' -f1-2); do
   bytes=$(stat -c %s "$dir/checkpoint.bin")
   echo "checkpoint scale $s: $bytes bytes for $n samples = $(/usr/bin/python3 -c "print(f'{$bytes / $n:.1f}')") bytes per sample"
 done
+fi
 
-# 4. Instructions per sample per step by phase (callgrind, scale 1, one thread).
+# 4. Instructions per sample per step by phase (callgrind, scale 1, one thread), for AGGLO and, with
+# BEFORE, for agglo built from that commit.
 [ "$CALLGRIND" = 1 ] || exit 0
-for t in "$CG_T1" "$CG_T2"; do
-  # shellcheck disable=SC2046
-  valgrind --tool=callgrind --callgrind-out-file="$OUT/callgrind_$t.out" "$AGGLO" acoustic "$CASE" \
-    --out "$OUT/cg_$t" $(opts 1 "$t") > /dev/null 2> "$OUT/callgrind_$t.log"
-  callgrind_annotate --inclusive=yes --threshold=100 "$OUT/callgrind_$t.out" > "$OUT/callgrind_$t.txt" 2> /dev/null
-done
-/usr/bin/python3 - "$OUT" "$CG_T1" "$CG_T2" "$DT" <<'EOF'
+callgrind_runs() {  # callgrind_runs AGGLO DIR
+  local a=$1 d=$2 t
+  mkdir -p "$d"
+  for t in "$CG_T1" "$CG_T2"; do
+    # shellcheck disable=SC2046
+    valgrind --tool=callgrind --callgrind-out-file="$d/callgrind_$t.out" "$a" acoustic "$CASE" \
+      --out "$d/cg_$t" $(opts 1 "$t") > /dev/null 2> "$d/callgrind_$t.log"
+    callgrind_annotate --inclusive=yes --threshold=100 "$d/callgrind_$t.out" > "$d/callgrind_$t.txt" 2> /dev/null
+  done
+}
+dirs=("$OUT")
+labels=("after ($(git -C "$SRC" rev-parse --short HEAD 2>/dev/null || echo this build))")
+if [ -n "${BEFORE:-}" ]; then
+  bsrc="$OUT/before_src" bbuild="$OUT/before_build"
+  rev=$(git -C "$SRC" rev-parse --short "$BEFORE")
+  if [ -n "${BEFORE_AGGLO:-}" ]; then
+    mkdir -p "$bbuild" && ln -sf "$(realpath "$BEFORE_AGGLO")" "$bbuild/agglo" && echo "$rev" > "$bbuild/rev"
+  fi
+  if [ ! -x "$bbuild/agglo" ] || [ "$(cat "$bbuild/rev" 2>/dev/null)" != "$rev" ]; then
+    git -C "$SRC" worktree remove --force "$bsrc" 2> /dev/null || rm -rf "$bsrc"
+    git -C "$SRC" worktree add --detach "$bsrc" "$rev" > /dev/null
+    launcher=()
+    command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+    cmake -S "$bsrc" -B "$bbuild" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=/usr/bin/python3 \
+      "${launcher[@]}" > "$OUT/before_cmake.log"
+    cmake --build "$bbuild" --target agglo > "$OUT/before_build.log"
+    echo "$rev" > "$bbuild/rev"
+  fi
+  callgrind_runs "$bbuild/agglo" "$OUT/before"
+  dirs=("$OUT/before" "$OUT")
+  labels=("before ($rev)" "${labels[0]}")
+fi
+callgrind_runs "$AGGLO" "$OUT"
+/usr/bin/python3 - "$CG_T1" "$CG_T2" "$DT" "${#dirs[@]}" "${dirs[@]}" "${labels[@]}" <<'EOF'
 import json, re, sys
-out, a1, a2, dt = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
-phases = [  # (label, function name prefix in callgrind_annotate's inclusive listing)
+a1, a2, dt, k = sys.argv[1], sys.argv[2], float(sys.argv[3]), int(sys.argv[4])
+dirs, labels = sys.argv[5:5 + k], sys.argv[5 + k:5 + 2 * k]
+phases = [  # (label, function name prefix in callgrind_annotate's inclusive listing; None: the total)
+    ("whole program", None),
     ("motion (Motion::advance)", "agglo::acoustics::Motion::advance("),
     ("state check (Engine::state_ok)", "agglo::acoustics::Engine::state_ok("),
     ("cell index (Engine::compute_cells)", "agglo::acoustics::Engine::compute_cells("),
@@ -104,7 +140,7 @@ phases = [  # (label, function name prefix in callgrind_annotate's inclusive lis
     ("collisions (Engine::collide_pass)", "agglo::acoustics::Engine::collide_pass("),
     ("output rows (Observer::observe)", "agglo::acoustics::(anonymous namespace)::Observer::observe("),
 ]
-def load(t):
+def load(out, t):
     tot, inc = 0, {}
     for line in open(f"{out}/callgrind_{t}.txt"):
         m = re.match(r"\s*([\d,]+) \(\s*[\d.]+%\)\s+(.*)$", line)
@@ -117,15 +153,20 @@ def load(t):
             name = rest.split(":", 1)[1]
             inc[name] = max(inc.get(name, 0), n)
     return tot, inc
-def get(inc, key):  # largest inclusive count of the function (its OpenMP clone is inside it)
+def get(inc, key):  # largest inclusive count of the function (its OpenMP and AVX2 clones are inside it)
     return max([v for k, v in inc.items() if k.startswith(key)] or [0])
-(ta, ia), (tb, ib) = load(a1), load(a2)
-n = json.load(open(f"{out}/cg_{a2}/summary.json"))["samples"]
 steps = round((float(a2) - float(a1)) / dt)
-per = lambda a, b: (b - a) / (n * steps)
+cols = []
+for out in dirs:
+    (ta, ia), (tb, ib) = load(out, a1), load(out, a2)
+    n = json.load(open(f"{out}/cg_{a2}/summary.json"))["samples"]
+    cols.append([((tb - ta) if key is None else (get(ib, key) - get(ia, key))) / (n * steps) for _, key in phases])
 print(f"callgrind, {n} samples, steps {round(float(a1) / dt)} -> {round(float(a2) / dt)}: "
       "instructions per sample per step (inclusive)")
-print(f"  whole program: {per(ta, tb):.0f}")
-for label, key in phases:
-    print(f"  {label}: {per(get(ia, key), get(ib, key)):.0f}")
+w = max(len(p[0]) for p in phases) + 2
+print(" " * w + "".join(f"{l:>22}" for l in labels) + ("   before/after" if k == 2 else ""))
+for r, (label, _) in enumerate(phases):
+    vals = "".join(f"{c[r]:>22.0f}" for c in cols)
+    ratio = f"   {cols[0][r] / cols[1][r]:.2f}x" if k == 2 and cols[1][r] > 0 else ""
+    print(f"  {label:<{w - 2}}{vals}{ratio}")
 EOF

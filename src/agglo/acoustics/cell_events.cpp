@@ -36,7 +36,8 @@ Vec3 contact_normal(const Vec3& G, CounterRng& rng) {
 CellEvents::CellEvents(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_, const CollisionContext& ctx_,
                        CollisionStats& st_, CounterRng& rng_)
     : p(p_), idx(idx_), n(n_), ctx(ctx_), st(st_), rng(rng_), oc(*ctx_.outcomes) {
-  if (oc.energy_compensation && !oc.always_coalesce)  // debts are only paid back at rebounds
+  // debts are only paid back at rebounds; most cells have none (count_positive: SIMD lanes)
+  if (oc.energy_compensation && !oc.always_coalesce && count_positive(p.debt.data(), idx, 0, n) > 0)
     for (std::size_t a = 0; a < n; ++a)
       if (p.debt[idx[a]] > 0.0) debtors.push_back(idx[a]);
 }

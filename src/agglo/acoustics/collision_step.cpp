@@ -28,4 +28,13 @@ void CollisionStats::add(const CollisionStats& o) {
   table_clamped += o.table_clamped;
 }
 
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(AGGLO_NO_AVX2)
+__attribute__((target_clones("avx2", "default")))
+#endif
+std::size_t count_positive(const double* v, const std::uint32_t* idx, std::size_t begin, std::size_t end) {
+  std::size_t k = 0;
+  for (std::size_t a = begin; a < end; ++a) k += v[idx[a]] > 0.0 ? 1 : 0;
+  return k;
+}
+
 }  // namespace agglo::acoustics

@@ -53,6 +53,10 @@ struct CollisionContext {
   std::uint64_t max_subcycles = 100000;
 };
 
+// Number of a in [begin, end) with v[idx[a]] > 0 (live samples by weight, debtors by debt): an integer
+// sum, so it runs in SIMD lanes (AVX2 gathers where the processor has them, with GCC on x86-64).
+std::size_t count_positive(const double* v, const std::uint32_t* idx, std::size_t begin, std::size_t end);
+
 // Centre distance of samples i and j under the minimum-image convention of the periodic box [m].
 inline double pair_distance(const SampleSet& p, std::size_t i, std::size_t j, const Domain& D) {
   const auto image = [](double d, double L) { return d - L * std::nearbyint(d / L); };

@@ -242,7 +242,7 @@ void Motion::advance(SampleSet& p, std::size_t begin, std::size_t end, double t,
     const double hs = h / substeps;
     for (int s = 0; s < substeps; ++s) {
       const StepTrig tr = trig(t + s * hs, hs);
-      advance_exact_block(p, begin, end, tr, hs);
+      advance_exact_pairs(p, begin, end, tr, hs);
     }
     return;
   }

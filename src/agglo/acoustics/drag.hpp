@@ -42,6 +42,9 @@ struct Motion {
   Domain domain;
   Integrator integrator = Integrator::exact;
   bool inertia_correction = true;
+  // Widest SIMD step advance_exact_pairs may use: 4 (AVX2 where the processor has it) or 2 (SSE2 only;
+  // the tests check both against the reference).
+  int max_lanes = 4;
 
   // Effective relaxation time tau/C_I of sample i for its current slip at time t.
   double effective_tau(const SampleSet& p, std::size_t i, double t) const;
@@ -61,6 +64,11 @@ struct Motion {
   void advance_exact_block(SampleSet& p, std::size_t begin, std::size_t end, const StepTrig& tr, double h) const;
   // The same step of sample i alone, written plainly (the tested reference of advance_exact_block).
   void advance_exact(SampleSet& p, std::size_t i, const StepTrig& tr, double h) const;
+  // The same step four samples at a time in AVX2 lanes (where the processor has them), then two in
+  // SSE2 lanes (drag_pairs.cpp, drag_lanes.inc; the step used by advance): the reference's operations
+  // in the reference's order, so bit for bit advance_exact's results. Without sound or without C_I (not
+  // the default) it is advance_exact_block.
+  void advance_exact_pairs(SampleSet& p, std::size_t begin, std::size_t end, const StepTrig& tr, double h) const;
   void advance_explicit(SampleSet& p, std::size_t i, double t, double h) const;
   void wrap(SampleSet& p, std::size_t i) const;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -16,31 +17,39 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
                        const Gas& gas) {
   CellBounds cb;
   cb.need_cbar = k.needs_thermal_speed();
+  // Same maxima as calling cb.include for every live sample: the size maxima and the mean velocity in
+  // one pass, the largest squared speed deviation from the mean in a second (sqrt once at the end: it is
+  // monotone, so sqrt of the largest square is the value include() would have kept). The thermal speed
+  // sqrt(8 k T / (pi m)) is non-increasing in m under correctly rounded division and sqrt, so its largest
+  // value is that of the lightest live sample: one sqrt per cell instead of one per sample.
   double sw = 0.0, mx = 0.0, my = 0.0, mz = 0.0;
+  double d_max = 0.0, vol_max = 0.0, dl_max = 0.0, ccd_max = 0.0, w_max = 0.0, s2_max = 0.0;
+  double m_min = std::numeric_limits<double>::infinity();
+  const double *vx = p.vx.data(), *vy = p.vy.data(), *vz = p.vz.data(), *w = p.w.data(), *d = p.d.data();
+  const double *dl = p.dl.data(), *ccd = p.ccd.data(), *mass = p.mass.data();
   for (std::size_t a = 0; a < n; ++a) {
     const std::size_t i = idx[a];
-    if (p.w[i] <= 0.0) continue;
-    mx += p.vx[i];
-    my += p.vy[i];
-    mz += p.vz[i];
+    if (w[i] <= 0.0) continue;
+    mx += vx[i];
+    my += vy[i];
+    mz += vz[i];
     sw += 1.0;
+    d_max = std::max(d_max, d[i]);
+    dl_max = std::max(dl_max, dl[i]);
+    ccd_max = std::max(ccd_max, ccd[i]);
+    w_max = std::max(w_max, w[i]);
+    m_min = std::min(m_min, mass[i]);
   }
   if (sw > 0.0) {
     cb.vref[0] = mx / sw;
     cb.vref[1] = my / sw;
     cb.vref[2] = mz / sw;
   }
-  // Same maxima as calling cb.include for every live sample, in one pass (sqrt once at the end:
-  // it is monotone, so sqrt of the largest square is the value include() would have kept).
-  double d_max = 0.0, vol_max = 0.0, dl_max = 0.0, ccd_max = 0.0, w_max = 0.0, s2_max = 0.0;
+  const double rx = cb.vref[0], ry = cb.vref[1], rz = cb.vref[2];
   for (std::size_t a = 0; a < n; ++a) {
     const std::size_t i = idx[a];
-    if (p.w[i] <= 0.0) continue;
-    d_max = std::max(d_max, p.d[i]);
-    dl_max = std::max(dl_max, p.dl[i]);
-    ccd_max = std::max(ccd_max, p.ccd[i]);
-    w_max = std::max(w_max, p.w[i]);
-    const double ex = p.vx[i] - cb.vref[0], ey = p.vy[i] - cb.vref[1], ez = p.vz[i] - cb.vref[2];
+    if (w[i] <= 0.0) continue;
+    const double ex = vx[i] - rx, ey = vy[i] - ry, ez = vz[i] - rz;
     s2_max = std::max(s2_max, ex * ex + ey * ey + ez * ez);
   }
   if (k.needs_volume())  // vol_max is used by the additive kernel only
@@ -53,9 +62,7 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
   cb.w_max = w_max;
   cb.speed_dev2_max = s2_max;
   cb.speed_dev_max = s2_max > 0.0 ? std::sqrt(s2_max) : 0.0;
-  if (cb.need_cbar)
-    for (std::size_t a = 0; a < n; ++a)
-      if (p.w[idx[a]] > 0.0) cb.cbar_max = std::max(cb.cbar_max, thermal_speed(gas, p.mass[idx[a]]));
+  if (cb.need_cbar && sw > 0.0) cb.cbar_max = std::max(cb.cbar_max, thermal_speed(gas, m_min));
   return cb;
 }
 
@@ -163,8 +170,8 @@ bool CellCollision::skip_to_passing_trial(std::size_t& a, double pe) {
     const double g = std::floor(std::log1p(-rng.uniform()) / std::log1p(-std::min(pe, 1.0 - 1e-16)));
     if (g < static_cast<double>(n - a)) skip = static_cast<std::size_t>(g);
   }
-  std::uint64_t live = 0;
-  for (const std::size_t stop = a + skip; a < stop; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
+  std::uint64_t live = count_positive(p.w.data(), idx, a, a + skip);
+  a += skip;
   if (a < n && p.w[idx[a]] > 0.0) ++live;
   if (live > 0) {
     st.particle_steps += live;
@@ -246,8 +253,8 @@ void CellCollision::run() {
 
 void collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
                   const CollisionContext& ctx, CollisionStats& st) {
-  std::size_t live = 0;
-  for (std::size_t a = 0; a < n; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
+  std::size_t live = 0;  // a cell needs two live samples: stop counting at the second
+  for (std::size_t a = 0; a < n && live < 2; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
   if (live < 2) return;
   CellCollision(p, idx, n, cell, step, ctx, st).run();
 }
