@@ -9,7 +9,13 @@ DEM="$SRC/cases/seed000_neutral_tetrahedron.toml"
 SHORT=(--set time.after_contact=2e-5 --set output.snapshot_interval=1e-5)
 ASHORT=(--set time.end=0.001 --set "output.psd_times=[0.0,0.001]" --set "output.snapshot_times=[0.0]")
 
-$A -q --no-plots collide "$DEM" --out "$T/c" "${SHORT[@]}" > /dev/null 2>&1 || fail "collide"
+# NetCDF is loaded on first use (io/netcdf_library.hpp): a process that writes no results.nc does not load
+# it (the dynamic loader's own trace), one that writes results.nc does (negative control of the grep).
+LD_DEBUG=libs $A --version > /dev/null 2> "$T/ld_version.txt" || fail "--version"
+grep -q "libnetcdf" "$T/ld_version.txt" && fail "agglo --version loaded libnetcdf"
+grep -q "libc.so" "$T/ld_version.txt" || fail "LD_DEBUG=libs printed no trace (check not effective)"
+LD_DEBUG=libs $A -q --no-plots collide "$DEM" --out "$T/c" "${SHORT[@]}" > /dev/null 2> "$T/ld_collide.txt" || fail "collide"
+grep -q "libnetcdf" "$T/ld_collide.txt" || fail "collide wrote results.nc without loading libnetcdf?"
 $A -q --no-plots acoustic "$AC" --out "$T/a" "${ASHORT[@]}" > /dev/null 2>&1 || fail "acoustic"
 for f in c/results.nc c/timeseries.csv c/result.json a/results.nc a/efficiency.csv a/psd.csv a/summary.json; do
   [ -s "$T/$f" ] || fail "default format: $f missing"

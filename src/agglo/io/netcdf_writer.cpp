@@ -1,7 +1,6 @@
 #include "agglo/io/netcdf_writer.hpp"
 
 #include <fmt/format.h>
-#include <netcdf.h>
 #include <sys/statvfs.h>
 #include <unistd.h>
 
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "agglo/core/cancel.hpp"
+#include "agglo/io/netcdf_library.hpp"
 
 namespace agglo::io {
 
@@ -34,7 +34,7 @@ struct Check {
     if (status == NC_NOERR) return;
     if (status > 0) throw output_error(file, status);
     if (disk_unusable(file)) throw output_error(file, ENOSPC);
-    throw std::runtime_error(fmt::format("cannot write {}: {}: {}", file.string(), what, nc_strerror(status)));
+    throw std::runtime_error(fmt::format("cannot write {}: {}: {}", file.string(), what, netcdf().strerror(status)));
   }
 };
 
@@ -79,19 +79,19 @@ void put_attribute(const Check& ok, int nc, int var, const std::string& key, con
   const std::string what = fmt::format("attribute {}", key);
   if (v.is_string()) {
     const auto& s = v.get_ref<const std::string&>();
-    ok(nc_put_att_text(nc, var, key.c_str(), s.size(), s.c_str()), what);
+    ok(netcdf().put_att_text(nc, var, key.c_str(), s.size(), s.c_str()), what);
   } else if (v.is_boolean() || v.is_number_integer()) {
     const long long x = v.is_boolean() ? (v.get<bool>() ? 1 : 0) : v.get<long long>();
-    ok(nc_put_att_longlong(nc, var, key.c_str(), NC_INT64, 1, &x), what);
+    ok(netcdf().put_att_longlong(nc, var, key.c_str(), NC_INT64, 1, &x), what);
   } else if (v.is_number()) {
     const double x = v.get<double>();
-    ok(nc_put_att_double(nc, var, key.c_str(), NC_DOUBLE, 1, &x), what);
+    ok(netcdf().put_att_double(nc, var, key.c_str(), NC_DOUBLE, 1, &x), what);
   } else if (all_numbers(v) && all_integers(v)) {
     const auto x = v.get<std::vector<long long>>();
-    ok(nc_put_att_longlong(nc, var, key.c_str(), NC_INT64, x.size(), x.data()), what);
+    ok(netcdf().put_att_longlong(nc, var, key.c_str(), NC_INT64, x.size(), x.data()), what);
   } else if (all_numbers(v)) {
     const auto x = v.get<std::vector<double>>();
-    ok(nc_put_att_double(nc, var, key.c_str(), NC_DOUBLE, x.size(), x.data()), what);
+    ok(netcdf().put_att_double(nc, var, key.c_str(), NC_DOUBLE, x.size(), x.data()), what);
   } else {
     put_attribute(ok, nc, var, key, nlohmann::json(v.dump()));
   }
@@ -106,7 +106,7 @@ std::vector<int> define(const Check& ok, int nc, const Dataset& d) {
   std::vector<int> dim_ids;
   for (const auto& [name, len] : d.dims) {
     int id = 0;  // a dimension of length 0 becomes unlimited (NC_UNLIMITED == 0) and stays empty
-    ok(nc_def_dim(nc, name.c_str(), len, &id), fmt::format("dimension {}", name));
+    ok(netcdf().def_dim(nc, name.c_str(), len, &id), fmt::format("dimension {}", name));
     dim_ids.push_back(id);
   }
   std::vector<int> var_ids;
@@ -116,7 +116,7 @@ std::vector<int> define(const Check& ok, int nc, const Dataset& d) {
       for (std::size_t k = 0; k < d.dims.size(); ++k)
         if (d.dims[k].first == dn) dims.push_back(dim_ids[k]);
     int id = 0;
-    ok(nc_def_var(nc, v.name.c_str(), v.integer ? NC_INT64 : NC_DOUBLE, static_cast<int>(dims.size()), dims.data(),
+    ok(netcdf().def_var(nc, v.name.c_str(), v.integer ? NC_INT64 : NC_DOUBLE, static_cast<int>(dims.size()), dims.data(),
                   &id),
        fmt::format("variable {}", v.name));
     put_attribute(ok, nc, id, "units", v.units);
@@ -136,9 +136,9 @@ void write_values(const Check& ok, int nc, const Dataset& d, const std::vector<i
     const std::string what = fmt::format("values of {}", v.name);
     if (v.integer) {
       std::vector<long long> x(v.ints.begin(), v.ints.end());
-      ok(nc_put_var_longlong(nc, ids[k], x.data()), what);
+      ok(netcdf().put_var_longlong(nc, ids[k], x.data()), what);
     } else {
-      ok(nc_put_var_double(nc, ids[k], v.reals.data()), what);
+      ok(netcdf().put_var_double(nc, ids[k], v.reals.data()), what);
     }
   }
 }
@@ -161,12 +161,12 @@ void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& nam
   const WriteCancelScope live;  // results flushed after an interruption are written whole
   const std::lock_guard lock(netcdf_library_mutex());
   try {
-    ok(nc_create(tmp.c_str(), NC_NETCDF4 | NC_CLOBBER, &nc), "create");
+    ok(netcdf().create(tmp.c_str(), NC_NETCDF4 | NC_CLOBBER, &nc), "create");
     const auto ids = define(ok, nc, d);
     put_attributes(ok, nc, NC_GLOBAL, extra_attributes);
-    ok(nc_enddef(nc), "end of definitions");
+    ok(netcdf().enddef(nc), "end of definitions");
     write_values(ok, nc, d, ids);
-    const int status = nc_close(nc);
+    const int status = netcdf().close(nc);
     nc = -1;
     ok(status, "close");
   } catch (const OutputError&) {
@@ -176,7 +176,7 @@ void write_netcdf(const OutputDir& out, const Dataset& d, const std::string& nam
     std::filesystem::remove(tmp, ec);
     throw;
   } catch (...) {
-    if (nc >= 0) nc_abort(nc);
+    if (nc >= 0) netcdf().abort(nc);
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
     throw;
