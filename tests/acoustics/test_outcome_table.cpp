@@ -356,7 +356,8 @@ TEST(OutcomeTable, CaseFileSelectsAndRefuses) {
   brk.p_break.assign(brk.p_break.size(), 0.2);
   const std::string breaking = write_table(brk, "break").string();
   refused(fmt::format("dry_model = \"table\"\ntable = \"{}\"", breaking),
-          "key 'outcomes.table' = \"" + breaking + "\": P_break reaches 0.2, but breakage");
+          "key 'outcomes.table' = \"" + breaking + "\": not an outcome table (docs/acoustics.md §1.7): p_break at node 0 "
+          "= 0.2 > 0, but no variable 'fragments'");
   refused("dry_model = \"table\"", "key 'outcomes.table'");
   refused(fmt::format("table = \"{}\"", good), "is read only with outcomes.dry_model = \"table\"");
   refused("dry_model = \"table\"\ntable = \"/nonexistent/t.nc\"", "cannot read /nonexistent/t.nc");
