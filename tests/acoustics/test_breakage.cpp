@@ -13,14 +13,13 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "agglo/acoustics/fragments.hpp"
 #include "agglo/acoustics/merge.hpp"
 #include "agglo/acoustics/outcome_table.hpp"
 #include "agglo/core/error.hpp"
-#include "agglo/io/netcdf_writer.hpp"
 #include "helpers.hpp"
+#include "outcome_table_helpers.hpp"
 
 using namespace agglo;
 using namespace agglo::acoustics;
@@ -171,52 +170,15 @@ TEST(Breakage, FragmentStatisticsAreConditionalMeans) {
 
 namespace {
 
-// The folders the tests write their tables into, removed when the test program ends.
-struct BreakageFolders {
-  std::vector<fs::path> made;
-  ~BreakageFolders() {
-    std::error_code ec;
-    for (const auto& d : made) fs::remove_all(d, ec);
-  }
-};
-
 fs::path breakage_table_file(const OutcomeTable& t, const std::string& name) {
-  static BreakageFolders folders;
-  const fs::path dir = fs::temp_directory_path() / fmt::format("agglo_breakage_{}_{}", name, ::getpid());
-  fs::create_directories(dir);
-  folders.made.push_back(dir);
-  io::write_netcdf(OutputDir(dir), outcome_table_dataset(t), "table.nc");
-  return dir / "table.nc";
+  return test::write_table_dataset(outcome_table_dataset(t), "breakage_" + name);
 }
 
-// The coagulation box with one monodisperse solid population of 1 um and the constant kernel K = 1/N0
-// (tau = K N0 t = t), 4000 samples of weight 2^20, steps of tau = 0.01.
-constexpr double kBreakN0 = 1048576.0 * 4000.0;
+using test::kMonoN0;
 
+// The constant-kernel box (outcome_table_helpers.hpp) with the dry outcome table `table`.
 std::string breakage_case(std::uint64_t seed, const std::string& table, double end) {
-  return fmt::format(R"(
-seed = {}
-{}
-[time]
-end = {}
-collision_dt = 0.01
-integrator = "none"
-[[population]]
-name = "mono"
-phase = "solid"
-distribution = "monodisperse"
-diameter = 1e-6
-number_concentration = {}
-samples = 4000
-[kernels]
-model = "constant"
-constant_coefficient = {}
-[outcomes]
-energy_compensation = false
-dry_model = "table"
-table = "{}"
-)",
-                     seed, test::kCoagulationBox, end, kBreakN0, 1.0 / kBreakN0, table);
+  return test::constant_kernel_case(seed, fmt::format("dry_model = \"table\"\ntable = \"{}\"", table), end);
 }
 
 void run_to_end(Engine& e) {
@@ -229,9 +191,9 @@ void run_to_end(Engine& e) {
 // N_f - 2, so dN/dt = (N_f - 2) K N^2 / 2 and N(t) = N0 / (1 - (N_f - 2) K N0 t / 2). N_f = 2.5 to tau = 1
 // (N = 4/3 N0): 8 seeds of 4000 samples; the seed mean of N/N_exact within 3 standard errors (from the seeds)
 // plus 0.5 % (the method's bias at this step, as for coalescence, test_outcome_table.cpp), and the
-// prediction with 4 % more fragments per break, N_f = 2.6 (N = 1.43 N0, the negative control), excluded. Mass and momentum of
-// every run are those at the start to rounding. The samples get velocities (the box has no gas motion,
-// and integrator = "none" leaves them), so that the momentum is not trivially 0.
+// prediction with 4 % more fragments per break, N_f = 2.6 (N = 1.43 N0, the negative control), excluded.
+// Mass and momentum of every run are those at the start to rounding. The samples get velocities (the box
+// has no gas motion, and integrator = "none" leaves them), so that the momentum is not trivially 0.
 TEST(Breakage, NumberFollowsTheFragmentNumberAndMassAndMomentumAreConserved) {
   const double nf = 2.5, tau = 1.0;
   const std::string table = breakage_table_file(constant_break_table(0.0, 1.0, {nf, 0.6}), "all").string();
@@ -256,13 +218,10 @@ TEST(Breakage, NumberFollowsTheFragmentNumberAndMassAndMomentumAreConserved) {
     EXPECT_EQ(p.size(), 4000u);  // the sample count stays
     mass_err = std::max(mass_err, std::abs(total_mass(p) - mass0) / mass0);
     mom_err = std::max(mom_err, norm(momentum(p) - mom0) / scale);
-    ratio.push_back(total_number(p) / (kBreakN0 / (1.0 - (nf - 2.0) * tau / 2.0)));
+    ratio.push_back(total_number(p) / (kMonoN0 / (1.0 - (nf - 2.0) * tau / 2.0)));
   }
-  double m = 0.0, s = 0.0;
-  for (double r : ratio) m += r;
-  m /= static_cast<double>(ratio.size());
-  for (double r : ratio) s += (r - m) * (r - m);
-  const double se = std::sqrt(s / static_cast<double>(ratio.size() - 1) / static_cast<double>(ratio.size()));
+  const test::SeedMeanSe r = test::seed_mean_se(ratio);
+  const double m = r.mean, se = r.se;
   const double control = (1.0 - (nf - 2.0) * tau / 2.0) / (1.0 - (nf + 0.1 - 2.0) * tau / 2.0);  // N_f = 2.6
   std::printf("N_f = %.1f: N/N_exact = %.5f +- %.5f (8 seeds); N_f = 2.6 predicts %.4f; largest relative change "
               "of mass %.2e, of momentum %.2e (of sum w m |v|)\n", nf, m, se, control, mass_err, mom_err);
@@ -305,40 +264,7 @@ namespace {
 
 // Solid spheres of 1 and 10 um (1000 samples each) in a 140 dB, 2 kHz wave, 100 cells, 30 steps of 1e-4 s,
 // constant kernel: dry pairs meet at 0-0.7 m/s.
-std::string zero_break_case() {
-  return R"(
-seed = 3
-[gas]
-gravity = false
-[sound]
-level_db = 140
-frequency_hz = 2000
-[domain]
-cells_x = 100
-[time]
-end = 0.003
-collision_dt = 1e-4
-[[population]]
-name = "fine"
-phase = "solid"
-distribution = "monodisperse"
-diameter = 1e-6
-number_concentration = 1e12
-samples = 1000
-[[population]]
-name = "coarse"
-phase = "solid"
-distribution = "monodisperse"
-diameter = 10e-6
-number_concentration = 1e12
-samples = 1000
-[kernels]
-model = "constant"
-constant_coefficient = 3e-10
-[outcomes]
-energy_compensation = true
-)";
-}
+std::string zero_break_case() { return test::two_size_wave_case(3, 1000, 0.003, 3e-10, true); }
 
 // FNV-1a over the bytes of the samples' state and the outcome counters.
 std::uint64_t state_hash(const Engine& e) {

@@ -89,7 +89,8 @@ void CellEvents::compensate(std::size_t i, std::size_t j) {
 // outcome table with one uniform u: sticks if u < P_stick, breaks if u < P_stick + P_break, else bounces.
 CollisionOutcome CellEvents::dry_outcome(std::size_t i, std::size_t j, double gn) {
   if (oc.dry_model == DryModel::critical_velocity)
-    return gn <= critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j]) ? CollisionOutcome::stick : CollisionOutcome::bounce;
+    return gn <= critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j]) ? CollisionOutcome::stick
+                                                                                : CollisionOutcome::bounce;
   const OutcomeProbabilities pr = oc.dry_table->at(gn, p.d[i], p.d[j]);
   ++st.table_queries;
   if (pr.clamped) ++st.table_clamped;
