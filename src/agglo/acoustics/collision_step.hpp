@@ -2,7 +2,7 @@
 // What the collision step of one cell needs and what it reports, whichever selection algorithm
 // picks the colliding pairs (time.selection: nanbu.hpp, Zhao et al.'s method; binned.hpp).
 // Both realise the same pair rate (decision, see docs/acoustics.md): a collision event of samples
-// i and j consumes min(w_i, w_j) real pairs (weighted rules, merge.hpp), and events of an unordered
+// i and j consumes min(w_i, w_j) real pairs (weighted rules, merge.hpp, fragments.hpp), and events of an unordered
 // pair happen at rate beta_ij max(w_i, w_j) / V_c, so real collisions happen at beta_ij w_i w_j / V_c.
 #include <cmath>
 #include <cstdint>
