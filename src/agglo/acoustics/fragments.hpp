@@ -21,7 +21,8 @@
 // v_cm, so mass and momentum W M v_cm = W (m_i v_i + m_j v_j) are those of the W pairs, exactly up to
 // rounding, as in coalescence. The number of real particles goes from 2 W to W N_f in expectation:
 // W + E[R(W (N_f - 1))] = W N_f, and f_L W / f_L + (1 - f_L) W (N_f - 1) / (1 - f_L) = W N_f; per event
-// it is an integer (weights stay integer-valued) within one of that. The mass carried by each class is
+// it is an integer (weights stay integer-valued): within one of W N_f for equal weights, the rounded
+// count of the drawn class (W / f_L or W (N_f - 1) / (1 - f_L)) for unequal ones. The mass carried by each class is
 // right per event (equal weights) or in expectation (unequal: f_L of W M in the largest class); per event
 // the fragment mass of an unequal-weight break deviates from f_L M (or the others' mass) by the rounding
 // of c, at most a factor (c + 1) / c. Kinetic energy of the relative motion is lost, as in coalescence.
