@@ -180,7 +180,8 @@ TEST(OutcomesByPair, CountsAddUpToTheCollisionsAndFractionsToOne) {
 }
 
 // With a dry outcome table of P_break = 0.5 (fragment statistics N_f = 3, f_L = 0.5) the dry pairs break:
-// the counts reach outcomes_by_pair.csv (and so results.nc) and run.log, and still add up.
+// the counts reach outcomes_by_pair.csv (and so results.nc) and run.log, still add up, and are the same
+// at any thread count.
 TEST(OutcomesByPair, DryBreakagesAreCounted) {
   AcousticCase c = test::parse_case(pair_case());
   auto t = std::make_shared<OutcomeTable>();
@@ -206,6 +207,11 @@ TEST(OutcomesByPair, DryBreakagesAreCounted) {
   EXPECT_EQ(n[dry], column(tb, "stuck").ints[dry] + column(tb, "bounced").ints[dry] + broke[dry]);
   EXPECT_NE(o.log.find(fmt::format("dry: {}: ", n[dry])), std::string::npos) << o.log;
   EXPECT_NE(o.log.find(fmt::format(" / {} (", broke[dry])), std::string::npos) << o.log;
+  // The same outcomes and PSD on one thread (each cell draws from its own counter-based stream).
+  const AcousticObservations o1 = run_case(c, 1);
+  const auto ts1 = writers::acoustic_tables(o1);
+  EXPECT_EQ(csv_of(table(ts1, "outcomes_by_pair.csv")), csv_of(tb));
+  EXPECT_EQ(csv_of(table(ts1, "efficiency.csv")), csv_of(table(ts, "efficiency.csv")));
 }
 
 TEST(OutcomesByPair, SameAfterARestartAndAtAnyThreadCount) {
