@@ -181,7 +181,7 @@ TEST(OutcomesByPair, CountsAddUpToTheCollisionsAndFractionsToOne) {
 
 // With a dry outcome table of P_break = 0.5 (fragment statistics N_f = 3, f_L = 0.5) the dry pairs break:
 // the counts reach outcomes_by_pair.csv (and so results.nc) and run.log, still add up, and are the same
-// at any thread count.
+// at any thread count and after a restart.
 TEST(OutcomesByPair, DryBreakagesAreCounted) {
   AcousticCase c = test::parse_case(pair_case());
   auto t = std::make_shared<OutcomeTable>();
@@ -212,6 +212,13 @@ TEST(OutcomesByPair, DryBreakagesAreCounted) {
   const auto ts1 = writers::acoustic_tables(o1);
   EXPECT_EQ(csv_of(table(ts1, "outcomes_by_pair.csv")), csv_of(tb));
   EXPECT_EQ(csv_of(table(ts1, "efficiency.csv")), csv_of(table(ts, "efficiency.csv")));
+  // And after a restart from the checkpoint of step 30.
+  std::string payload;
+  run_case(c, 2, nullptr, &payload);
+  ASSERT_FALSE(payload.empty());
+  const auto tr = writers::acoustic_tables(run_case(c, 1, &payload));
+  EXPECT_EQ(csv_of(table(tr, "outcomes_by_pair.csv")), csv_of(tb));
+  EXPECT_EQ(csv_of(table(tr, "efficiency.csv")), csv_of(table(ts, "efficiency.csv")));
 }
 
 TEST(OutcomesByPair, SameAfterARestartAndAtAnyThreadCount) {
