@@ -99,6 +99,13 @@ TEST(Breakage, EqualWeightsGiveTheLargestAndTheOtherFragments) {
       EXPECT_NEAR(p.rho[s], m.mass / (m.vol_s + m.vol_l), 1e-12 * p.rho[s]);  // density of the pair kept
     }
   }
+  // A weight that is not a whole number (never made by the samplers) takes the real count, unrounded.
+  SampleSet p = pair_of_samples(0.5, 0.5, gas, sound);
+  const double mass0 = total_mass(p);
+  break_weighted(p, 0, 1, f, rng, gas, sound);
+  EXPECT_EQ(p.w[0], 0.5);
+  EXPECT_DOUBLE_EQ(p.w[1], 0.5 * 2.3);
+  EXPECT_NEAR(total_mass(p), mass0, 1e-15 * mass0);
 }
 
 // Unequal weights: the heavier sample keeps w_h - w_l; the lighter becomes one fragment class. Over many

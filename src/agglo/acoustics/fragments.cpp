@@ -8,8 +8,10 @@ namespace agglo::acoustics {
 
 namespace {
 
-// R(x): x rounded down or up to an integer, up with probability x - floor(x).
-double stochastic_round(double x, CounterRng& rng) {
+// R(x): x rounded down or up to an integer, up with probability x - floor(x); x itself (no draw) when the
+// broken weight W is not a whole number (the samplers never make one; it keeps the count positive).
+double stochastic_round(double x, double W, CounterRng& rng) {
+  if (W != std::floor(W)) return x;
   const double lo = std::floor(x);
   return lo + (rng.uniform() < x - lo ? 1.0 : 0.0);
 }
@@ -34,7 +36,7 @@ void break_weighted(SampleSet& p, std::size_t i, std::size_t j, const FragmentSt
   const Merged m = merged_state(p, i, j);
   const double wi = p.w[i], wj = p.w[j];
   if (wi == wj) {
-    const double W = wi, c = stochastic_round(W * (f.number - 1.0), rng);
+    const double W = wi, c = stochastic_round(W * (f.number - 1.0), W, rng);
     set_fragments(p, i, m, W, f.largest * m.mass);
     set_fragments(p, j, m, c, W * (1.0 - f.largest) * m.mass / c);
     if (p.debt[i] <= 0.0) p.debt_ref[i] = p.debt_ref[j];
@@ -48,7 +50,7 @@ void break_weighted(SampleSet& p, std::size_t i, std::size_t j, const FragmentSt
   const double W = p.w[l];
   p.w[h] -= W;
   const bool largest = rng.uniform() < f.largest;
-  const double c = stochastic_round(largest ? W / f.largest : W * (f.number - 1.0) / (1.0 - f.largest), rng);
+  const double c = stochastic_round(largest ? W / f.largest : W * (f.number - 1.0) / (1.0 - f.largest), W, rng);
   set_fragments(p, l, m, c, W * m.mass / c);
   p.refresh(l, gas, sound);
 }

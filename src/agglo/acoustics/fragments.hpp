@@ -10,7 +10,8 @@
 // Weighted rule (decision): the event breaks W = min(w_i, w_j) real pairs, the number a collision event
 // of samples i, j consumes (collision_step.hpp). No sample is created: the two samples of the pair take
 // the fragments by their weights, so the sample count stays what it was. R(x) = floor(x) + [u < x - floor(x)]
-// (u uniform in [0, 1)) rounds a weight stochastically to an integer with E[R(x)] = x.
+// (u uniform in [0, 1)) rounds a weight stochastically to an integer with E[R(x)] = x (R(x) = x when W
+// is not a whole number, which the samplers never make; for whole W every R(x) below is >= W >= 1).
 //   w_i = w_j = W:  i <- the largest fragments: weight W, mass f_L M;
 //                   j <- the others: weight c = R(W (N_f - 1)), mass W (1 - f_L) M / c.
 //   w_h > w_l = W:  h keeps its state with weight w_h - W;
