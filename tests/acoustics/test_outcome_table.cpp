@@ -10,15 +10,14 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "agglo/acoustics/outcome_table.hpp"
 #include "agglo/acoustics/outcomes.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/core/rng.hpp"
 #include "agglo/io/netcdf_reader.hpp"
-#include "agglo/io/netcdf_writer.hpp"
 #include "helpers.hpp"
+#include "outcome_table_helpers.hpp"
 
 using namespace agglo;
 using namespace agglo::acoustics;
@@ -47,28 +46,8 @@ OutcomeTable table_of(std::vector<double> v, std::vector<double> d1, std::vector
   return t;
 }
 
-// The folders the tests write their tables into, removed when the test program ends.
-struct TableFolders {
-  std::vector<fs::path> made;
-  ~TableFolders() {
-    std::error_code ec;
-    for (const auto& d : made) fs::remove_all(d, ec);
-  }
-};
-
-fs::path temp_dir(const std::string& name) {
-  static TableFolders folders;
-  const fs::path d = fs::temp_directory_path() / fmt::format("agglo_outcome_table_{}_{}", name, ::getpid());
-  fs::create_directories(d);
-  folders.made.push_back(d);
-  return d;
-}
-
 fs::path write_table(const OutcomeTable& t, const std::string& name, io::Dataset* edit_source = nullptr) {
-  const fs::path dir = temp_dir(name);
-  io::Dataset d = edit_source ? *edit_source : outcome_table_dataset(t);
-  io::write_netcdf(OutputDir(dir), d, "table.nc");
-  return dir / "table.nc";
+  return test::write_table_dataset(edit_source ? *edit_source : outcome_table_dataset(t), name);
 }
 
 // Multilinear in (ln v, ln d1, ln d2), within [0.05, 0.95] on the axes below.
@@ -149,38 +128,15 @@ TEST(OutcomeTable, FileRoundTripAndMalformedTables) {
   refused([&](io::Dataset& d) { var(d, "p_bounce").reals[3] += 0.01; }, "p_stick + p_bounce + p_break at node 3");
   refused([&](io::Dataset& d) { var(d, "p_stick").reals[2] = -0.1; }, "p_stick at node 2 = -0.1");
   refused([&](io::Dataset& d) { d.variables.pop_back(); }, "no variable 'p_break'");
-  EXPECT_THROW(load_outcome_table(temp_dir("missing") / "absent.nc"), io::NetcdfReadError);
+  EXPECT_THROW(load_outcome_table(test::table_folder("missing") / "absent.nc"), io::NetcdfReadError);
 }
 
 namespace {
 
-// A monodisperse solid population in the coagulation box with the constant kernel K = 1/N0 (tau = K N0 t = t),
-// integer weights 2^20.
-constexpr double kMonoN0 = 1048576.0 * 4000.0;
+using test::kMonoN0;
 
 std::string constant_case(std::uint64_t seed, const std::string& outcome_lines, double end) {
-  return fmt::format(R"(
-seed = {}
-{}
-[time]
-end = {}
-collision_dt = 0.01
-integrator = "none"
-[[population]]
-name = "mono"
-phase = "solid"
-distribution = "monodisperse"
-diameter = 1e-6
-number_concentration = {}
-samples = 4000
-[kernels]
-model = "constant"
-constant_coefficient = {}
-[outcomes]
-energy_compensation = false
-{}
-)",
-                     seed, test::kCoagulationBox, end, kMonoN0, 1.0 / kMonoN0, outcome_lines);
+  return test::constant_kernel_case(seed, outcome_lines, end);
 }
 
 double mono_number_at_end(const std::string& toml) {
@@ -191,16 +147,8 @@ double mono_number_at_end(const std::string& toml) {
   return n;
 }
 
-struct SeedMeanSe {
-  double mean, se;
-};
-SeedMeanSe seed_mean_se(const std::vector<double>& x) {
-  double m = 0, s = 0;
-  for (double v : x) m += v;
-  m /= static_cast<double>(x.size());
-  for (double v : x) s += (v - m) * (v - m);
-  return {m, std::sqrt(s / static_cast<double>(x.size() - 1) / static_cast<double>(x.size()))};
-}
+using test::seed_mean_se;
+using test::SeedMeanSe;
 
 std::string constant_table_file(double alpha, const std::string& name) {
   return write_table(table_of({1e-3, 10.0}, {1e-7, 1e-4}, {1e-7, 1e-4}, [alpha](double, double, double) { return alpha; }),
@@ -252,41 +200,7 @@ namespace {
 // Solid spheres of 1 and 10 um (1e12 m^-3 each, 4000 samples each) in a 140 dB, 2 kHz wave with the
 // constant kernel (K N t = 0.9 for the total N = 2e12 m^-3, over 100 steps of 1e-4 s): the 1-10 um pairs meet at normal speeds of 0-0.7 m/s
 // around v_cr,dry(1 um, 10 um) = 0.19 m/s, the equal-size pairs well below it.
-std::string two_size_case(std::uint64_t seed) {
-  return fmt::format(R"(
-seed = {}
-[gas]
-gravity = false
-[sound]
-level_db = 140
-frequency_hz = 2000
-[domain]
-cells_x = 100
-[time]
-end = 0.01
-collision_dt = 1e-4
-[[population]]
-name = "fine"
-phase = "solid"
-distribution = "monodisperse"
-diameter = 1e-6
-number_concentration = 1e12
-samples = 4000
-[[population]]
-name = "coarse"
-phase = "solid"
-distribution = "monodisperse"
-diameter = 10e-6
-number_concentration = 1e12
-samples = 4000
-[kernels]
-model = "constant"
-constant_coefficient = 4.5e-11
-[outcomes]
-energy_compensation = false
-)",
-                     seed);
-}
+std::string two_size_case(std::uint64_t seed) { return test::two_size_wave_case(seed, 4000, 0.01, 4.5e-11, false); }
 
 struct DryCounts {
   double stuck = 0, bounced = 0, queries = 0, clamped = 0;
@@ -356,7 +270,8 @@ TEST(OutcomeTable, CaseFileSelectsAndRefuses) {
   brk.p_break.assign(brk.p_break.size(), 0.2);
   const std::string breaking = write_table(brk, "break").string();
   refused(fmt::format("dry_model = \"table\"\ntable = \"{}\"", breaking),
-          "key 'outcomes.table' = \"" + breaking + "\": P_break reaches 0.2, but breakage");
+          "key 'outcomes.table' = \"" + breaking + "\": not an outcome table (docs/acoustics.md §1.7): p_break at node 0 "
+          "= 0.2 > 0, but no variable 'fragments'");
   refused("dry_model = \"table\"", "key 'outcomes.table'");
   refused(fmt::format("table = \"{}\"", good), "is read only with outcomes.dry_model = \"table\"");
   refused("dry_model = \"table\"\ntable = \"/nonexistent/t.nc\"", "cannot read /nonexistent/t.nc");

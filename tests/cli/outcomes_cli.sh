@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # agglo outcomes (docs/outcomes.md): a small sphere-sphere table of cases/outcomes_sphere_sphere.toml; its
 # results.nc is read by the DSMC as outcomes.table; --resume reuses every journaled impact and gives the
-# same table; a two-sphere target and a P_break > 0 table are refused (exit 2, one line, no folder).
+# same table; a two-sphere target and a decreasing speed axis are refused (exit 2, one line, no folder).
 . "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, refused
 
 O="$SRC/cases/outcomes_sphere_sphere.toml"

@@ -223,8 +223,8 @@ void parse_kernels(const ConfigSection& root, EngineSettings& e) {
 }
 
 // outcomes.dry_model and outcomes.table (both read only when set, so the resolved config of a case without
-// them stays as it was). A table is loaded and checked here: unreadable, malformed, or with P_break > 0
-// (fragments are not implemented in the DSMC) is refused naming outcomes.table.
+// them stays as it was). A table is loaded and checked here: unreadable or malformed (probabilities outside
+// [0, 1] or not summing to 1, P_break > 0 without valid fragment statistics) is refused naming outcomes.table.
 void parse_dry_model(const ConfigSection& o, const std::string& case_file, OutcomeParams& oc) {
   const auto& k = keys().outcomes;
   const bool table = k.dry_model.present(o) && k.dry_model.read(o) == settings::kDryTable;
@@ -245,9 +245,6 @@ void parse_dry_model(const ConfigSection& o, const std::string& case_file, Outco
   } catch (const std::invalid_argument& e) {
     k.table.reject(o, fmt::format("not an outcome table (docs/acoustics.md §1.7): {}", e.what()));
   }
-  if (t.max_break() > 0.0)
-    k.table.reject(o, fmt::format("P_break reaches {:.4g}, but breakage into fragments is not implemented in the "
-                                  "DSMC: give a table with P_break = 0 everywhere", t.max_break()));
   oc.dry_model = DryModel::table;
   oc.dry_table = std::make_shared<const OutcomeTable>(std::move(t));
 }

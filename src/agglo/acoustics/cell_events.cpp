@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "agglo/acoustics/fragments.hpp"
 #include "agglo/acoustics/merge.hpp"
 #include "agglo/core/constants.hpp"
 
@@ -84,15 +85,18 @@ void CellEvents::compensate(std::size_t i, std::size_t j) {
   }
 }
 
-// Dry pair (i, j) at normal speed gn: below the critical velocity, or drawn from the outcome table
-// (P_break is 0: tables with breakage are refused when the case is read).
-bool CellEvents::dry_sticks(std::size_t i, std::size_t j, double gn) {
+// Dry pair (i, j) at normal speed gn: sticks below the critical velocity, else bounces; or drawn from the
+// outcome table with one uniform u: sticks if u < P_stick, breaks if u < P_stick + P_break, else bounces.
+CollisionOutcome CellEvents::dry_outcome(std::size_t i, std::size_t j, double gn) {
   if (oc.dry_model == DryModel::critical_velocity)
-    return gn <= critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j]);
+    return gn <= critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j]) ? CollisionOutcome::stick
+                                                                                : CollisionOutcome::bounce;
   const OutcomeProbabilities pr = oc.dry_table->at(gn, p.d[i], p.d[j]);
   ++st.table_queries;
   if (pr.clamped) ++st.table_clamped;
-  return rng.uniform() < pr.stick;
+  const double u = rng.uniform();
+  if (u < pr.stick) return CollisionOutcome::stick;
+  return u < pr.stick + pr.brk ? CollisionOutcome::brk : CollisionOutcome::bounce;
 }
 
 void CellEvents::collide(std::size_t i, std::size_t j) {
@@ -100,20 +104,26 @@ void CellEvents::collide(std::size_t i, std::size_t j) {
   touched_.push_back(static_cast<std::uint32_t>(i));
   touched_.push_back(static_cast<std::uint32_t>(j));
   const PairType type = pair_type(p.phase(i), p.phase(j));
-  bool coalesce = oc.always_coalesce || type == PairType::droplet;
+  CollisionOutcome out = CollisionOutcome::stick;
   Vec3 nrm;
   double gn = 0.0;
-  if (!coalesce) {
+  if (!(oc.always_coalesce || type == PairType::droplet)) {
     const Vec3 G{p.vx[i] - p.vx[j], p.vy[i] - p.vy[j], p.vz[i] - p.vz[j]};
     nrm = contact_normal(G, rng);
     gn = dot(G, nrm);
-    coalesce = type == PairType::dry ? dry_sticks(i, j, gn) : gn <= critical_velocity_wet(oc, p.d[i], p.d[j]);
+    if (type == PairType::dry)
+      out = dry_outcome(i, j, gn);
+    else
+      out = gn <= critical_velocity_wet(oc, p.d[i], p.d[j]) ? CollisionOutcome::stick : CollisionOutcome::bounce;
   }
-  if (coalesce) {
+  if (out == CollisionOutcome::stick) {
     ++st.coalescences[static_cast<int>(type)];
     coalesce_weighted(p, i, j, *ctx.gas, *ctx.sound);
     if (p.w[i] <= 0.0) refill(i);
     if (p.w[j] <= 0.0) refill(j);
+  } else if (out == CollisionOutcome::brk) {  // only dry pairs with a table (weights stay >= 1: no refill)
+    ++st.breakups[static_cast<int>(type)];
+    break_weighted(p, i, j, oc.dry_table->fragments_at(gn, p.d[i], p.d[j]), rng, *ctx.gas, *ctx.sound);
   } else {
     ++st.rebounds[static_cast<int>(type)];
     const double e = type == PairType::dry ? oc.restitution : wet_restitution(oc, p.d[i], p.d[j], gn);

@@ -1,7 +1,8 @@
 #pragma once
 // Outcome of one accepted collision of two samples of a cell (docs/model.md §C.5), shared by the
 // selection algorithms: coalescence (always for pairs with a droplet, or outcomes.always_coalesce)
-// or, for solid/mixed pairs, rebound when the normal impact speed exceeds the critical velocity.
+// or, for solid/mixed pairs, rebound when the normal impact speed exceeds the critical velocity; with
+// the dry outcome table, stick, bounce or break (fragments.hpp) drawn by the table's probabilities.
 // The contact normal of a rebound is drawn for a hard-sphere encounter (uniform impact parameter
 // over the collision disk). Samples whose weight drops to 0 are refilled by splitting the heaviest
 // sample of the cell (decision), and split-merge energy debts are given back at later rebounds
@@ -15,6 +16,8 @@
 
 namespace agglo::acoustics {
 
+enum class CollisionOutcome { stick, bounce, brk };
+
 class CellEvents {
  public:
   CellEvents(SampleSet& p, const std::uint32_t* idx, std::size_t n, const CollisionContext& ctx, CollisionStats& st,
@@ -27,7 +30,7 @@ class CellEvents {
  private:
   void refill(std::size_t dead);
   void compensate(std::size_t i, std::size_t j);
-  bool dry_sticks(std::size_t i, std::size_t j, double gn);
+  CollisionOutcome dry_outcome(std::size_t i, std::size_t j, double gn);
 
   SampleSet& p;
   const std::uint32_t* idx;

@@ -2,7 +2,7 @@
 // What the collision step of one cell needs and what it reports, whichever selection algorithm
 // picks the colliding pairs (time.selection: nanbu.hpp, Zhao et al.'s method; binned.hpp).
 // Both realise the same pair rate (decision, see docs/acoustics.md): a collision event of samples
-// i and j consumes min(w_i, w_j) real pairs (weighted rules, merge.hpp), and events of an unordered
+// i and j consumes min(w_i, w_j) real pairs (weighted rules, merge.hpp, fragments.hpp), and events of an unordered
 // pair happen at rate beta_ij max(w_i, w_j) / V_c, so real collisions happen at beta_ij w_i w_j / V_c.
 #include <cmath>
 #include <cstdint>
@@ -22,8 +22,7 @@ struct CollisionStats {
   std::uint64_t collisions = 0;
   std::uint64_t coalescences[3] = {0, 0, 0};  // by PairType: droplet, dry, wet
   std::uint64_t rebounds[3] = {0, 0, 0};
-  std::uint64_t breakups[3] = {0, 0, 0};      // stays 0: breakage is not implemented (tables with
-                                              // P_break > 0 are refused, case_config.cpp)
+  std::uint64_t breakups[3] = {0, 0, 0};      // broke into fragments (dry pairs with a table: fragments.hpp)
   std::uint64_t particle_steps = 0;  // (sample, step) pairs processed
   std::uint64_t subcycled = 0;       // Nanbu: particle steps that needed more than one trial interval;
                                      // binned: cell steps split into sub-steps

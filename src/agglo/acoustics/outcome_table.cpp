@@ -85,28 +85,76 @@ void check_probabilities(const OutcomeTable& t) {
   }
 }
 
-}  // namespace
+// The corners of the cell enclosing a query with a non-zero weight (prod_k w_k), in the order of the
+// interpolation sum.
+struct Corners {
+  std::array<std::size_t, 8> i{};
+  std::array<double, 8> w{};
+  std::size_t count = 0;
+  bool clamped = false;
+};
 
-OutcomeProbabilities OutcomeTable::at(double v, double di, double dj) const {
-  OutcomeProbabilities r;
-  const AxisPos pv = locate_log(axes[0], v, r.clamped);
-  const AxisPos p1 = locate_log(axes[1], std::min(di, dj), r.clamped);
-  const AxisPos p2 = locate_log(axes[2], std::max(di, dj), r.clamped);
+Corners corners_of(const OutcomeTable& t, double v, double di, double dj) {
+  Corners r;
+  const AxisPos pv = locate_log(t.axes[0], v, r.clamped);
+  const AxisPos p1 = locate_log(t.axes[1], std::min(di, dj), r.clamped);
+  const AxisPos p2 = locate_log(t.axes[2], std::max(di, dj), r.clamped);
   for (int c = 0; c < 8; ++c) {
     const int bv = c & 1, b1 = (c >> 1) & 1, b2 = (c >> 2) & 1;
     const double w = (bv ? pv.w : 1.0 - pv.w) * (b1 ? p1.w : 1.0 - p1.w) * (b2 ? p2.w : 1.0 - p2.w);
     if (w == 0.0) continue;
-    const std::size_t i = index(pv.lo + static_cast<std::size_t>(bv), p1.lo + static_cast<std::size_t>(b1),
-                                p2.lo + static_cast<std::size_t>(b2));
-    r.stick += w * p_stick[i];
-    r.bounce += w * p_bounce[i];
-    r.brk += w * p_break[i];
+    r.i[r.count] = t.index(pv.lo + static_cast<std::size_t>(bv), p1.lo + static_cast<std::size_t>(b1),
+                           p2.lo + static_cast<std::size_t>(b2));
+    r.w[r.count++] = w;
   }
   return r;
 }
 
-double OutcomeTable::max_break() const {
-  return p_break.empty() ? 0.0 : *std::max_element(p_break.begin(), p_break.end());
+// Fragment statistics at the nodes with P_break > 0: present, N_f >= 2 and 1/N_f <= f_L < 1.
+void check_fragments(const OutcomeTable& t) {
+  for (std::size_t i = 0; i < t.p_break.size(); ++i) {
+    if (!(t.p_break[i] > 0.0)) continue;
+    if (t.fragments.empty())
+      throw std::invalid_argument(fmt::format("p_break at node {} = {} > 0, but no variable '{}' ({})", i,
+                                              t.p_break[i], kOutcomeFragmentStats[0], kOutcomeFragmentMeanings[0]));
+    const double nf = t.fragments[i], fl = t.largest_fraction[i];
+    if (!(nf >= 2.0) || !std::isfinite(nf))
+      throw std::invalid_argument(
+          fmt::format("{} at node {} = {} where p_break > 0: a pair that breaks has at least 2 fragments",
+                      kOutcomeFragmentStats[0], i, nf));
+    if (!(fl >= 1.0 / nf && fl < 1.0))
+      throw std::invalid_argument(fmt::format("{} at node {} = {} where p_break > 0: outside [1/{} = {:.6g}, 1)",
+                                              kOutcomeFragmentStats[1], i, fl, kOutcomeFragmentStats[0], 1.0 / nf));
+  }
+}
+
+}  // namespace
+
+OutcomeProbabilities OutcomeTable::at(double v, double di, double dj) const {
+  OutcomeProbabilities r;
+  const Corners c = corners_of(*this, v, di, dj);
+  r.clamped = c.clamped;
+  for (std::size_t k = 0; k < c.count; ++k) {
+    r.stick += c.w[k] * p_stick[c.i[k]];
+    r.bounce += c.w[k] * p_bounce[c.i[k]];
+    r.brk += c.w[k] * p_break[c.i[k]];
+  }
+  return r;
+}
+
+FragmentStats OutcomeTable::fragments_at(double v, double di, double dj) const {
+  if (fragments.empty()) return {};
+  const Corners c = corners_of(*this, v, di, dj);
+  double sw = 0.0, sn = 0.0, sf = 0.0;
+  for (std::size_t k = 0; k < c.count; ++k) {
+    const double a = c.w[k] * p_break[c.i[k]];
+    if (!(a > 0.0)) continue;  // nodes without breaks hold no statistics (may be NaN)
+    sw += a;
+    sn += a * fragments[c.i[k]];
+    sf += a * largest_fraction[c.i[k]];
+  }
+  if (!(sw > 0.0)) return {};
+  return {sn / sw, sf / sw};
 }
 
 OutcomeTable outcome_table_from_dataset(const io::Dataset& d) {
@@ -120,6 +168,11 @@ OutcomeTable outcome_table_from_dataset(const io::Dataset& d) {
   t.p_bounce = values_of(variable(d, kOutcomeProbabilities[1], dims, "1"));
   t.p_break = values_of(variable(d, kOutcomeProbabilities[2], dims, "1"));
   check_probabilities(t);
+  if (d.find(kOutcomeFragmentStats[0]) || d.find(kOutcomeFragmentStats[1])) {  // both or neither
+    t.fragments = values_of(variable(d, kOutcomeFragmentStats[0], dims, "1"));
+    t.largest_fraction = values_of(variable(d, kOutcomeFragmentStats[1], dims, "1"));
+  }
+  check_fragments(t);
   if (d.attributes.contains("provenance") && d.attributes["provenance"].is_string())
     t.provenance = d.attributes["provenance"].get<std::string>();
   return t;
@@ -137,6 +190,10 @@ io::Dataset outcome_table_dataset(const OutcomeTable& t) {
   d.add(kOutcomeProbabilities[0], dims, "1", "probability that the pair sticks", t.p_stick);
   d.add(kOutcomeProbabilities[1], dims, "1", "probability that the pair bounces", t.p_bounce);
   d.add(kOutcomeProbabilities[2], dims, "1", "probability that the pair breaks", t.p_break);
+  if (!t.fragments.empty()) {
+    d.add(kOutcomeFragmentStats[0], dims, "1", kOutcomeFragmentMeanings[0], t.fragments);
+    d.add(kOutcomeFragmentStats[1], dims, "1", kOutcomeFragmentMeanings[1], t.largest_fraction);
+  }
   if (!t.provenance.empty()) d.attributes["provenance"] = t.provenance;
   return d;
 }

@@ -119,7 +119,7 @@ io::Table outcomes_by_pair_table(const acoustics::CollisionStats& s) {
   t.integer("pair_collisions", "1", "collisions of the pair type over the run", n);
   const std::array<const char*, 3> what = {"stuck", "bounced", "broke"};
   const std::array<const char*, 3> meaning = {"stuck (coalesced)", "bounced (rebound)",
-                                              "broke into fragments (breakage is not implemented: 0)"};
+                                              "broke into fragments (dry pairs with an outcome table)"};
   for (std::size_t m = 0; m < 3; ++m)
     t.integer(what[m], "1", std::string("collisions of the pair type that ") + meaning[m],
               {counts[m], counts[m] + 3});

@@ -1,0 +1,44 @@
+#pragma once
+// Weighted breakage of a colliding pair into fragments (docs/model.md §C.5, docs/acoustics.md §1.7): the
+// outcome "break" of the dry outcome table (outcome_table.hpp) with its fragment statistics at the pair's
+// normal speed and diameters: mean fragment number N_f >= 2 and mass fraction of the largest f_L.
+// Fragment model (decision): a broken pair of mass M = m_i + m_j gives one fragment of f_L M and
+// N_f - 1 fragments of (1 - f_L) M / (N_f - 1) each, all at the pair's centre-of-mass velocity
+//   v_cm = (m_i v_i + m_j v_j) / M,
+// with the pair's solid and liquid volumes in proportion to mass (density kept) and the population of
+// the partner of larger volume (as coalescence, merge.hpp).
+// Weighted rule (decision): the event breaks W = min(w_i, w_j) real pairs, the number a collision event
+// of samples i, j consumes (collision_step.hpp). No sample is created: the two samples of the pair take
+// the fragments by their weights, so the sample count stays what it was. R(x) = floor(x) + [u < x - floor(x)]
+// (u uniform in [0, 1)) rounds a weight stochastically to an integer with E[R(x)] = x (R(x) = x when W
+// is not a whole number, which the samplers never make; for whole W every R(x) below is >= W >= 1).
+//   w_i = w_j = W:  i <- the largest fragments: weight W, mass f_L M;
+//                   j <- the others: weight c = R(W (N_f - 1)), mass W (1 - f_L) M / c.
+//   w_h > w_l = W:  h keeps its state with weight w_h - W;
+//                   l <- one class, drawn in proportion to its mass share: the largest with probability
+//                   f_L (weight c = R(W / f_L)), else the others (c = R(W (N_f - 1) / (1 - f_L)));
+//                   mass W M / c each.
+// Conservation: the fragment samples hold weight x mass = W M in both cases (c cancels), and all move at
+// v_cm, so mass and momentum W M v_cm = W (m_i v_i + m_j v_j) are those of the W pairs, exactly up to
+// rounding, as in coalescence. The number of real particles goes from 2 W to W N_f in expectation:
+// W + E[R(W (N_f - 1))] = W N_f, and f_L W / f_L + (1 - f_L) W (N_f - 1) / (1 - f_L) = W N_f; per event
+// it is an integer (weights stay integer-valued): within one of W N_f for equal weights, the rounded
+// count of the drawn class (W / f_L or W (N_f - 1) / (1 - f_L)) for unequal ones. The mass carried by each class is
+// right per event (equal weights) or in expectation (unequal: f_L of W M in the largest class); per event
+// the fragment mass of an unequal-weight break deviates from f_L M (or the others' mass) by the rounding
+// of c, at most a factor (c + 1) / c. Kinetic energy of the relative motion is lost, as in coalescence.
+// Split-merge debts (merge.hpp) follow coalescence: equal weights pool them on i, else they stay.
+#include <cstddef>
+
+#include "agglo/acoustics/outcome_table.hpp"
+#include "agglo/acoustics/samples.hpp"
+#include "agglo/core/rng.hpp"
+
+namespace agglo::acoustics {
+
+// Breaks the W = min(w_i, w_j) real pairs of samples i, j (both live) by the rule above and refreshes the
+// caches of the samples that changed. Draws 1 (equal weights) or 2 uniforms from `rng`.
+void break_weighted(SampleSet& p, std::size_t i, std::size_t j, const FragmentStats& f, CounterRng& rng,
+                    const Gas& gas, const Sound& sound);
+
+}  // namespace agglo::acoustics
