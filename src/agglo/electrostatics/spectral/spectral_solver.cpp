@@ -30,9 +30,9 @@ namespace {
 using constants::eps0;
 using constants::pi;
 
-// Most pairs per block of matvec_M and build_pairs (cancellation is polled between blocks; matvec_M
-// holds a block's products: 2 kPairBlock (L+1)^2 numbers), and the work that closes a block early
-// (sum of (L+1)^3 over its pairs; about 20 ms of products).
+// Most pairs per block of build_pairs and of the dense matvec_M (cancellation is polled between blocks;
+// matvec_M holds a block's products: at most 2 kPairBlock (L+1)^2 numbers, block_end), and the work
+// that closes a block early (sum of (L+1)^3 over its pairs; about 20 ms of products).
 constexpr std::size_t kPairBlock = 128;
 constexpr double kBlockWork = 1e7;
 // Below this much work per block (sum of (L+1)^3 over its pairs; about 2 ms of products) a block runs
@@ -86,6 +86,7 @@ class SpectralSolver final : public Solver {
   long count_parallel_blocks() const;
   void pair_product(const Pair& pr, const double* beta, double* out_i, double* out_k, double* s) const;
   std::size_t block_end(std::size_t b0, double& work) const;
+  std::size_t slot_size(const Pair& pr) const;
   int choose_degree(const Problem& p, double& est_err);
   void prepare(const Problem& p, int L);
   void build_pairs(const Problem& p);
@@ -104,6 +105,7 @@ class SpectralSolver final : public Solver {
   std::vector<double> gamma_;  // per sphere, per l
   std::vector<double> beta_, alpha_;
   std::vector<double> out_, scratch_;  // matvec_M: per-pair products of a block, per-thread scratch
+  std::vector<std::size_t> slot_;      // matvec_M: offset of each pair's products in out_
   // Blocks of one product with the work to run in parallel (whether or not threads > 1: an output
   // that does not depend on the thread count).
   long parallel_blocks_ = 0;
@@ -176,7 +178,7 @@ void SpectralSolver::pair_product(const Pair& pr, const double* beta, double* ou
 // alpha = M beta. The pairs are taken in blocks (block_end): each block's pair products run in parallel
 // (OpenMP, when the block has enough work), each into its own slot, and are then added to alpha in
 // pair order, so alpha does not depend on the thread count. Cancellation is polled between blocks
-// (never inside a parallel region, core/cancel.hpp): a block is at most kPairBlock pairs.
+// (never inside a parallel region, core/cancel.hpp): a block is at most kBlockWork of work.
 void SpectralSolver::matvec_M(const double* beta, double* alpha) {
   std::fill(alpha, alpha + std::size_t(N_) * nc_, 0.0);
   const std::size_t npairs = pairs_.size(), nc = std::size_t(nc_);
@@ -188,19 +190,23 @@ void SpectralSolver::matvec_M(const double* beta, double* alpha) {
     double work = 0.0;
     b1 = block_end(b0, work);
     const bool parallel = threads > 1 && b1 - b0 > 1 && work > kParallelPairWork;
+    slot_.resize(b1 - b0 + 1);
+    slot_[0] = 0;
+    for (std::size_t q = b0; q < b1; ++q) slot_[q - b0 + 1] = slot_[q - b0] + 2 * slot_size(pairs_[q]);
 #pragma omp parallel for schedule(dynamic, 1) if (parallel)
     for (std::size_t q = b0; q < b1; ++q) {
-      double* o = &out_[(q - b0) * 2 * nc];
-      pair_product(pairs_[q], beta, o, o + nc, &scratch_[std::size_t(omp_get_thread_num()) * 4 * nc]);
+      double* o = &out_[slot_[q - b0]];
+      pair_product(pairs_[q], beta, o, o + slot_size(pairs_[q]), &scratch_[std::size_t(omp_get_thread_num()) * 4 * nc]);
     }
     for (std::size_t q = b0; q < b1; ++q) {
       const Pair& pr = pairs_[q];
-      const double* o = &out_[(q - b0) * 2 * nc];
+      const double* o = &out_[slot_[q - b0]];
+      const std::size_t half = slot_size(pr);
       double* al_i = alpha + std::size_t(pr.i) * nc;
       double* al_k = alpha + std::size_t(pr.k) * nc;
       for (int c = 0, np = sh::ncoef(pr.L); c < np; ++c) {
         al_i[c] += o[c];
-        al_k[c] += o[nc + c];
+        al_k[c] += o[half + c];
       }
     }
   }
@@ -219,12 +225,23 @@ long SpectralSolver::count_parallel_blocks() const {
 }
 
 // End of the block of pair products that starts at pair b0: pairs are added until the block holds
-// kBlockWork of work (sum of (L+1)^3) or kPairBlock pairs. `work` returns the block's work.
+// kBlockWork of work (sum of (L+1)^3) or its products fill 2 kPairBlock (L+1)^2 numbers (dense: kPairBlock
+// pairs; fmm: a pair's products take ncoef(L_pair) each, so that the many low-degree near pairs share a
+// block with enough touching pairs to run in parallel). `work` returns the block's work.
 std::size_t SpectralSolver::block_end(std::size_t b0, double& work) const {
-  std::size_t b1 = b0;
+  std::size_t b1 = b0, used = 0;
+  const std::size_t cap = kPairBlock * std::size_t(nc_);
   work = 0.0;
-  while (b1 < pairs_.size() && b1 - b0 < kPairBlock && work < kBlockWork) work += std::pow(pairs_[b1++].L + 1.0, 3);
+  while (b1 < pairs_.size() && work < kBlockWork && used + slot_size(pairs_[b1]) <= cap) {
+    used += slot_size(pairs_[b1]);
+    work += std::pow(pairs_[b1++].L + 1.0, 3);
+  }
   return b1;
+}
+
+// Numbers of one of a pair's two products in a block (block_end).
+std::size_t SpectralSolver::slot_size(const Pair& pr) const {
+  return far_ ? std::size_t(sh::ncoef(pr.L)) : std::size_t(nc_);
 }
 
 // Pairs with their own truncation degree and frame order (at 1e-3 x target accuracy).
