@@ -97,7 +97,7 @@ BENCHMARK_CAPTURE(product, dense_k2.5, std::string("dense"), 2.5)
     ->ArgNames({"N", "products"})->ArgsProduct({{100, 200, 400, 1000}, {1, 6}})
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(product, fmm_k2.5, std::string("fmm"), 2.5)
-    ->ArgNames({"N", "products"})->ArgsProduct({{100, 200, 400, 1000}, {1, 6}})
+    ->ArgNames({"N", "products"})->ArgsProduct({{100, 200, 400, 1000, 2000, 3000}, {1, 6}})
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(product, fmm_stored_k2.5, std::string("fmm_stored"), 2.5)
     ->ArgNames({"N", "products"})->ArgsProduct({{100, 200, 400, 1000}, {1, 6}})
@@ -106,7 +106,7 @@ BENCHMARK_CAPTURE(solve, dense_k2.5, std::string("dense"), 2.5)
     ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, fmm_k2.5, std::string("fmm"), 2.5)
-    ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
+    ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)->Arg(2000)->Arg(3000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, fmm_stored_k2.5, std::string("fmm_stored"), 2.5)
     ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
