@@ -45,6 +45,20 @@ void pivot_load(int l, int mc, const double* in1, const double* in2, double* c, 
   }
 }
 
+// Orders 0..mc of c, s into degree l of out1, out2 (written, or added with `add`).
+void pivot_store(int l, int mc, const double* c, const double* s, bool add, double* out1, double* out2) {
+  auto put = [add](double& o, double v) { o = add ? o + v : v; };
+  put(out1[idx(l, 0)], c[0]);
+  put(out2[idx(l, 0)], c[1]);
+  for (int m = 1; m <= mc; ++m) {
+    const int pc = 2 * pivot_cpos(l, m), ps = 2 * pivot_spos(l, m);
+    put(out1[idx(l, m)], c[pc]);
+    put(out2[idx(l, m)], c[pc + 1]);
+    put(out1[idx(l, -m)], s[ps]);
+    put(out2[idx(l, -m)], s[ps + 1]);
+  }
+}
+
 // z rotation of orders 1..mc in place: forward (FrameRotation::to_frame: c' = c cos + s sin,
 // s' = -c sin + s cos) or its inverse (from_frame: c = c' cos - s' sin, s = c' sin + s' cos).
 void pivot_turn(int l, int mc, const double* cs, const double* sn, bool inverse, double* c, double* s) {
@@ -157,15 +171,7 @@ void PivotRotation::to_frame2(const PivotTables& T, int Lmax, int Mmax, const do
     pivot_turn(l, l, cb_.data(), sb_.data(), false, b.yc, b.ys);
     pivot_backward(T, l, mm, b.yc, b.ys, b.c, b.s);
     pivot_turn(l, mm, T.cos_quarter(), T.sin_quarter(), false, b.c, b.s);
-    out1[idx(l, 0)] = b.c[0];
-    out2[idx(l, 0)] = b.c[1];
-    for (int m = 1; m <= mm; ++m) {
-      const int pc = 2 * pivot_cpos(l, m), ps = 2 * pivot_spos(l, m);
-      out1[idx(l, m)] = b.c[pc];
-      out2[idx(l, m)] = b.c[pc + 1];
-      out1[idx(l, -m)] = b.s[ps];
-      out2[idx(l, -m)] = b.s[ps + 1];
-    }
+    pivot_store(l, mm, b.c, b.s, false, out1, out2);
   }
 }
 
@@ -181,15 +187,7 @@ void PivotRotation::from_frame2(const PivotTables& T, int Lmax, int Mmax, const 
     pivot_turn(l, l, cb_.data(), sb_.data(), true, b.yc, b.ys);
     pivot_backward(T, l, l, b.yc, b.ys, b.c, b.s);
     pivot_turn(l, l, ca_.data(), sa_.data(), true, b.c, b.s);
-    out1[idx(l, 0)] += b.c[0];
-    out2[idx(l, 0)] += b.c[1];
-    for (int m = 1; m <= l; ++m) {
-      const int pc = 2 * pivot_cpos(l, m), ps = 2 * pivot_spos(l, m);
-      out1[idx(l, m)] += b.c[pc];
-      out2[idx(l, m)] += b.c[pc + 1];
-      out1[idx(l, -m)] += b.s[ps];
-      out2[idx(l, -m)] += b.s[ps + 1];
-    }
+    pivot_store(l, l, b.c, b.s, true, out1, out2);
   }
 }
 
