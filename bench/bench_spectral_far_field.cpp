@@ -38,15 +38,26 @@ std::map<std::pair<int, double>, es::Solution>& dense_results() {
   return m;
 }
 
+// far_field "fmm_stored": fmm with the near pairs' stored rotation blocks (FarFieldOptions::stored_rotations,
+// the twin of the shared quarter turns).
+es::SolverOptions bench_options(const std::string& far_field) {
+  es::SolverOptions o;
+  o.far_field = far_field == "dense" ? "dense" : "fmm";
+  return o;
+}
+std::unique_ptr<es::Solver> bench_solver(const std::string& far_field) {
+  const es::SolverOptions o = bench_options(far_field);
+  es::sh::FarFieldOptions f{.tolerance = es::far_field_tolerance(o), .stored_rotations = far_field == "fmm_stored"};
+  return es::make_spectral_solver(o, f);
+}
+
 void solve(benchmark::State& st, const std::string& far_field, double kappa) {
   const int n = static_cast<int>(st.range(0));
   const es::Problem p = fractal_problem(n, kappa);
-  es::SolverOptions o;
-  o.far_field = far_field;
   // One untimed solve first: the process's heap then holds what a solve allocates (the first run of a
   // process otherwise pays the page faults of every later one).
-  es::Solution sol = es::make_solver(o)->solve(p);
-  for (auto _ : st) sol = es::make_solver(o)->solve(p);
+  es::Solution sol = bench_solver(far_field)->solve(p);
+  for (auto _ : st) sol = bench_solver(far_field)->solve(p);
   st.counters["gmres_iterations"] = sol.stats.iterations;
   st.counters["degree"] = sol.stats.degree;
   if (sol.stats.extra.contains("near_pairs")) {
@@ -72,12 +83,12 @@ void solve(benchmark::State& st, const std::string& far_field, double kappa) {
 void product(benchmark::State& st, const std::string& far_field, double kappa) {
   const int repeat = static_cast<int>(st.range(1));
   const es::Problem p = fractal_problem(static_cast<int>(st.range(0)), kappa);
-  es::SolverOptions o;
-  o.far_field = far_field;
+  const es::SolverOptions o = bench_options(far_field);
+  const es::sh::FarFieldOptions f{.tolerance = es::far_field_tolerance(o), .stored_rotations = far_field == "fmm_stored"};
   const int L = es::spectral_degree(o, p);
   const std::vector<double> beta(p.spheres.size() * std::size_t(L + 1) * (L + 1), 1.0);
-  benchmark::DoNotOptimize(es::spectral_product(o, p, beta));  // untimed, as in solve()
-  for (auto _ : st) benchmark::DoNotOptimize(es::spectral_product(o, p, beta, nullptr, repeat));
+  benchmark::DoNotOptimize(es::spectral_product(o, p, beta, &f));  // untimed, as in solve()
+  for (auto _ : st) benchmark::DoNotOptimize(es::spectral_product(o, p, beta, &f, repeat));
 }
 
 }  // namespace
@@ -86,12 +97,18 @@ BENCHMARK_CAPTURE(product, dense_k2.5, std::string("dense"), 2.5)
     ->ArgNames({"N", "products"})->ArgsProduct({{100, 200, 400, 1000}, {1, 6}})
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(product, fmm_k2.5, std::string("fmm"), 2.5)
+    ->ArgNames({"N", "products"})->ArgsProduct({{100, 200, 400, 1000, 2000, 3000}, {1, 6}})
+    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(product, fmm_stored_k2.5, std::string("fmm_stored"), 2.5)
     ->ArgNames({"N", "products"})->ArgsProduct({{100, 200, 400, 1000}, {1, 6}})
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, dense_k2.5, std::string("dense"), 2.5)
     ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, fmm_k2.5, std::string("fmm"), 2.5)
+    ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)->Arg(2000)->Arg(3000)
+    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_stored_k2.5, std::string("fmm_stored"), 2.5)
     ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, dense_k15, std::string("dense"), 15.0)

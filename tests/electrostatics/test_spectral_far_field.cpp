@@ -8,6 +8,9 @@
 #include <random>
 #include <vector>
 
+#include "agglo/electrostatics/config.hpp"
+#include "agglo/electrostatics/estimate.hpp"
+#include "agglo/structure/fractal.hpp"
 #include "agglo/electrostatics/fmm/solid_harmonics.hpp"
 #include "agglo/electrostatics/spectral/complex_basis.hpp"
 #include "agglo/electrostatics/spectral/far_field.hpp"
@@ -196,10 +199,10 @@ TEST(SpectralFarField, GmresIterationsDoNotGrowWithN) {
   EXPECT_LE(std::abs(its[1] - its[0]), 2) << its[0] << " vs " << its[1];
 }
 
-// The fmm solution is the same at any thread count (bit for bit), with the far-field passes in parallel.
+// The fmm solution is the same at any thread count (bit for bit), with the far-field passes and the pair
+// products in parallel and near pairs through the quarter turns (pivot_rotation.hpp).
 TEST(SpectralFarField, SolutionDoesNotDependOnTheThreadCount) {
-  SolverOptions o = far_field_options("fmm");
-  o.target_accuracy = 1e-3;
+  const SolverOptions o = far_field_options("fmm");  // target 1e-4: L = 47, enough pair work for threads
   const Problem p = random_cluster(300, 1.0, 2.5, 3);
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
@@ -208,6 +211,8 @@ TEST(SpectralFarField, SolutionDoesNotDependOnTheThreadCount) {
   const Solution two = make_solver(o)->solve(p);
   omp_set_num_threads(saved);
   EXPECT_TRUE(two.stats.extra.at("far_field_parallel").get<bool>()) << "the far field ran serially";
+  EXPECT_GT(two.stats.extra.at("parallel_pair_blocks").get<int>(), 0) << "the pair products ran serially";
+  EXPECT_GT(two.stats.extra.at("pivot_pairs").get<int>(), 0) << "no pair took the quarter turns";
   EXPECT_EQ(two.energy, one.energy);
   for (std::size_t i = 0; i < p.spheres.size(); ++i)
     EXPECT_TRUE(two.force[i].x == one.force[i].x && two.force[i].y == one.force[i].y &&
@@ -215,8 +220,62 @@ TEST(SpectralFarField, SolutionDoesNotDependOnTheThreadCount) {
         << "sphere " << i;
 }
 
-// Negative controls: the tolerance check fails for a far field truncated one order too low (measured
-// 1.09e-5 against 1e-5: the order model is tight here) or accepted too early (theta 0.9: 2.4e-3).
+// The near pairs of degree >= 20 rotate through the shared quarter turns (pivot_rotation.hpp); their twin
+// rotates through stored blocks (FarFieldOptions::stored_rotations, the dense product's way). Cold fmm
+// solves of the N = 50 cluster with near-contact gaps (L = 47; 36 of its 1184 near pairs take the quarter
+// turns): forces and energy within 1e-10 of the twin (rounding only: measured 3.8e-16 and 0), the same
+// GMRES iterations. (The same bits on 1 and 2 threads: SolutionDoesNotDependOnTheThreadCount.)
+TEST(SpectralFarField, PivotRotationsMatchStoredRotations) {
+  const Problem p = random_cluster(50, 1.0, 2.5, 11);
+  const SolverOptions o = far_field_options("fmm");
+  const sh::FarFieldOptions stored{.tolerance = far_field_tolerance(o), .stored_rotations = true};
+  const Solution one = make_solver(o)->solve(p);
+  const Solution twin = make_spectral_solver(o, stored)->solve(p);
+  EXPECT_GT(one.stats.extra.at("pivot_pairs").get<int>(), 0) << "no pair took the quarter turns";
+  EXPECT_EQ(twin.stats.extra.at("pivot_pairs").get<int>(), 0);
+  const double force = force_difference(one, twin), energy = std::abs(one.energy - twin.energy) / std::abs(twin.energy);
+  std::printf("pivot vs stored rotations: forces %.2e, energy %.2e, pivot pairs %d of %d\n", force, energy,
+              one.stats.extra.at("pivot_pairs").get<int>(), one.stats.extra.at("near_pairs").get<int>());
+  EXPECT_LE(force, 1e-10);
+  EXPECT_LE(energy, 1e-10);
+  EXPECT_EQ(one.stats.iterations, twin.stats.iterations);
+}
+
+// A D_f = 1.8 aggregate of the structure builder (the benchmark's, bench/bench_spectral_far_field.cpp):
+// k_f = 1.3, r = 10 um, charges +-10 uC/m^2 alternating, kappa_p = 2.5, touching primaries 0.01 r apart.
+Problem fractal_cluster(int n) {
+  structure::FractalRequest q;
+  q.primaries = n;
+  q.fractal_dimension = 1.8;
+  const structure::Aggregate a = structure::build_fractal(q);
+  std::vector<double> charge(n), perm(n, 2.5);
+  for (int i = 0; i < n; ++i) charge[i] = (i % 2 ? -1.0 : 1.0) * 10e-6 * 4 * constants::pi * a.r[i] * a.r[i];
+  return make_problem(EsConfig{}, a.x, a.r, charge, perm);  // radii shrunk to gaps >= 0.01 r
+}
+
+// The cost model of --dry-run (spectral/cost.cpp) knows the fast far field: on the benchmark's D_f = 1.8
+// aggregates from N = 250 to 1000 its steps and memory grow like the near pairs and M2L, about like N
+// (measured x4.34 steps, x4.04 memory; asserted within 4^0.9 = 3.5 and 4^1.25 = 5.7). Counted over all
+// pairs, as for the dense product, N = 1000 (499 500 pairs) is past the exact-pair limit and the estimate
+// drops to its every-pair-at-degree-2 bound (x0.42 steps): the lower bound of the check fails then.
+TEST(SpectralFarField, DryRunEstimateGrowsLikeN) {
+  const Problem small = fractal_cluster(250), large = fractal_cluster(1000);
+  const SolverOptions fast = far_field_options("fmm");
+  const double steps = solver_steps(fast, large) / solver_steps(fast, small);
+  const double bytes = solver_memory_bytes(fast, large) / solver_memory_bytes(fast, small);
+  std::printf("fmm N 250 -> 1000: steps x%.2f, memory x%.2f; N = 1000: %.3g steps, %.3g bytes\n", steps, bytes,
+              solver_steps(fast, large), solver_memory_bytes(fast, large));
+  EXPECT_GE(steps, 3.5);
+  EXPECT_LE(steps, 5.7);
+  EXPECT_GE(bytes, 3.5);
+  EXPECT_LE(bytes, 5.7);
+}
+
+// Negative controls: the tolerance check fails for a far field truncated two orders too low (p - 2 = 7:
+// measured 2.7e-5 against 1e-5) or accepted too early (theta 0.9: 2.4e-3). One order too low (p - 1 = 8)
+// gives 1.09e-5, above the tolerance by only 9 %: the order model is tight there, too tight for a control
+// that must fail on every platform. (Random O(1) multipoles are no sharper control: the chosen p itself
+// gives 1.7e-5 on them, since the model is fitted to solutions, whose high degrees are small.)
 TEST(SpectralFarField, TooLowOrderOrTooLooseAcceptanceFailsTheTolerance) {
   const Problem p = random_cluster(200, 1.0, 2.5, 11);
   auto s = make_solver(far_field_options("fmm"));
@@ -224,10 +283,10 @@ TEST(SpectralFarField, TooLowOrderOrTooLooseAcceptanceFailsTheTolerance) {
   const auto beta = s->warm_start().values;
   const double tol = far_field_tolerance(far_field_options("fmm"));
   const int order = sh::far_field_order(tol);
-  sh::FarFieldOptions low{.tolerance = tol, .order = order - 1};
+  sh::FarFieldOptions low{.tolerance = tol, .order = order - 2};
   sh::FarFieldOptions loose{.theta = 0.9, .tolerance = tol, .order = order};
   const double e_low = product_error(p, beta, &low), e_loose = product_error(p, beta, &loose);
-  std::printf("order %d: %.2e, theta 0.9: %.2e (tolerance %.0e)\n", order - 1, e_low, e_loose, tol);
+  std::printf("order %d: %.2e, theta 0.9: %.2e (tolerance %.0e)\n", order - 2, e_low, e_loose, tol);
   EXPECT_GT(e_low, tol);
   EXPECT_GT(e_loose, tol);
 }

@@ -3,6 +3,7 @@
 // two right-hand sides are processed in one SIMD register (no reassociation of sums needed).
 //   y = A x     for a row-major A (rows x cols) and two interleaved vectors x = (x1[k], x2[k]);
 //   y += A^T v  likewise (interleaved v and y).
+//   gemv2x2: two y = A x at once.
 namespace agglo::es::sh::kern {
 
 typedef double v2d __attribute__((vector_size(16)));
@@ -24,6 +25,39 @@ inline void gemv2(const double* A, int lda, int rows, int cols, const double* x,
     v2d s = (s0 + s1) + (s2 + s3);
     y[2 * r] = s[0];
     y[2 * r + 1] = s[1];
+  }
+}
+
+// gemv2 for two pairs of vectors (x, y) and (x2, y2) sharing A: one pass over A, and each result the
+// same bits as gemv2 gives it (the same four partial sums, added in the same order).
+inline void gemv2x2(const double* A, int lda, int rows, int cols, const double* x, const double* x2, double* y,
+                    double* y2) {
+  const v2d* X = reinterpret_cast<const v2d*>(x);
+  const v2d* Z = reinterpret_cast<const v2d*>(x2);
+  for (int r = 0; r < rows; ++r) {
+    const double* a = A + static_cast<long>(r) * lda;
+    v2d s0 = {0, 0}, s1 = {0, 0}, s2 = {0, 0}, s3 = {0, 0};
+    v2d t0 = {0, 0}, t1 = {0, 0}, t2 = {0, 0}, t3 = {0, 0};
+    int k = 0;
+    for (; k + 4 <= cols; k += 4) {
+      s0 += a[k] * X[k];
+      t0 += a[k] * Z[k];
+      s1 += a[k + 1] * X[k + 1];
+      t1 += a[k + 1] * Z[k + 1];
+      s2 += a[k + 2] * X[k + 2];
+      t2 += a[k + 2] * Z[k + 2];
+      s3 += a[k + 3] * X[k + 3];
+      t3 += a[k + 3] * Z[k + 3];
+    }
+    for (; k < cols; ++k) {
+      s0 += a[k] * X[k];
+      t0 += a[k] * Z[k];
+    }
+    const v2d s = (s0 + s1) + (s2 + s3), t = (t0 + t1) + (t2 + t3);
+    y[2 * r] = s[0];
+    y[2 * r + 1] = s[1];
+    y2[2 * r] = t[0];
+    y2[2 * r + 1] = t[1];
   }
 }
 

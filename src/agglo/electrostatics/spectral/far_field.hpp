@@ -42,6 +42,9 @@ struct FarFieldOptions {
   int leaf_size = kFarFieldLeafSize;
   double tolerance = 1e-6;  // relative accuracy of the far-field part of the product
   int order = 0;            // expansion order p (0 = from tolerance)
+  // Near pairs of degree >= 20 (spectral_solver.cpp) rotate through their own stored blocks, as in the
+  // dense product (the twin of the shared quarter turns, pivot_rotation.hpp).
+  bool stored_rotations = false;
 };
 
 // Smallest p in [2, 30] with kFarFieldErrorPrefactor kFarFieldErrorRatio^p <= tol (theta = 0.5).
@@ -57,6 +60,7 @@ class SphereFarField {
   void add(const double* beta, double* alpha) const;
   int order() const { return p_; }
   std::size_t m2l_count() const { return n_m2l_; }
+  double cells() const { return static_cast<double>(tree_.cells.size()); }
   // Whether the M2L pass runs in parallel (kParallelCells cells or more; the result does not depend on
   // it nor on the thread count: every cell and sphere sums its own terms in a fixed order).
   bool parallel() const { return tree_.cells.size() >= kParallelCells; }

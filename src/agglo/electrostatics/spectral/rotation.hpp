@@ -8,6 +8,7 @@
 // 2x2 mixing of (cos, sin) pairs; the y rotation splits into a "cos" block ((l+1)^2 entries)
 // and a "sin" block (l^2 entries) per degree, built from Wigner's small d^l(b) computed by the
 // stable three-term recurrence in l (cost O(L^3) per direction, done once per pair and solve).
+#include <algorithm>
 #include <vector>
 
 #include "agglo/core/vec3.hpp"
@@ -36,6 +37,10 @@ class FrameRotation {
   // ADDS the result to out1, out2.
   void to_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1, double* out2) const;
   void from_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1, double* out2) const;
+  // Degree l's blocks of to_frame (after the z rotation): cos block rows m' = 0..min(l, M), columns
+  // m = 0..l (row-major), sin block rows m' = 1..min(l, M), columns m = 1..l (pivot_rotation.hpp).
+  const double* cos_block(int l) const { return &blk_[off_[l]]; }
+  const double* sin_block(int l) const { return &blk_[off_[l]] + (std::min(l, M_) + 1) * (l + 1); }
 
  private:
   void wigner_d(double b, const std::vector<std::size_t>& doff, const RotationTables& t,

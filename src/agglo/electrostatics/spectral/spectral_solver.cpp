@@ -17,6 +17,7 @@
 #include "agglo/electrostatics/spectral/degree.hpp"
 #include "agglo/electrostatics/spectral/far_field.hpp"
 #include "agglo/electrostatics/spectral/harmonics.hpp"
+#include "agglo/electrostatics/spectral/pivot_rotation.hpp"
 #include "agglo/electrostatics/spectral/rotation.hpp"
 #include "agglo/electrostatics/spectral/translation.hpp"
 #include "agglo/electrostatics/sphere_mesh.hpp"
@@ -29,9 +30,9 @@ namespace {
 using constants::eps0;
 using constants::pi;
 
-// Most pairs per block of matvec_M and build_pairs (cancellation is polled between blocks; matvec_M
-// holds a block's products: 2 kPairBlock (L+1)^2 numbers), and the work that closes a block early
-// (sum of (L+1)^3 over its pairs; about 20 ms of products).
+// Most pairs per block of build_pairs and of the dense matvec_M (cancellation is polled between blocks;
+// matvec_M holds a block's products: at most 2 kPairBlock (L+1)^2 numbers, block_end), and the work
+// that closes a block early (sum of (L+1)^3 over its pairs; about 20 ms of products).
 constexpr std::size_t kPairBlock = 128;
 constexpr double kBlockWork = 1e7;
 // Below this much work per block (sum of (L+1)^3 over its pairs; about 2 ms of products) a block runs
@@ -51,6 +52,7 @@ class SpectralSolver final : public Solver {
   explicit SpectralSolver(const SolverOptions& opt) : opt_(opt) {
     far_options_.tolerance = far_field_tolerance(opt);
   }
+  SpectralSolver(const SolverOptions& opt, const sh::FarFieldOptions& far) : opt_(opt), far_options_(far) {}
   std::string name() const override { return std::string(kSpectralSolver); }
   Solution solve(const Problem& p) override;
   // alpha = M beta for p at the degree solve() would choose (spectral_product()).
@@ -75,12 +77,16 @@ class SpectralSolver final : public Solver {
     double ui = 0, uk = 0;  // a_i / t, a_k / t
     int L = 0;  // truncation degree of this pair
     int M = 0;  // truncation order in the pair frame
+    bool pivot = false;  // rotate with P and the solver's pivot tables, else with R
     sh::FrameRotation R;
+    sh::PivotRotation P;
   };
-  // alpha = M beta (sphere-sphere part); `counting` counts the blocks with parallel work
-  void matvec_M(const double* beta, double* alpha, bool counting = false);
+  // alpha = M beta (sphere-sphere part)
+  void matvec_M(const double* beta, double* alpha);
+  long count_parallel_blocks() const;
   void pair_product(const Pair& pr, const double* beta, double* out_i, double* out_k, double* s) const;
   std::size_t block_end(std::size_t b0, double& work) const;
+  std::size_t slot_size(const Pair& pr) const;
   int choose_degree(const Problem& p, double& est_err);
   void prepare(const Problem& p, int L);
   void build_pairs(const Problem& p);
@@ -93,14 +99,18 @@ class SpectralSolver final : public Solver {
   sh::AxialTranslation T_;
   std::vector<Pair> pairs_;
   std::unique_ptr<sh::SphereFarField> far_;  // far_field = "fmm": the well-separated pairs
+  sh::PivotTables pivot_;                    // far_field = "fmm": quarter turns of the near pairs' rotations
   sh::FarFieldOptions far_options_;
   int L_ = 0, N_ = 0, nc_ = 0;
   std::vector<double> gamma_;  // per sphere, per l
   std::vector<double> beta_, alpha_;
   std::vector<double> out_, scratch_;  // matvec_M: per-pair products of a block, per-thread scratch
+  std::vector<std::size_t> slot_;      // matvec_M: offset of each pair's products in out_
   // Blocks of one product with the work to run in parallel (whether or not threads > 1: an output
-  // that does not depend on the thread count), counted in the last solve's final product.
+  // that does not depend on the thread count).
   long parallel_blocks_ = 0;
+  // Whether alpha_ holds M beta_ (GMRES ended with its explicit residual at the solution).
+  bool alpha_current_ = false;
   Problem last_;
   GmresWorkspace ws_;
   // warm start
@@ -149,21 +159,27 @@ void SpectralSolver::pair_product(const Pair& pr, const double* beta, double* ou
                                   double* s) const {
   const int np = sh::ncoef(pr.L);
   double *bi = s, *bk = s + np, *ai = s + 2 * np, *ak = s + 3 * np;
-  pr.R.to_frame2(pr.L, pr.M, beta + std::size_t(pr.k) * nc_, beta + std::size_t(pr.i) * nc_, bk, bi);
+  const double *b_k = beta + std::size_t(pr.k) * nc_, *b_i = beta + std::size_t(pr.i) * nc_;
+  if (pr.pivot)
+    pr.P.to_frame2(pivot_, pr.L, pr.M, b_k, b_i, bk, bi);
+  else
+    pr.R.to_frame2(pr.L, pr.M, b_k, b_i, bk, bi);
   std::fill(ai, ai + 2 * np, 0.0);  // ai, ak
   std::fill(out_i, out_i + np, 0.0);
   std::fill(out_k, out_k + np, 0.0);
   // source k seen from i sits at +t z; source i seen from k at -t z.
-  T_.apply(pr.L, pr.M, pr.ui, pr.uk, +1, bk, ai);
-  T_.apply(pr.L, pr.M, pr.uk, pr.ui, -1, bi, ak);
-  pr.R.from_frame2(pr.L, pr.M, ai, ak, out_i, out_k);
+  T_.apply_pair(pr.L, pr.M, pr.ui, pr.uk, bk, bi, ai, ak);
+  if (pr.pivot)
+    pr.P.from_frame2(pivot_, pr.L, pr.M, ai, ak, out_i, out_k);
+  else
+    pr.R.from_frame2(pr.L, pr.M, ai, ak, out_i, out_k);
 }
 
 // alpha = M beta. The pairs are taken in blocks (block_end): each block's pair products run in parallel
 // (OpenMP, when the block has enough work), each into its own slot, and are then added to alpha in
 // pair order, so alpha does not depend on the thread count. Cancellation is polled between blocks
-// (never inside a parallel region, core/cancel.hpp): a block is at most kPairBlock pairs.
-void SpectralSolver::matvec_M(const double* beta, double* alpha, bool counting) {
+// (never inside a parallel region, core/cancel.hpp): a block is at most kBlockWork of work.
+void SpectralSolver::matvec_M(const double* beta, double* alpha) {
   std::fill(alpha, alpha + std::size_t(N_) * nc_, 0.0);
   const std::size_t npairs = pairs_.size(), nc = std::size_t(nc_);
   const int threads = omp_get_max_threads();
@@ -173,35 +189,59 @@ void SpectralSolver::matvec_M(const double* beta, double* alpha, bool counting) 
     poll_cancel();
     double work = 0.0;
     b1 = block_end(b0, work);
-    const bool enough_work = b1 - b0 > 1 && work > kParallelPairWork;
-    const bool parallel = threads > 1 && enough_work;
-    if (counting) parallel_blocks_ += enough_work ? 1 : 0;
+    const bool parallel = threads > 1 && b1 - b0 > 1 && work > kParallelPairWork;
+    slot_.resize(b1 - b0 + 1);
+    slot_[0] = 0;
+    for (std::size_t q = b0; q < b1; ++q) slot_[q - b0 + 1] = slot_[q - b0] + 2 * slot_size(pairs_[q]);
 #pragma omp parallel for schedule(dynamic, 1) if (parallel)
     for (std::size_t q = b0; q < b1; ++q) {
-      double* o = &out_[(q - b0) * 2 * nc];
-      pair_product(pairs_[q], beta, o, o + nc, &scratch_[std::size_t(omp_get_thread_num()) * 4 * nc]);
+      double* o = &out_[slot_[q - b0]];
+      pair_product(pairs_[q], beta, o, o + slot_size(pairs_[q]), &scratch_[std::size_t(omp_get_thread_num()) * 4 * nc]);
     }
     for (std::size_t q = b0; q < b1; ++q) {
       const Pair& pr = pairs_[q];
-      const double* o = &out_[(q - b0) * 2 * nc];
+      const double* o = &out_[slot_[q - b0]];
+      const std::size_t half = slot_size(pr);
       double* al_i = alpha + std::size_t(pr.i) * nc;
       double* al_k = alpha + std::size_t(pr.k) * nc;
       for (int c = 0, np = sh::ncoef(pr.L); c < np; ++c) {
         al_i[c] += o[c];
-        al_k[c] += o[nc + c];
+        al_k[c] += o[half + c];
       }
     }
   }
   if (far_) far_->add(beta, alpha);
 }
 
+// Blocks of one product with the work to run in parallel (as matvec_M decides, at any thread count).
+long SpectralSolver::count_parallel_blocks() const {
+  long n = 0;
+  for (std::size_t b0 = 0, b1; b0 < pairs_.size(); b0 = b1) {
+    double work = 0.0;
+    b1 = block_end(b0, work);
+    n += (b1 - b0 > 1 && work > kParallelPairWork) ? 1 : 0;
+  }
+  return n;
+}
+
 // End of the block of pair products that starts at pair b0: pairs are added until the block holds
-// kBlockWork of work (sum of (L+1)^3) or kPairBlock pairs. `work` returns the block's work.
+// kBlockWork of work (sum of (L+1)^3) or its products fill 2 kPairBlock (L+1)^2 numbers (dense: kPairBlock
+// pairs; fmm: a pair's products take ncoef(L_pair) each, so that the many low-degree near pairs share a
+// block with enough touching pairs to run in parallel). `work` returns the block's work.
 std::size_t SpectralSolver::block_end(std::size_t b0, double& work) const {
-  std::size_t b1 = b0;
+  std::size_t b1 = b0, used = 0;
+  const std::size_t cap = kPairBlock * std::size_t(nc_);
   work = 0.0;
-  while (b1 < pairs_.size() && b1 - b0 < kPairBlock && work < kBlockWork) work += std::pow(pairs_[b1++].L + 1.0, 3);
+  while (b1 < pairs_.size() && work < kBlockWork && used + slot_size(pairs_[b1]) <= cap) {
+    used += slot_size(pairs_[b1]);
+    work += std::pow(pairs_[b1++].L + 1.0, 3);
+  }
   return b1;
+}
+
+// Numbers of one of a pair's two products in a block (block_end).
+std::size_t SpectralSolver::slot_size(const Pair& pr) const {
+  return far_ ? std::size_t(sh::ncoef(pr.L)) : std::size_t(nc_);
 }
 
 // Pairs with their own truncation degree and frame order (at 1e-3 x target accuracy).
@@ -223,6 +263,7 @@ void SpectralSolver::build_pairs(const Problem& p) {
       }
   }
   const double tol_pair = 1e-3 * opt_.target_accuracy;
+  const bool pivots = far_ && !far_options_.stored_rotations;
   for (std::size_t b0 = 0; b0 < npairs; b0 += kPairBlock) {
     poll_cancel();
     const std::size_t b1 = std::min(npairs, b0 + kPairBlock);
@@ -241,7 +282,11 @@ void SpectralSolver::build_pairs(const Problem& p) {
       auto lr = sh::limit_ratios(a.radius, b.radius, t);
       pr.L = std::min(L_, std::max(2, sh::degree_for(lr, tol_pair)));
       pr.M = T_.order_cutoff(pr.L, pr.ui, pr.uk, tol_pair);
-      pr.R.build(d, pr.L, pr.M);
+      pr.pivot = pivots && pr.L >= kPivotDegree;
+      if (pr.pivot)
+        pr.P.build(d, pr.L, pr.M);
+      else
+        pr.R.build(d, pr.L, pr.M);
     }
   }
 }
@@ -308,6 +353,7 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const std::vector
     beta_ = rhs;
   }
   alpha_.assign(n, 0.0);
+  alpha_current_ = false;
   GmresResult gr;
   bool polarisable = false;
   for (const auto& s : p.spheres) polarisable |= (s.permittivity != p.medium_permittivity);
@@ -327,6 +373,9 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const std::vector
         "spectral: GMRES did not converge in {} iterations (relative residual {:.3g} > {:.3g}); raise "
         "{} or check the configuration",
         gr.iterations, gr.residual, tol, solver_keys().max_iterations.dotted()));
+  // A converged GMRES (recheck_true_residual) ends with the explicit residual of its solution, beta_:
+  // its application left alpha_ = M beta_ (apply_system).
+  alpha_current_ = true;
   return gr;
 }
 
@@ -374,9 +423,9 @@ Solution SpectralSolver::solve(const Problem& p) {
   applied_field(p, alpha_ext, rhs);
   const double tol = std::min(opt_.tolerance, 1e-2 * opt_.target_accuracy);
   const GmresResult gr = solve_multipoles(p, rhs, tol);
-  // external potential coefficients
-  parallel_blocks_ = 0;
-  matvec_M(beta_.data(), alpha_.data(), true);
+  // external potential coefficients (M beta_ is there after GMRES; one product less per solve)
+  parallel_blocks_ = count_parallel_blocks();
+  if (!alpha_current_) matvec_M(beta_.data(), alpha_.data());
   for (std::size_t c = 0; c < alpha_.size(); ++c) alpha_[c] += alpha_ext[c];
   Solution sol = forces_and_energy(p);
 
@@ -404,6 +453,7 @@ Solution SpectralSolver::solve(const Problem& p) {
     sol.stats.extra["near_pairs"] = pairs_.size();
     sol.stats.extra["m2l"] = far_->m2l_count();
     sol.stats.extra["far_field_parallel"] = far_->parallel();
+    sol.stats.extra["pivot_pairs"] = std::count_if(pairs_.begin(), pairs_.end(), [](const Pair& q) { return q.pivot; });
   }
   return sol;
 }
@@ -415,8 +465,10 @@ void SpectralSolver::prepare(const Problem& p, int L) {
   nc_ = sh::ncoef(L);
   if (L > T_.degree()) T_.prepare(std::max(L, std::min(opt_.max_degree_limit, L + 8)));  // grows only
   far_.reset();
-  if (opt_.far_field == kFarFieldNames[1])
+  if (opt_.far_field == kFarFieldNames[1]) {
     far_ = std::make_unique<sh::SphereFarField>(p, L, far_options_);
+    if (!far_options_.stored_rotations && pivot_.degree() != L) pivot_.build(L);
+  }
   build_pairs(p);
 }
 
@@ -484,6 +536,10 @@ std::vector<std::array<int, 3>> SpectralSolver::surface_triangles() const {
 
 std::unique_ptr<Solver> make_spectral_solver(const SolverOptions& opt) {
   return std::make_unique<SpectralSolver>(opt);
+}
+
+std::unique_ptr<Solver> make_spectral_solver(const SolverOptions& opt, const sh::FarFieldOptions& far) {
+  return std::make_unique<SpectralSolver>(opt, far);
 }
 
 double far_field_tolerance(const SolverOptions& opt) { return kFarFieldAccuracy * opt.target_accuracy; }

@@ -31,12 +31,18 @@ namespace agglo::es {
 inline constexpr std::string_view kSpectralSolver = kDefaultSolver;
 
 std::unique_ptr<Solver> make_spectral_solver(const SolverOptions& opt);
+// With `far` replacing the far field's options (the twins of tests and benchmarks; opt.far_field = "fmm").
+std::unique_ptr<Solver> make_spectral_solver(const SolverOptions& opt, const sh::FarFieldOptions& far);
 
 // far_field = "fmm" (far_field.hpp): the product is accurate to kFarFieldAccuracy x target_accuracy
 // (relative 2-norm against the dense twin). Tighter is not meaningful: the dense product's own pair
 // truncation (pair degrees at 1e-3 x target) differs from a product at higher pair degrees by ~5e-6 at
 // the default target on the clusters of the tests.
 inline constexpr double kFarFieldAccuracy = 0.1;
+// far_field = "fmm": near pairs of at least this degree rotate through the shared quarter turns
+// (pivot_rotation.hpp) instead of their own stored blocks (FrameRotation), unless
+// FarFieldOptions::stored_rotations (the twin). Below it a pair's blocks are small (under 0.1 MB).
+inline constexpr int kPivotDegree = 20;
 double far_field_tolerance(const SolverOptions& opt);
 
 // The twin checks of the far field: the degree L solve() chooses for p, and the sphere-sphere part of

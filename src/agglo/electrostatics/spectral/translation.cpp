@@ -29,6 +29,28 @@ void AxialTranslation::prepare(int L) {
   }
 }
 
+namespace {
+// Scaled source of one order m (AxialTranslation::apply): x[2(n-m)], x[2(n-m)+1] = s_n v^(n+1) (beta_nm,
+// beta_n,-m), s_n = -1 for odd n when the source is at -t z.
+void translation_source(int Lmax, int m, double v, int sign, const double* in, double* x) {
+  double vp = std::pow(v, m + 1);
+  for (int n = m; n <= Lmax; ++n) {
+    double s = (sign < 0 && (n & 1)) ? -vp : vp;
+    x[2 * (n - m)] = s * in[idx(n, m)];
+    x[2 * (n - m) + 1] = (m > 0) ? s * in[idx(n, -m)] : 0.0;
+    vp *= v;
+  }
+}
+// out += the target scaling s_j u^j of y (up: powers of u).
+void translation_target(int Lmax, int m, const double* up, int sign, const double* y, double* out) {
+  for (int j = m; j <= Lmax; ++j) {
+    double s = (sign < 0 && (j & 1)) ? -up[j] : up[j];
+    out[idx(j, m)] += s * y[2 * (j - m)];
+    if (m > 0) out[idx(j, -m)] += s * y[2 * (j - m) + 1];
+  }
+}
+}  // namespace
+
 void AxialTranslation::apply(int Lmax, int Mmax, double u, double v, int sign, const double* in, double* out) const {
   double up[1024];
   double p = 1.0;
@@ -36,25 +58,33 @@ void AxialTranslation::apply(int Lmax, int Mmax, double u, double v, int sign, c
     up[j] = p;
     p *= u;
   }
+  alignas(16) double x[2 * 1024], y[2 * 1024];
   for (int m = 0; m <= std::min(Lmax, Mmax); ++m) {
-    const int w = L_ - m + 1;
     const int nn = Lmax - m + 1;
-    const double* F = &f_[off_[m]];
-    // scaled source: v^(n+1) beta_n (and the (-1)^n of a source at -t z)
-    double vp = std::pow(v, m + 1);
-    alignas(16) double x[2 * 1024], y[2 * 1024];
-    for (int n = m; n <= Lmax; ++n) {
-      double s = (sign < 0 && (n & 1)) ? -vp : vp;
-      x[2 * (n - m)] = s * in[idx(n, m)];
-      x[2 * (n - m) + 1] = (m > 0) ? s * in[idx(n, -m)] : 0.0;
-      vp *= v;
-    }
-    kern::gemv2(F, w, nn, nn, x, y);
-    for (int j = m; j <= Lmax; ++j) {
-      double s = (sign < 0 && (j & 1)) ? -up[j] : up[j];
-      out[idx(j, m)] += s * y[2 * (j - m)];
-      if (m > 0) out[idx(j, -m)] += s * y[2 * (j - m) + 1];
-    }
+    translation_source(Lmax, m, v, sign, in, x);
+    kern::gemv2(&f_[off_[m]], L_ - m + 1, nn, nn, x, y);
+    translation_target(Lmax, m, up, sign, y, out);
+  }
+}
+
+void AxialTranslation::apply_pair(int Lmax, int Mmax, double u, double v, const double* in_b, const double* in_a,
+                                  double* out_a, double* out_b) const {
+  double pu[1024], pv[1024];
+  double p = 1.0, q = 1.0;
+  for (int j = 0; j <= Lmax; ++j) {
+    pu[j] = p;
+    pv[j] = q;
+    p *= u;
+    q *= v;
+  }
+  alignas(16) double x[2 * 1024], y[2 * 1024], x2[2 * 1024], y2[2 * 1024];
+  for (int m = 0; m <= std::min(Lmax, Mmax); ++m) {
+    const int nn = Lmax - m + 1;
+    translation_source(Lmax, m, v, +1, in_b, x);
+    translation_source(Lmax, m, u, -1, in_a, x2);
+    kern::gemv2x2(&f_[off_[m]], L_ - m + 1, nn, nn, x, x2, y, y2);
+    translation_target(Lmax, m, pu, +1, y, out_a);
+    translation_target(Lmax, m, pv, -1, y2, out_b);
   }
 }
 

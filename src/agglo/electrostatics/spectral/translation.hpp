@@ -21,6 +21,10 @@ class AxialTranslation {
   // sign = +1: source centre at +t z; -1: at -t z. `accumulate` adds into out.
   // Only frame orders |m| <= Mmax are translated.
   void apply(int Lmax, int Mmax, double u, double v, int sign, const double* in, double* out) const;
+  // Both directions of a pair in one pass over the factors: out_a += apply(u, v, +1, in_b) and
+  // out_b += apply(v, u, -1, in_a), each the same bits as the two apply calls.
+  void apply_pair(int Lmax, int Mmax, double u, double v, const double* in_b, const double* in_a, double* out_a,
+                  double* out_b) const;
   // Smallest order M such that every m-block with m > M has operator-norm bound
   // (block size x largest entry, both directions) below tol: orders above M can be dropped.
   // Near contact the pair coupling is concentrated at small |m| around the pair axis.
