@@ -86,4 +86,11 @@ samples = {}
                      w.droplet_samples) + output;
 }
 
+// Number concentration of the samples: the sum of their weights [m^-3].
+inline double total_number(const SampleSet& p) {
+  double n = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) n += p.w[i];
+  return n;
+}
+
 }  // namespace agglo::acoustics::test

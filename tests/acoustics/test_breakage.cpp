@@ -67,12 +67,6 @@ double momentum_scale(const SampleSet& p) {
   return s;
 }
 
-double total_number(const SampleSet& p) {
-  double n = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) n += p.w[i];
-  return n;
-}
-
 }  // namespace
 
 // Equal weights: the largest fragments on i (weight W, mass f_L M), the others on j (weight R(W (N_f - 1)),
@@ -225,7 +219,7 @@ TEST(Breakage, NumberFollowsTheFragmentNumberAndMassAndMomentumAreConserved) {
     EXPECT_EQ(p.size(), 4000u);  // the sample count stays
     mass_err = std::max(mass_err, std::abs(total_mass(p) - mass0) / mass0);
     mom_err = std::max(mom_err, norm(momentum(p) - mom0) / scale);
-    ratio.push_back(total_number(p) / (kMonoN0 / (1.0 - (nf - 2.0) * tau / 2.0)));
+    ratio.push_back(test::total_number(p) / (kMonoN0 / (1.0 - (nf - 2.0) * tau / 2.0)));
   }
   const test::SeedMeanSe r = test::seed_mean_se(ratio);
   const double m = r.mean, se = r.se;

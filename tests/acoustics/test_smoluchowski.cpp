@@ -83,12 +83,6 @@ Errors l2_errors(const SampleSet& p, const std::function<double(double)>& f, dou
   return {std::sqrt(dn / en), std::sqrt(dm / em)};
 }
 
-double total_number(const SampleSet& p) {
-  double n = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) n += p.w[i];
-  return n;
-}
-
 }  // namespace
 
 TEST(Smoluchowski, ConstantKernelExponentialStart) {
@@ -99,14 +93,14 @@ TEST(Smoluchowski, ConstantKernelExponentialStart) {
     while (e.time() < tau_check - 1e-9) e.step();
     const double tau = e.time();
     const double N = 2.0 * kN0 / (2.0 + tau);
-    EXPECT_NEAR(total_number(e.particles()) / N, 1.0, 0.02) << "tau " << tau;
+    EXPECT_NEAR(test::total_number(e.particles()) / N, 1.0, 0.02) << "tau " << tau;
     auto f = [tau](double x) { return 4.0 / ((2 + tau) * (2 + tau)) * std::exp(-2 * x / (2 + tau)); };
     const Errors err = l2_errors(e.particles(), f, 1e-2, 40.0, 25);
     EXPECT_LE(err.number, 0.05) << "tau " << tau;
     EXPECT_LE(err.mass, 0.20) << "tau " << tau;
     RecordProperty(fmt::format("l2_number_tau{}", tau_check), fmt::format("{:.4f}", err.number));
     std::printf("constant kernel tau=%.2f: N/N_exact=%.4f L2 number %.4f mass %.4f\n", tau,
-                total_number(e.particles()) / N, err.number, err.mass);
+                test::total_number(e.particles()) / N, err.number, err.mass);
   }
   // Mass (here solid volume) is conserved exactly by every coalescence.
   double vol = 0;
@@ -122,7 +116,7 @@ TEST(Smoluchowski, AdditiveKernelExponentialStart) {
   for (double tau_check : {0.5, 1.0}) {
     while (e.time() < tau_check - 1e-9) e.step();
     const double tau = e.time(), T = 1 - std::exp(-tau);
-    EXPECT_NEAR(total_number(e.particles()) / (kN0 * std::exp(-tau)), 1.0, 0.02) << "tau " << tau;
+    EXPECT_NEAR(test::total_number(e.particles()) / (kN0 * std::exp(-tau)), 1.0, 0.02) << "tau " << tau;
     auto f = [T](double x) {
       return (1 - T) / (x * std::sqrt(T)) * std::exp(-(1 + T) * x) * std::cyl_bessel_i(1.0, 2 * x * std::sqrt(T));
     };
@@ -130,7 +124,7 @@ TEST(Smoluchowski, AdditiveKernelExponentialStart) {
     EXPECT_LE(err.number, 0.05) << "tau " << tau;
     EXPECT_LE(err.mass, 0.20) << "tau " << tau;
     std::printf("additive kernel tau=%.2f: N/N_exact=%.4f L2 number %.4f mass %.4f\n", tau,
-                total_number(e.particles()) / (kN0 * std::exp(-tau)), err.number, err.mass);
+                test::total_number(e.particles()) / (kN0 * std::exp(-tau)), err.number, err.mass);
   }
   double vol = 0;
   for (std::size_t i = 0; i < e.particles().size(); ++i) vol += e.particles().w[i] * e.particles().vol_s[i];
