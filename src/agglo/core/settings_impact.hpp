@@ -91,6 +91,15 @@ struct ImpactSettings {
     Bool early_stop{t, {"time.early_stop", "", "stop once clearly broken (fragments escaping and far apart)"}, true};
     Real early_stop_gap{t, {"time.early_stop_gap", "r_p", "surface gap of escaping fragments for an early stop"},
                         2.0, Range::positive()};
+    // Read only when set (cases without it resolve as before).
+    Choice intact_stop{t,
+                       {"time.intact_stop", "",
+                        "stop a run once it provably can no longer break (an energy bound below half the energy to "
+                        "break a contact; impact/intact.hpp, docs/model.md A.3): vcrit = in "
+                        "break-up bisections (vcrit, calibrate), on = in every run (it decides break-up, not "
+                        "sticking), off = never",
+                        "vcrit"},
+                       std::nullopt, {"vcrit", "on", "off"}};
   } time;
 
   struct Agglomerate {

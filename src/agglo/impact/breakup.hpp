@@ -41,6 +41,7 @@ struct BreakupResult {
 struct ImpactJob {
   double speed = 0.0, offset_radii = 0.0;
   int orientation = 0, orientations = 1;
+  bool bisection = false;  // a run of a v_crit bisection (TimeSpec::bisection)
 };
 // Runs independent impacts and returns their outcomes in the same order (e.g. run::ensemble_impacts:
 // in parallel, journaled; results do not depend on the thread count).

@@ -176,6 +176,12 @@ std::vector<Vec3> ElectrostaticForce::held_forces(const dem::Particles& p) {
   return f;
 }
 
+std::vector<Vec3> ElectrostaticForce::applied_forces(const dem::Particles& p) {
+  std::vector<Vec3> f = held_forces(p);
+  for (auto& fk : f) fk *= s_.force_scale;
+  return f;
+}
+
 void ElectrostaticForce::adapt(const std::vector<Vec3>& held) {
   double fmax = 0.0, emax = 0.0;
   for (std::size_t k = 0; k < held.size(); ++k) {

@@ -62,6 +62,8 @@ class ElectrostaticForce : public dem::ExternalForce {
   // Errors of the held forces measured at the solves (force_tolerance > 0; empty otherwise).
   const HoldErrorStats& hold_error() const { return hold_error_; }
   const es::Solution& last() const { return last_; }
+  // The forces a step at state p applies [N]: the held (pair-corrected) solution times force_scale.
+  std::vector<Vec3> applied_forces(const dem::Particles& p);
   // Checkpoint state (coupling_state.hpp); restore() into a coupling of the same settings.
   CouplingState state() const;
   void restore(const CouplingState& s);

@@ -57,7 +57,7 @@ struct ImpactOutcome {
   double t_contact = 0.0, t_end = 0.0, dt = 0.0;
   long steps = 0;
   int extensions = 0;
-  bool early_stop = false;   // decided before after_contact (clearly broken)
+  bool early_stop = false;   // decided before after_contact (clearly broken, or intact for good: intact.hpp)
   long es_solves = 0;        // electrostatic solves
   double es_seconds = 0.0;   // wall time spent in them
   HoldErrorSummary es_hold_error;  // with electrostatics.force_tolerance > 0

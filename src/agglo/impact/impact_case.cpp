@@ -104,6 +104,7 @@ void parse_time(const ConfigSection& root, ImpactCase& c) {
   c.time.relax_energy = k.relax_energy.read(ts);
   c.time.early_stop = k.early_stop.read(ts);
   c.time.early_stop_gap = k.early_stop_gap.read(ts);
+  if (k.intact_stop.present(ts)) c.time.intact_stop = k.intact_stop.read(ts);
 }
 
 // [[particles]] entries of a list agglomerate may overlap by at most kMaxListOverlap times the JKR

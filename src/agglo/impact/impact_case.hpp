@@ -75,6 +75,8 @@ struct TimeSpec {
   double relax_energy = impact_keys().time.relax_energy.def();  // relaxed when E_kin < this x F_C delta_C
   bool early_stop = impact_keys().time.early_stop.def();        // stop once clearly broken
   double early_stop_gap = impact_keys().time.early_stop_gap.def();  // ... fragments this far apart [r_p]
+  std::string intact_stop = "vcrit";  // time.intact_stop: stop once provably intact (intact.hpp) in "vcrit" bisections, "on", "off"
+  bool bisection = false;             // a run of a v_crit bisection (set by the search, run::speed_batch)
 };
 
 struct OutputSpec {

@@ -13,6 +13,7 @@
 #include "agglo/impact/electrostatic_coupling.hpp"
 #include "agglo/impact/estimate.hpp"
 #include "agglo/impact/experiment.hpp"
+#include "agglo/impact/intact.hpp"
 
 namespace agglo::impact {
 
@@ -78,6 +79,7 @@ ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double spe
   u0_ = c.agglomerate.shape == "list" ? std::numeric_limits<double>::quiet_NaN()
                                       : 2.0 * constants::pi * rp * rp * rp * sigma * sigma / constants::eps0;
   kappa0_ = es_ ? c.medium_permittivity : 1.0;
+  intact_stop_ = c.time.intact_stop == "on" || (c.time.intact_stop == "vcrit" && c.time.bisection);
   set_launch(sys_.particles());
   double gap = c.projectile.gap_radii * rp;
   at_.t_launch = sys_.time();
@@ -144,15 +146,23 @@ void ImpactRun::end_approach(bool touched) {
 }
 
 // One step of a contact segment (after_contact, then each extension); the segment ends at t_stop or
-// early when the agglomerate is clearly broken.
+// early when the agglomerate is clearly broken or (time.intact_stop) provably intact for good.
 void ImpactRun::contact_step() {
   if (!(sys_.time() < at_.t_stop)) return end_segment(false);
   step();
   if (progress_ && sys_.steps() % 2000 == 0)
     progress_((sys_.time() - at_.t_from) / (at_.t_stop - at_.t_from), since_launch());
+  if (sys_.steps() % 500 != 0) return;
   const double min_gap = c_.time.early_stop_gap * c_.agglomerate.radius;
-  if (c_.time.early_stop && sys_.steps() % 500 == 0 && clearly_broken(sys_, n_agg_, kappa0_, min_gap))
+  if ((c_.time.early_stop && clearly_broken(sys_, n_agg_, kappa0_, min_gap)) || (intact_stop_ && intact_for_good()))
     end_segment(true);
+}
+
+bool ImpactRun::intact_for_good() {
+  auto* ef = dynamic_cast<ElectrostaticForce*>(es_.get());
+  if (!ef) return intact_bound(sys_, n_agg_, nullptr, kappa0_).intact();
+  const std::vector<Vec3> f = ef->applied_forces(sys_.particles());
+  return intact_bound(sys_, n_agg_, &f, kappa0_).intact();
 }
 
 // Classifies the end of a segment: done unless undecided with extensions left.

@@ -52,6 +52,7 @@ class ImpactRun {
   void arm_watchdog();
   void check_energy() const;
   bool projectile_touches() const;
+  bool intact_for_good();  // the agglomerate can no longer break (intact.hpp)
   void record();
 
   const ImpactCase& c_;
@@ -64,6 +65,7 @@ class ImpactRun {
   double u0_ = 0.0;      // U0 = 2 pi r_p^3 sigma_f^2 / eps0 [J]; NaN for a list agglomerate
   double kappa0_ = 1.0;  // medium permittivity of the point-charge binding
   double max_approach_ = 0.0;  // longest approach [s]
+  bool intact_stop_ = false;   // time.intact_stop applies to this run
   ImpactProgress at_;  // phase, segment, output clocks, watchdog
   dem::Particles launch_agg_;               // the agglomerate at the launch, at rest (breakage.hpp)
   std::vector<ContactEdge> launch_edges_;   // its contacts

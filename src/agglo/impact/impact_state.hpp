@@ -19,7 +19,7 @@ enum class ImpactPhase : int { launch = 0, approach = 1, contact = 2, done = 3 }
 struct ImpactProgress {
   ImpactPhase phase = ImpactPhase::launch;
   bool contact = false;             // the projectile has touched
-  bool early_stop = false;          // the last contact segment stopped early (clearly broken)
+  bool early_stop = false;          // the last contact segment stopped early (clearly broken, intact for good)
   int extensions = 0;               // index of the current contact segment
   double t_contact = 0.0;           // since launch [s]
   double t_stop = 0.0;              // end of the current contact segment (DEM time) [s]

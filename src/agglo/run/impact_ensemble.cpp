@@ -23,6 +23,7 @@ impact::ImpactBatch impact_batch(const impact::ImpactCase& c, const dem::Particl
       jobs.push_back({impact_job_key(b), [&c, &relaxed, b](const JobContext& ctx) {
                         auto ck = c;
                         ck.projectile.offset_radii = b.offset_radii;
+                        ck.time.bisection = b.bisection;
                         auto poll = [&ctx](double, double) { throw_if_cancelled(ctx.cancel); };
                         if (b.orientations <= 1)
                           return writers::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &relaxed));
@@ -46,10 +47,11 @@ impact::ImpactBatch impact_batch(const impact::ImpactCase& c, const dem::Particl
 }
 
 impact::SpeedBatch speed_batch(const impact::ImpactCase& c, const dem::Particles& relaxed, EnsembleOptions opt) {
-  return [run = impact_batch(c, relaxed, std::move(opt)), offset = c.projectile.offset_radii](
-             const std::vector<double>& speeds) {
+  // time.intact_stop = "vcrit" decides break-up only: a sticking bisection runs to full length.
+  return [run = impact_batch(c, relaxed, std::move(opt)), offset = c.projectile.offset_radii,
+          breakup = !c.vcrit.sticking](const std::vector<double>& speeds) {
     std::vector<impact::ImpactJob> jobs;
-    for (double v : speeds) jobs.push_back({v, offset});
+    for (double v : speeds) jobs.push_back({v, offset, 0, 1, breakup});
     return run(jobs);
   };
 }
