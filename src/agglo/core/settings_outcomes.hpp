@@ -15,6 +15,9 @@ struct OutcomesSettings {
                  Range::open_closed(0.0, 1e3)};
     Reals diameters{t, {"outcome_grid.diameters", "m", "sphere diameters of both partners (increasing)"},
                     std::nullopt, Range::open_closed(0.0, 1e-2)};
+    Reals primaries{t, {"outcome_grid.primaries", "", "primary counts of both aggregate partners (increasing; "
+                                                       "instead of diameters)"},
+                    std::nullopt, Range::closed(2.0, 1e5)};
     Integer impacts{t, {"outcome_grid.impacts", "", "impacts per grid node (sampled impact parameters)"}, 8, 1,
                     100000};
     Real max_offset{t, {"outcome_grid.max_offset", "", "largest impact parameter b / (r_1 + r_2); 0 = every impact head-on"},
