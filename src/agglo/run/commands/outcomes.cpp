@@ -1,4 +1,5 @@
-// agglo outcomes: DEM sphere-sphere impacts over a grid of normal speed x both diameters, tabulated as
+// agglo outcomes: DEM sphere-sphere or aggregate-aggregate impacts (impact/outcome_aggregates.hpp) over a
+// grid of normal speed x both partners' sizes, tabulated as
 // P_stick, P_bounce, P_break with Wilson intervals (impact/outcome_grid.hpp); results.nc is an outcome
 // table of the DSMC (outcomes.dry_model = "table"). Every impact is a job of the ensemble runner
 // (journal, --resume, all cores, MPI ranks).
@@ -87,8 +88,9 @@ class Outcomes final : public Command {
  public:
   std::string_view name() const override { return "outcomes"; }
   std::string_view help() const override {
-    return "Sphere-sphere outcome table from DEM impacts: P_stick, P_bounce, P_break over [outcome_grid] speeds x "
-           "diameters x diameters (the DSMC's dry outcome table, docs/outcomes.md)";
+    return "Sphere-sphere or aggregate-aggregate outcome table from DEM impacts: P_stick, P_bounce, P_break (and "
+           "fragment statistics) over [outcome_grid] speeds x sizes x sizes (the DSMC's dry outcome table, "
+           "docs/outcomes.md)";
   }
   bool resumable() const override { return true; }
   Estimate estimate(Config& cfg, const RunContext& ctx) const override {
