@@ -54,6 +54,8 @@ run collide agglomerate_wall_gas
 run collide breakage_wall_bpca --set projectile.speed=2 --set time.after_contact=1.1e-4
 # The sphere-sphere outcome table of agglo outcomes (docs/outcomes.md), 288 impacts.
 run outcomes outcomes_sphere_sphere
+# The aggregate-aggregate outcome table (docs/outcomes.md "Aggregate tables"), 240 impacts, 0.8 s.
+run outcomes outcomes_aggregates
 for c in "$C"/seed002_*.toml; do
   run acoustic "$(basename "$c" .toml)" --set time.end=0.02 --set "output.snapshot_times=[0.0,0.01]" --set "output.psd_times=[0.0,0.02]"
 done

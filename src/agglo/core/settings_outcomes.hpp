@@ -1,6 +1,7 @@
 #pragma once
 // Settings table of agglo outcomes (impact/outcome_grid.hpp, docs/outcomes.md): the grid of the
-// sphere-sphere outcome table. The DEM case itself is read through the impact tables (settings_impact.hpp).
+// sphere-sphere or aggregate-aggregate outcome table (primaries instead of diameters:
+// impact/outcome_aggregates.hpp). The DEM case itself is read through the impact tables (settings_impact.hpp).
 #include <cstdint>
 #include <vector>
 
@@ -10,11 +11,14 @@ namespace agglo::settings {
 
 struct OutcomesSettings {
   struct Grid {
-    Table t{"outcome_grid", "outcomes", "grid of the sphere-sphere outcome table (agglo outcomes)"};
+    Table t{"outcome_grid", "outcomes", "grid of the sphere-sphere or aggregate-aggregate outcome table (agglo outcomes)"};
     Reals speeds{t, {"outcome_grid.speeds", "m/s", "normal relative speeds at contact (increasing)"}, std::nullopt,
                  Range::open_closed(0.0, 1e3)};
-    Reals diameters{t, {"outcome_grid.diameters", "m", "sphere diameters of both partners (increasing)"},
+    Reals diameters{t, {"outcome_grid.diameters", "m", "sphere diameters of both partners (increasing; or primaries)"},
                     std::nullopt, Range::open_closed(0.0, 1e-2)};
+    Reals primaries{t, {"outcome_grid.primaries", "", "primary counts of both aggregate partners (increasing; "
+                                                       "instead of diameters)"},
+                    std::nullopt, Range::closed(2.0, 1e5)};
     Integer impacts{t, {"outcome_grid.impacts", "", "impacts per grid node (sampled impact parameters)"}, 8, 1,
                     100000};
     Real max_offset{t, {"outcome_grid.max_offset", "", "largest impact parameter b / (r_1 + r_2); 0 = every impact head-on"},

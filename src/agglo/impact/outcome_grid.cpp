@@ -8,6 +8,7 @@
 #include "agglo/core/rng.hpp"
 #include "agglo/core/settings_outcomes.hpp"
 #include "agglo/impact/estimate.hpp"
+#include "agglo/impact/outcome_aggregates.hpp"
 #include "agglo/impact/vcrit.hpp"
 
 namespace agglo::impact {
@@ -32,12 +33,23 @@ OutcomeGridSpec parse_outcome_grid(const ConfigSection& root) {
   OutcomeGridSpec g;
   g.speeds = k.speeds.read(s);
   check_increasing(k.speeds, s, g.speeds);
-  g.diameters = k.diameters.read(s);
-  check_increasing(k.diameters, s, g.diameters);
+  if (k.primaries.present(s)) {  // aggregate partners: the diameters follow from the case (outcome_aggregates.hpp)
+    if (k.diameters.present(s)) k.diameters.reject(s, fmt::format("give {} or {}, not both", k.diameters.dotted(),
+                                                                  k.primaries.dotted()));
+    const std::vector<double> n = k.primaries.read(s);
+    check_increasing(k.primaries, s, n);
+    for (double x : n) {
+      if (x != std::floor(x)) k.primaries.reject(s, fmt::format("{:g} is not a whole number", x));
+      g.primaries.push_back(static_cast<int>(x));
+    }
+  } else {
+    g.diameters = k.diameters.read(s);
+    check_increasing(k.diameters, s, g.diameters);
+  }
   g.impacts = static_cast<int>(k.impacts.read(s));
   g.max_offset = k.max_offset.read(s);
   g.seed = static_cast<std::uint64_t>(k.seed.read(s));
-  const double nd = static_cast<double>(g.diameters.size());
+  const double nd = static_cast<double>(g.sizes());
   const double total = static_cast<double>(g.speeds.size()) * nd * (nd + 1.0) / 2.0 * g.impacts;
   if (total > kMaxGridImpacts)
     k.impacts.reject(s, fmt::format("gives {:.0f} impacts over the grid, more than the limit of {:.0f}", total,
@@ -64,7 +76,7 @@ void check_sphere_sphere(const ConfigSection& root, const ImpactCase& c) {
 
 std::vector<OutcomeImpact> outcome_impacts(const OutcomeGridSpec& s) {
   std::vector<OutcomeImpact> out;
-  const std::size_t nd = s.diameters.size();
+  const std::size_t nd = s.sizes();
   for (std::size_t iv = 0; iv < s.speeds.size(); ++iv)
     for (std::size_t i1 = 0; i1 < nd; ++i1)
       for (std::size_t i2 = i1; i2 < nd; ++i2) {
@@ -77,6 +89,7 @@ std::vector<OutcomeImpact> outcome_impacts(const OutcomeGridSpec& s) {
 }
 
 ImpactCase outcome_case(const ImpactCase& base, const OutcomeGridSpec& s, const OutcomeImpact& j) {
+  if (s.aggregates()) return aggregate_outcome_case(base, s, j);
   ImpactCase c = base;
   const double r1 = 0.5 * s.diameters[j.i1], r2 = 0.5 * s.diameters[j.i2];
   c.agglomerate.particles.at(0).radius = r1;
@@ -93,17 +106,19 @@ double outcome_launch_speed(const OutcomeGridSpec& s, const OutcomeImpact& j) {
 Estimate outcomes_estimate(const ImpactCase& base, const OutcomeGridSpec& s, int threads) {
   constexpr double kNodeBytes = 400.0, kJournalLineBytes = 250.0;  // a CSV row + 16 values; one journal line
   const auto& g = settings::outcomes_settings().grid;
-  const std::vector<std::string> keys = {std::string(g.speeds.dotted()), std::string(g.diameters.dotted()),
+  const std::vector<std::string> keys = {std::string(g.speeds.dotted()),
+                                         std::string(s.aggregates() ? g.primaries.dotted() : g.diameters.dotted()),
                                          std::string(g.impacts.dotted())};
   Estimate e;
-  const std::size_t nd = s.diameters.size();
+  const std::size_t nd = s.sizes();
   double memory = 0.0;
   for (std::size_t i1 = 0; i1 < nd; ++i1)
     for (std::size_t i2 = i1; i2 < nd; ++i2)
       for (std::size_t iv = 0; iv < s.speeds.size(); ++iv) {
         const OutcomeImpact worst{iv, i1, i2, 0, s.max_offset};  // fastest launch, widest approach
         const ImpactCase c = outcome_case(base, s, worst);
-        add_to(e.steps, 2.0 * run_steps_bound(c, outcome_launch_speed(s, worst)) * s.impacts, keys);
+        const double particles = s.aggregates() ? s.primaries[i1] + s.primaries[i2] : 2.0;
+        add_to(e.steps, particles * run_steps_bound(c, outcome_launch_speed(s, worst)) * s.impacts, keys);
         if (iv == 0) memory = std::max(memory, collide_estimate(c).memory.value);
       }
   add_to(e.steps, 0.0, {std::string(impact_keys().time.after_contact.dotted())});
@@ -128,14 +143,19 @@ WilsonInterval wilson_interval(std::int64_t k, std::int64_t n) {
   return {k == 0 ? 0.0 : (centre - half) / (1.0 + z2 / nn), k == n ? 1.0 : (centre + half) / (1.0 + z2 / nn)};
 }
 
-OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vector<PairOutcome>& outcomes) {
+OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vector<PairOutcome>& outcomes,
+                                    const std::vector<double>& fragments, const std::vector<double>& largest) {
   OutcomeGridResult r;
   r.spec = spec;
-  const std::size_t n = spec.speeds.size() * spec.diameters.size() * spec.diameters.size();
+  const std::size_t n = spec.speeds.size() * spec.sizes() * spec.sizes();
   r.sticks.assign(n, 0);
   r.bounces.assign(n, 0);
   r.breaks.assign(n, 0);
   r.impacts.assign(n, 0);
+  if (spec.aggregates()) {
+    r.fragments.assign(n, 0.0);
+    r.largest_fraction.assign(n, 0.0);
+  }
   const auto jobs = outcome_impacts(spec);
   for (std::size_t k = 0; k < jobs.size() && k < outcomes.size(); ++k) {
     const OutcomeImpact& j = jobs[k];
@@ -144,7 +164,20 @@ OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vect
       const std::size_t i = m == 0 ? r.index(j.iv, j.i1, j.i2) : r.index(j.iv, j.i2, j.i1);
       ++r.impacts[i];
       ++(outcomes[k] == PairOutcome::stick ? r.sticks : outcomes[k] == PairOutcome::bounce ? r.bounces : r.breaks)[i];
+      if (spec.aggregates() && outcomes[k] == PairOutcome::brk) {
+        r.fragments[i] += fragments.at(k);
+        r.largest_fraction[i] += largest.at(k);
+      }
     }
+  }
+  for (std::size_t i = 0; i < r.fragments.size(); ++i) {  // sums over the breaks -> their means
+    const double nb = static_cast<double>(r.breaks[i]);
+    r.fragments[i] = r.breaks[i] > 0 ? r.fragments[i] / nb : std::nan("");
+    r.largest_fraction[i] = r.breaks[i] > 0 ? r.largest_fraction[i] / nb : std::nan("");
+    // mean f_L >= 1/mean N_f holds exactly (Jensen); with equal fragments it can miss by a rounding error
+    const double floor_fl = 1.0 / r.fragments[i];
+    if (r.largest_fraction[i] < floor_fl && r.largest_fraction[i] > floor_fl * (1.0 - 1e-12))
+      r.largest_fraction[i] = floor_fl;
   }
   return r;
 }

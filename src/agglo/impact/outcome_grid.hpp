@@ -11,6 +11,9 @@
 // Per node: counts and P = k/n with the 95 % Wilson score interval
 //   (p + z^2/2n -+ z sqrt(p(1-p)/n + z^2/4n^2)) / (1 + z^2/n),  z = 1.959964.
 // The table is symmetric: node (d_1, d_2) with d_1 > d_2 copies (d_2, d_1).
+// Aggregate partners (outcome_grid.primaries instead of diameters): impact/outcome_aggregates.hpp; their
+// tables also carry, per node, the mean number of fragments and the mean mass fraction of the largest
+// fragment over the impacts that broke (NaN where none broke).
 #include <cstdint>
 #include <vector>
 
@@ -22,13 +25,18 @@ namespace agglo::impact {
 
 
 struct OutcomeGridSpec {
-  std::vector<double> speeds, diameters;  // [m/s], [m]
+  std::vector<double> speeds, diameters;  // [m/s], [m] (aggregates: volume-equivalent, from primaries)
+  std::vector<int> primaries;             // aggregate partners' primary counts; empty: sphere partners
+  double primary_radius = 0.0;            // a [m] of the aggregate partners
   int impacts = 8;
   double max_offset = 0.5;
   std::uint64_t seed = 1;
+  bool aggregates() const { return !primaries.empty(); }
+  std::size_t sizes() const { return aggregates() ? primaries.size() : diameters.size(); }
 };
 
-// Reads [outcome_grid] (ConfigError naming the key: axes not strictly increasing, more than 1e6 impacts).
+// Reads [outcome_grid] (ConfigError naming the key: axes not strictly increasing, more than 1e6 impacts,
+// both or neither of diameters and primaries, a primary count that is not a whole number).
 OutcomeGridSpec parse_outcome_grid(const ConfigSection& root);
 // ConfigError unless `c` is a one-sphere list target hit by a sphere, without a wall, with time.dt = 0
 // (each node's step is T0 / time.steps_per_period of its own pair).
@@ -65,12 +73,19 @@ WilsonInterval wilson_interval(std::int64_t k, std::int64_t n);
 struct OutcomeGridResult {
   OutcomeGridSpec spec;
   std::vector<std::int64_t> sticks, bounces, breaks, impacts;
+  // Aggregates only (else empty): over the node's impacts that broke, the mean number of fragments and
+  // the mean mass fraction of the largest [1]; NaN where none broke. The mean fraction is raised to
+  // 1/(mean number) when below it by a rounding error only (equal fragments; the DSMC requires f_L >= 1/N_f).
+  std::vector<double> fragments, largest_fraction;
   std::size_t index(std::size_t iv, std::size_t i1, std::size_t i2) const {
-    const std::size_t nd = spec.diameters.size();
+    const std::size_t nd = spec.sizes();
     return (iv * nd + i1) * nd + i2;
   }
 };
-// `outcomes[k]` is the outcome of impact k of outcome_impacts(spec).
-OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vector<PairOutcome>& outcomes);
+// `outcomes[k]` is the outcome of impact k of outcome_impacts(spec); for aggregates `fragments[k]` and
+// `largest[k]` its number of fragments and largest mass fraction (read where outcomes[k] is a break).
+OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vector<PairOutcome>& outcomes,
+                                    const std::vector<double>& fragments = {},
+                                    const std::vector<double>& largest = {});
 
 }  // namespace agglo::impact

@@ -42,14 +42,11 @@ structure::Aggregate generate(const ConfigSection& ag, AgglomerateSpec& a, const
   a.primaries = static_cast<int>(ka.primaries.read(ag));
   a.radius_std = ka.radius_std.read(ag);
   a.seed = ka.seed.read(ag);
-  const auto seed = static_cast<std::uint64_t>(a.seed);
   if (a.shape == "fractal") {
     a.fractal_dimension = ka.fractal_dimension.read(ag);
     a.fractal_prefactor = ka.fractal_prefactor.read(ag);
-    return structure::build_fractal({a.primaries, a.fractal_dimension, a.fractal_prefactor, a.radius, a.radius_std, seed});
   }
-  const auto kind = a.shape == "bpca" ? structure::Ballistic::particle_cluster : structure::Ballistic::cluster_cluster;
-  return structure::build_ballistic({kind, a.primaries, a.radius, a.radius_std, seed});
+  return build_structure(a);
 }
 
 // Keys of the generated shapes set with a shape that does not read them.
@@ -65,6 +62,14 @@ void reject_unused_keys(const ConfigSection& ag, const AgglomerateSpec& a, const
 }
 
 }  // namespace
+
+structure::Aggregate build_structure(const AgglomerateSpec& a) {
+  const auto seed = static_cast<std::uint64_t>(a.seed);
+  if (a.shape == "fractal")
+    return structure::build_fractal({a.primaries, a.fractal_dimension, a.fractal_prefactor, a.radius, a.radius_std, seed});
+  const auto kind = a.shape == "bpca" ? structure::Ballistic::particle_cluster : structure::Ballistic::cluster_cluster;
+  return structure::build_ballistic({kind, a.primaries, a.radius, a.radius_std, seed});
+}
 
 bool is_structure_shape(std::string_view shape) {
   return shape == "fractal" || shape == "bpca" || shape == "bcca" || shape == "file";

@@ -34,6 +34,10 @@ void parse_structure(const ConfigSection& ag, const std::string& case_file, Aggl
 void parse_structure(const ConfigSection& sec, const std::string& case_file, AgglomerateSpec& a,
                      const StructureKeys& keys);
 
+// The structure of a generated shape (fractal, bpca, bcca) from a's request (primaries, D_f, k_f, radius,
+// radius_std, seed); structure::BuildError when the method cannot meet it.
+structure::Aggregate build_structure(const AgglomerateSpec& a);
+
 // Appends the structure's primaries to p, scaled to the JKR equilibrium overlap (above; delta0 of the
 // material of a's first primary), with the materials and densities of c.
 void place_structure(const AgglomerateSpec& a, const ImpactCase& c, dem::Particles& p);

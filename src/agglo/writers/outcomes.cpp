@@ -36,9 +36,16 @@ io::Table outcomes_table(const OutcomeGridResult& r) {
   const std::size_t nd = r.spec.diameters.size();
   io::Table t("outcomes.csv", {{ax[0], r.spec.speeds.size()}, {ax[1], nd}, {ax[2], nd}}, "{:.8g}");
   t.real(ax[0], acoustics::kOutcomeAxisUnits[0], "normal relative speed at contact", r.spec.speeds).over({ax[0]});
-  t.real(ax[1], acoustics::kOutcomeAxisUnits[1], "diameter of the first sphere (the target)", r.spec.diameters)
+  const bool agg = r.spec.aggregates();
+  t.real(ax[1], acoustics::kOutcomeAxisUnits[1],
+         agg ? "volume-equivalent diameter 2 a N^(1/3) of the first aggregate (the target)"
+             : "diameter of the first sphere (the target)",
+         r.spec.diameters)
       .over({ax[1]});
-  t.real(ax[2], acoustics::kOutcomeAxisUnits[2], "diameter of the second sphere (the projectile)", r.spec.diameters)
+  t.real(ax[2], acoustics::kOutcomeAxisUnits[2],
+         agg ? "volume-equivalent diameter 2 a N^(1/3) of the second aggregate (the projectile)"
+             : "diameter of the second sphere (the projectile)",
+         r.spec.diameters)
       .over({ax[2]});
   const std::array<const std::vector<std::int64_t>*, 3> counts = {&r.sticks, &r.bounces, &r.breaks};
   const std::array<const char*, 3> what = {"sticks", "bounces", "breaks"};
@@ -49,6 +56,11 @@ io::Table outcomes_table(const OutcomeGridResult& r) {
            std::move(p.lo));
     t.real(std::string(pn[k]) + "_hi", "1", fmt::format("upper end of the 95 % Wilson interval of {}", pn[k]),
            std::move(p.hi));
+  }
+  if (agg) {  // over the node's breaks; NaN where none broke (acoustics/outcome_table.hpp reads them)
+    const auto& fs = acoustics::kOutcomeFragmentStats;
+    t.real(fs[0], "1", acoustics::kOutcomeFragmentMeanings[0], r.fragments);
+    t.real(fs[1], "1", acoustics::kOutcomeFragmentMeanings[1], r.largest_fraction);
   }
   t.integer("impacts", "1", "DEM impacts at the node", r.impacts);
   const std::array<const char*, 3> past = {"stuck", "bounced", "broke"};

@@ -1,9 +1,12 @@
-// agglo outcomes: DEM sphere-sphere impacts over a grid of normal speed x both diameters, tabulated as
+// agglo outcomes: DEM sphere-sphere or aggregate-aggregate impacts (impact/outcome_aggregates.hpp) over a
+// grid of normal speed x both partners' sizes, tabulated as
 // P_stick, P_bounce, P_break with Wilson intervals (impact/outcome_grid.hpp); results.nc is an outcome
 // table of the DSMC (outcomes.dry_model = "table"). Every impact is a job of the ensemble runner
 // (journal, --resume, all cores, MPI ranks).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include "agglo/impact/outcome_aggregates.hpp"
 #include "agglo/impact/outcome_grid.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/run/ensemble.hpp"
@@ -23,15 +26,33 @@ struct OutcomesCase {
 OutcomesCase outcomes_case(Config& cfg) {
   OutcomesCase c;
   c.dem = impact::parse_impact_case(cfg, /*one_sphere_target=*/true);
-  impact::check_sphere_sphere(cfg.root(), c.dem);
   c.grid = impact::parse_outcome_grid(cfg.root());
+  if (c.grid.aggregates())
+    impact::check_aggregate_pair(cfg.root(), c.dem, c.grid);
+  else
+    impact::check_sphere_sphere(cfg.root(), c.dem);
   return c;
 }
 
 // Journal key: the node's values (shortest round-trip digits) and the sample.
 std::string outcome_job_key(const impact::OutcomeGridSpec& g, const impact::OutcomeImpact& j) {
+  if (g.aggregates())
+    return fmt::format("v_n={} n1={} n2={} sample={} b={}", g.speeds[j.iv], g.primaries[j.i1], g.primaries[j.i2],
+                       j.sample, j.b_fraction);
   return fmt::format("v_n={} d1={} d2={} sample={} b={}", g.speeds[j.iv], g.diameters[j.i1], g.diameters[j.i2],
                      j.sample, j.b_fraction);
+}
+
+// An aggregate impact's journal entry: the outcome, and for a break its fragment statistics.
+nlohmann::json aggregate_result(const impact::ImpactCase& one, const impact::ImpactOutcome& o) {
+  const auto f = impact::classify_aggregate_pair(o.components, impact::pair_masses(one),
+                                                 one.agglomerate.structure.size());
+  nlohmann::json r{{"outcome", static_cast<int>(f.outcome)}, {"steps", o.steps}};
+  if (f.outcome == impact::PairOutcome::brk) {
+    r["fragments"] = f.fragments;
+    r["largest"] = f.largest_fraction;
+  }
+  return r;
 }
 
 std::vector<Job> outcome_jobs(const OutcomesCase& c, const std::vector<impact::OutcomeImpact>& impacts) {
@@ -42,6 +63,7 @@ std::vector<Job> outcome_jobs(const OutcomesCase& c, const std::vector<impact::O
                       auto poll = [&ctx](double, double) { throw_if_cancelled(ctx.cancel); };
                       const impact::ImpactOutcome o =
                           impact::run_impact(one, impact::outcome_launch_speed(c.grid, j), nullptr, poll);
+                      if (c.grid.aggregates()) return aggregate_result(one, o);
                       return nlohmann::json{{"outcome", static_cast<int>(impact::classify_pair(o))},
                                             {"steps", o.steps}};
                     }});
@@ -49,6 +71,13 @@ std::vector<Job> outcome_jobs(const OutcomesCase& c, const std::vector<impact::O
 }
 
 std::string provenance(const OutcomesCase& c, std::size_t impacts) {
+  if (c.grid.aggregates())
+    return fmt::format("agglo outcomes: {} DEM aggregate-aggregate impacts of case '{}' ({} target, {} projectile, "
+                       "primary radius {:g} m, primary counts [{}] as volume-equivalent diameters 2 a N^(1/3); "
+                       "structures and projectile orientation drawn per impact, docs/outcomes.md); impact parameter "
+                       "b^2 uniform up to ({:g} (r_1 + r_2))^2, seed {}, launch speed v_n / sqrt(1 - (b/(r_1 + r_2))^2)",
+                       impacts, c.dem.name, c.dem.agglomerate.shape, c.dem.projectile.shape, c.grid.primary_radius,
+                       fmt::join(c.grid.primaries, ", "), c.grid.max_offset, c.grid.seed);
   return fmt::format("agglo outcomes: {} DEM sphere-sphere impacts of case '{}' (one-sphere target, "
                      "docs/outcomes.md); impact parameter b^2 uniform up to ({:g} (r_1 + r_2))^2, seed {}, "
                      "launch speed v_n / sqrt(1 - (b/(r_1 + r_2))^2)",
@@ -59,8 +88,9 @@ class Outcomes final : public Command {
  public:
   std::string_view name() const override { return "outcomes"; }
   std::string_view help() const override {
-    return "Sphere-sphere outcome table from DEM impacts: P_stick, P_bounce, P_break over [outcome_grid] speeds x "
-           "diameters x diameters (the DSMC's dry outcome table, docs/outcomes.md)";
+    return "Sphere-sphere or aggregate-aggregate outcome table from DEM impacts: P_stick, P_bounce, P_break (and "
+           "fragment statistics) over [outcome_grid] speeds x sizes x sizes (the DSMC's dry outcome table, "
+           "docs/outcomes.md)";
   }
   bool resumable() const override { return true; }
   Estimate estimate(Config& cfg, const RunContext& ctx) const override {
@@ -82,23 +112,35 @@ class Outcomes final : public Command {
     const auto done = run_jobs(jobs, {ctx.threads, &journal, ctx.cancel, &ctx.report(), "outcomes"});
     rethrow_first_error(done, &jobs);
     std::vector<impact::PairOutcome> outcomes;
+    std::vector<double> fragments, largest;  // per impact; read for the breaks
     long long steps = 0;
     for (const auto& o : done) {
       outcomes.push_back(static_cast<impact::PairOutcome>(o.result.at("outcome").get<int>()));
       steps += o.result.at("steps").get<long long>();
+      fragments.push_back(o.result.value("fragments", 0.0));
+      largest.push_back(o.result.value("largest", 0.0));
     }
-    const auto table = impact::tabulate_outcomes(c.grid, outcomes);
+    const auto table = impact::tabulate_outcomes(c.grid, outcomes, fragments, largest);
     if (ctx.formats.csv) writers::write_outcomes(out, table);
     CommandResult r;
     r.data = std::make_shared<const io::Dataset>(writers::outcomes_dataset(table, provenance(c, impacts.size())));
-    std::int64_t sticks = 0;
-    for (const auto& o : outcomes) sticks += o == impact::PairOutcome::stick;
+    std::int64_t sticks = 0, breaks = 0;
+    for (const auto& o : outcomes) {
+      sticks += o == impact::PairOutcome::stick;
+      breaks += o == impact::PairOutcome::brk;
+    }
     r.summary = {{"impacts", impacts.size()}, {"stuck", sticks}, {"dem_steps", steps},
                  {"nodes", table.impacts.size()}};
     r.seed = static_cast<long long>(c.grid.seed);
-    ctx.report().info(fmt::format("{}: {} impacts over {} speeds x {} x {} diameters: {} stuck, {} bounced", c.dem.name,
-                                  impacts.size(), c.grid.speeds.size(), c.grid.diameters.size(),
-                                  c.grid.diameters.size(), sticks, static_cast<std::int64_t>(impacts.size()) - sticks));
+    const auto n = static_cast<std::int64_t>(impacts.size());
+    if (c.grid.aggregates())
+      ctx.report().info(fmt::format("{}: {} impacts over {} speeds x {} x {} primary counts: {} stuck, {} bounced, {} broke",
+                                    c.dem.name, n, c.grid.speeds.size(), c.grid.sizes(), c.grid.sizes(), sticks,
+                                    n - sticks - breaks, breaks));
+    else
+      ctx.report().info(fmt::format("{}: {} impacts over {} speeds x {} x {} diameters: {} stuck, {} bounced", c.dem.name,
+                                    n, c.grid.speeds.size(), c.grid.diameters.size(), c.grid.diameters.size(), sticks,
+                                    n - sticks));
     return r;
   }
 };

@@ -1,0 +1,159 @@
+// Aggregate-aggregate outcome tables (impact/outcome_aggregates.hpp, docs/outcomes.md "Aggregate tables"):
+// the stick/bounce/break classification on constructed contact graphs, the fragment mass conserved in DEM
+// impacts, the diameters 2 a N^(1/3), the per-impact structures, the fragment statistics of the tabulation
+// and the table read back by the DSMC's reader.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "agglo/acoustics/outcome_table.hpp"
+#include "agglo/core/config.hpp"
+#include "agglo/core/constants.hpp"
+#include "agglo/core/error.hpp"
+#include "agglo/impact/outcome_aggregates.hpp"
+#include "agglo/writers/outcomes.hpp"
+
+using namespace agglo;
+using namespace agglo::impact;
+
+namespace {
+
+// Two BPCA partners of 0.5 um primaries of the seed material (cases/outcomes_aggregates.toml, smaller grid).
+std::string aggregate_case(const std::string& grid, const std::string& extra = "") {
+  return R"(
+[material]
+density = 2500.0
+youngs_modulus = 1e9
+poisson_ratio = 0.33
+surface_energy = 0.01
+restitution = 0.7
+friction = 0.3
+[agglomerate]
+shape = "bpca"
+radius = 0.5e-6
+)" + extra + R"(
+[projectile]
+shape = "bpca"
+gap_radii = 0.5
+[time]
+after_contact = 2e-6
+[outcome_grid]
+)" + grid;
+}
+
+struct AggParsed {
+  ImpactCase dem;
+  OutcomeGridSpec grid;
+};
+AggParsed parse_aggregates(const std::string& grid, const std::string& extra = "") {
+  Config cfg = Config::from_string(aggregate_case(grid, extra), "agg.toml");
+  AggParsed p{parse_impact_case(cfg, true), parse_outcome_grid(cfg.root())};
+  check_aggregate_pair(cfg.root(), p.dem, p.grid);
+  cfg.check_unknown_keys();
+  return p;
+}
+
+const std::vector<double> kMasses = {1.0, 1.0, 2.0, 2.0};  // target {0, 1}, projectile {2, 3}
+
+}  // namespace
+
+TEST(OutcomeAggregates, ClassifiesConstructedContactGraphs) {
+  auto f = classify_aggregate_pair({{0, 1, 2, 3}}, kMasses, 2);
+  EXPECT_EQ(f.outcome, PairOutcome::stick);
+  EXPECT_EQ(f.fragments, 1);
+  EXPECT_EQ(f.largest_fraction, 1.0);
+  f = classify_aggregate_pair({{0, 1}, {2, 3}}, kMasses, 2);  // the two partners apart
+  EXPECT_EQ(f.outcome, PairOutcome::bounce);
+  EXPECT_EQ(f.fragments, 2);
+  EXPECT_DOUBLE_EQ(f.largest_fraction, 4.0 / 6.0);
+  f = classify_aggregate_pair({{0}, {1, 2, 3}}, kMasses, 2);  // the target cut in two: a primary knocked off
+  EXPECT_EQ(f.outcome, PairOutcome::brk);
+  EXPECT_EQ(f.fragments, 2);
+  EXPECT_DOUBLE_EQ(f.largest_fraction, 5.0 / 6.0);
+  EXPECT_DOUBLE_EQ(f.fragment_mass, 6.0);
+  f = classify_aggregate_pair({{0, 2}, {1, 3}}, kMasses, 2);  // two parts, but not the partners
+  EXPECT_EQ(f.outcome, PairOutcome::brk);
+  f = classify_aggregate_pair({{0, 1}, {2}, {3}}, kMasses, 2);  // the projectile in two, apart from the target
+  EXPECT_EQ(f.outcome, PairOutcome::brk);
+  EXPECT_EQ(f.fragments, 3);
+  EXPECT_DOUBLE_EQ(f.largest_fraction, 1.0 / 3.0);
+  EXPECT_THROW(classify_aggregate_pair({{0, 1}, {1, 2, 3}}, kMasses, 2), std::invalid_argument);  // twice
+  EXPECT_THROW(classify_aggregate_pair({{0, 1}, {2}}, kMasses, 2), std::invalid_argument);        // 3 missing
+}
+
+TEST(OutcomeAggregates, DiametersAndStructuresPerImpact) {
+  const AggParsed p = parse_aggregates("speeds = [1.0]\nprimaries = [2, 8]\nimpacts = 2\n");
+  ASSERT_EQ(p.grid.diameters.size(), 2u);
+  EXPECT_DOUBLE_EQ(p.grid.diameters[0], 2.0 * 0.5e-6 * std::cbrt(2.0));
+  EXPECT_DOUBLE_EQ(p.grid.diameters[1], 2.0 * 0.5e-6 * 2.0);
+  const auto jobs = outcome_impacts(p.grid);
+  ASSERT_EQ(jobs.size(), 3u * 2u);  // (2, 2), (2, 8), (8, 8) x 2 samples
+  const ImpactCase a = outcome_case(p.dem, p.grid, jobs[2]), b = outcome_case(p.dem, p.grid, jobs[3]);
+  EXPECT_EQ(a.agglomerate.structure.size(), 2u);
+  EXPECT_EQ(a.projectile.body.structure.size(), 8u);
+  EXPECT_NE(a.agglomerate.seed, b.agglomerate.seed);  // every sample its own structures
+  EXPECT_NE(a.projectile.body.seed, b.projectile.body.seed);
+  EXPECT_DOUBLE_EQ(a.projectile.offset_radii * 0.5e-6, jobs[2].b_fraction * 0.5 * (p.grid.diameters[0] + p.grid.diameters[1]));
+  const auto m = pair_masses(a);
+  ASSERT_EQ(m.size(), 10u);
+  EXPECT_NEAR(m[0], 2500.0 * 4.0 / 3.0 * constants::pi * std::pow(0.5e-6, 3), 1e-12 * m[0]);
+}
+
+TEST(OutcomeAggregates, RefusesWhatItCannotTabulate) {
+  EXPECT_THROW(parse_aggregates("speeds = [1.0]\nprimaries = [2, 4]\ndiameters = [1e-6]\n"), ConfigError);
+  EXPECT_THROW(parse_aggregates("speeds = [1.0]\nprimaries = [2, 4.5]\n"), ConfigError);
+  EXPECT_THROW(parse_aggregates("speeds = [1.0]\nprimaries = [4, 2]\n"), ConfigError);
+  EXPECT_THROW(parse_aggregates("speeds = [1.0]\nprimaries = [2, 4]\n", "radius_std = 1.2\n"), ConfigError);
+}
+
+// Every DEM impact of a small grid (2 + 2 primaries at 0.1, 3 and 30 m/s) conserves the fragment mass: the
+// fragments' masses add up to the pair's; the fast impacts break, with their statistics in the table
+// (N_f >= 2, 1/N_f <= f_L < 1, NaN where none broke), which the DSMC's reader accepts.
+TEST(OutcomeAggregates, FragmentMassConservedAndTableReadByTheDsmc) {
+  const AggParsed p = parse_aggregates("speeds = [0.1, 3.0, 30.0]\nprimaries = [2]\nimpacts = 3\n");
+  std::vector<PairOutcome> out;
+  std::vector<double> nf, fl;
+  for (const auto& j : outcome_impacts(p.grid)) {
+    const ImpactCase c = outcome_case(p.dem, p.grid, j);
+    const ImpactOutcome o = run_impact(c, outcome_launch_speed(p.grid, j));
+    const auto m = pair_masses(c);
+    double total = 0.0;
+    for (double x : m) total += x;
+    const PairFragments f = classify_aggregate_pair(o.components, m, c.agglomerate.structure.size());
+    EXPECT_NEAR(f.fragment_mass, total, 1e-14 * total);
+    EXPECT_GE(f.largest_fraction, 1.0 / f.fragments);
+    out.push_back(f.outcome);
+    nf.push_back(f.fragments);
+    fl.push_back(f.largest_fraction);
+  }
+  const OutcomeGridResult t = tabulate_outcomes(p.grid, out, nf, fl);
+  EXPECT_EQ(t.sticks[0], 3);  // 0.1 m/s sticks
+  EXPECT_EQ(t.breaks[2], 3);  // 30 m/s breaks
+  EXPECT_TRUE(std::isnan(t.fragments[0]));
+  EXPECT_GE(t.fragments[2], 2.0);
+  const auto table = acoustics::outcome_table_from_dataset(writers::outcomes_dataset(t, "test"));
+  EXPECT_DOUBLE_EQ(table.axes[1][0], p.grid.diameters[0]);
+  EXPECT_DOUBLE_EQ(table.p_break[2], 1.0);
+  const auto fs = table.fragments_at(30.0, p.grid.diameters[0], p.grid.diameters[0]);
+  EXPECT_DOUBLE_EQ(fs.number, t.fragments[2]);
+  EXPECT_DOUBLE_EQ(fs.largest, t.largest_fraction[2]);
+}
+
+// The node means: over the breaks only; f_L raised to 1/N_f when below it by rounding only (five equal
+// fragments: 0.2 computed as 0.19999999999999998), not when below it by more.
+TEST(OutcomeAggregates, FragmentMeansOverTheBreaks) {
+  OutcomeGridSpec s;
+  s.speeds = {1.0};
+  s.primaries = {4};
+  s.diameters = {1e-6};
+  s.impacts = 3;
+  const std::vector<PairOutcome> out = {PairOutcome::brk, PairOutcome::stick, PairOutcome::brk};
+  auto t = tabulate_outcomes(s, out, {5.0, 9.0, 5.0}, {0.19999999999999998, 0.9, 0.19999999999999998});
+  EXPECT_EQ(t.fragments[0], 5.0);          // the stick's values are not read
+  EXPECT_EQ(t.largest_fraction[0], 0.2);  // raised by the rounding error
+  t = tabulate_outcomes(s, out, {5.0, 9.0, 5.0}, {0.19, 0.9, 0.19});
+  EXPECT_EQ(t.largest_fraction[0], 0.19);  // a real violation is kept (and refused by the DSMC's reader)
+}
