@@ -4,8 +4,19 @@
 # rank ends the job (Debian's Open MPI has no fault-tolerant MPI), the journal keeps what arrived, and
 # `--resume` on 2 ranks repeats only what is missing and gives the outputs of an uninterrupted single
 # process, and no rank's scratch folder is left behind; (3) a failure met by one rank alone ends the job
-# instead of leaving the others waiting. $1 = agglo, $2 = source dir, $3 = mpirun.
+# instead of leaving the others waiting; (0) first: only a rank started by mpirun loads the MPI library.
+# $1 = agglo, $2 = source dir, $3 = mpirun.
 . "$(dirname "$0")/lib.sh"
+
+# (0) MPI is loaded only under a launcher (src/agglo/mpi/backend.hpp): a plain run does not map libmpi,
+# a rank started by mpirun maps agglo's MPI module and libmpi (positive control of the same trace).
+LD_DEBUG=libs "$AGGLO" --version > /dev/null 2> "$TMP/ld_plain.txt" || fail "agglo --version"
+grep -q "libc.so" "$TMP/ld_plain.txt" || fail "LD_DEBUG=libs printed no trace"
+grep -q "libmpi" "$TMP/ld_plain.txt" && fail "a plain agglo --version loaded the MPI library"
+LD_DEBUG=libs run_mpi 1 --version > /dev/null 2> "$TMP/ld_rank.txt" || fail "mpirun -n 1 agglo --version"
+grep -q "libagglo_mpi_module" "$TMP/ld_rank.txt" && grep -q "libmpi.so" "$TMP/ld_rank.txt" ||
+  fail "a rank started by mpirun did not load agglo's MPI module and libmpi"
+echo "ok MPI loaded only under a launcher"
 
 # (1) one failing case of three
 for k in 2 3; do
