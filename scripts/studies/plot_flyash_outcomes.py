@@ -2,13 +2,14 @@
 """Figures of the fly-ash outcome study (docs/studies/flyash_outcomes.md) from the study.json of
 scripts/studies/flyash_outcomes.py:
 
-  flyash_outcomes_reductions.png  number and PM2.5 reductions against time per dry outcome model, mean over
-                                  the seeds with error bars of one standard error, and Zhang et al. 2009's
-                                  68.4 % (number) and 75.6 % (PM2.5) drops as horizontal lines
+  flyash_outcomes_reductions.png  number (total, and below 2.5 um at the PSD times) and PM2.5 mass reductions
+                                  against time per dry outcome model, mean over the seeds with error bars of
+                                  one standard error, and Zhang et al. 2009's drops of the total number
+                                  (68.4 %) and of the PM2.5 number (75.6 %) as horizontal lines
   flyash_outcomes_tables.png      P_stick of the tables against the normal speed for equal partners of
                                   1 um (and 2 um), with the closed-form critical velocity of the default model
 
-    /usr/bin/python3 scripts/studies/plot_flyash_outcomes.py results/flyash_outcomes/study.json docs/img
+    /usr/bin/python3 scripts/studies/plot_flyash_outcomes.py results/flyash_outcomes/study.json [more.json ...] docs/img
 """
 import json
 import math
@@ -23,7 +24,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 LABELS = {"default": "closed-form v_cr (default)", "spheres": "DEM spheres, fly ash",
           "spheres_seed": "DEM spheres, seed material", "aggregates": "DEM BPCA aggregates, fly ash"}
 COLORS = {"default": "k", "spheres": "tab:red", "spheres_seed": "tab:blue", "aggregates": "tab:green"}
-ZHANG = {"number_reduction": 0.684, "pm2_5": 0.756}  # Zhang et al. 2009, 1400 Hz, 147 dB
+ZHANG = {"number_reduction": 0.684, "pm2_5": 0.756}  # Zhang et al. 2009, 1400 Hz, 147 dB: number concentrations
 
 
 def critical_velocity_dry(d1, d2, rho=2500.0, hamaker=1e-19, e=0.6, z0=4e-10, pc=3e8):
@@ -34,30 +35,31 @@ def critical_velocity_dry(d1, d2, rho=2500.0, hamaker=1e-19, e=0.6, z0=4e-10, pc
 
 
 def plot_reductions(study, out):
-    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4))
     for v, r in study["variants"].items():
         t = r["times"]
         every = max(1, len(t) // 20)
         for ax, col, style in ((left, "number_reduction", "-"), (right, "pm2_5_vol_reduction", "-"),
                                (right, "pm2_5_aero_reduction", ":")):
             s = r["series"][col]
-            mean = [x["mean"] * 100 for x in s]
-            se = [x["se"] * 100 for x in s]
             label = LABELS[v] if style == "-" else None
-            ax.errorbar(t, mean, yerr=se, errorevery=every, color=COLORS[v], ls=style, lw=1.3, capsize=2,
-                        label=label)
-    left.axhline(ZHANG["number_reduction"] * 100, color="grey", ls="--", lw=1, label="Zhang et al. 2009: 68.4 %")
-    right.axhline(ZHANG["pm2_5"] * 100, color="grey", ls="--", lw=1, label="Zhang et al. 2009: 75.6 %")
+            ax.errorbar(t, [x["mean"] * 100 for x in s], yerr=[x["se"] * 100 for x in s], errorevery=every,
+                        color=COLORS[v], ls=style, lw=1.3, capsize=2, label=label)
+        s = r["pm2_5_number_reduction"]
+        left.errorbar(r["psd_times"], [x["mean"] * 100 for x in s], yerr=[x["se"] * 100 for x in s], fmt="o",
+                      mfc="none", color=COLORS[v], capsize=2)
+    left.axhline(ZHANG["number_reduction"] * 100, color="grey", ls="--", lw=1, label="Zhang et al. 2009: total 68.4 %")
+    left.axhline(ZHANG["pm2_5"] * 100, color="grey", ls="-.", lw=1, label="Zhang et al. 2009: PM2.5 number 75.6 %")
     n = next(iter(study["variants"].values()))["dry"]["stuck"]["n"]
-    left.set_title(f"number concentration (mean of {n} seeds, ± 1 s.e.)", fontsize=10)
+    left.set_title(f"number: total (lines), below 2.5 um (circles); {n} seeds, ± 1 s.e.", fontsize=10)
     right.set_title("PM2.5 mass: volume-equivalent (solid), aerodynamic (dotted)", fontsize=10)
-    for ax, name in ((left, "number reduction 1 - N(t)/N(0) [%]"), (right, "PM2.5 reduction [%]")):
+    for ax, name in ((left, "number reduction 1 - N(t)/N(0) [%]"), (right, "PM2.5 mass reduction [%]")):
         ax.set_xlabel("t [s]")
         ax.set_ylabel(name)
         ax.set_ylim(0, 100)
         ax.grid(alpha=0.3)
-    left.legend(fontsize=8, loc="upper left")
-    right.legend(fontsize=8, loc="upper left")
+    left.legend(fontsize=7.5, loc="upper left")
+    right.legend(fontsize=7.5, loc="upper left")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "flyash_outcomes_reductions.png"), dpi=110)
 
@@ -86,8 +88,12 @@ def plot_tables(study, out):
 
 
 def main():
-    study = json.load(open(sys.argv[1]))
-    out = sys.argv[2]
+    study = {"tables": {}, "variants": {}}
+    for path in sys.argv[1:-1]:  # several study.json (variants run apart) are merged
+        part = json.load(open(path))
+        study["tables"].update(part["tables"])
+        study["variants"].update(part["variants"])
+    out = sys.argv[-1]
     os.makedirs(out, exist_ok=True)
     plot_reductions(study, out)
     plot_tables(study, out)
