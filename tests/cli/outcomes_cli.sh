@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # agglo outcomes (docs/outcomes.md): a small sphere-sphere table of cases/outcomes_sphere_sphere.toml; its
-# results.nc is read by the DSMC as outcomes.table; --resume reuses every journaled impact and gives the
+# results.nc is read by the DSMC as outcomes.table (also by two ensemble members on job threads, with nothing
+# on stderr); --resume reuses every journaled impact and gives the
 # same table; a two-sphere target and a decreasing speed axis are refused (exit 2, one line, no folder).
 . "$(dirname "$0")/lib.sh"  # A, SRC, T, fail, refused
 
@@ -32,6 +33,12 @@ $A -q --no-plots acoustic "$AC" --set time.end=0.005 --set "output.psd_times=[0.
   --out "$T/ac" > /dev/null 2>&1 || fail "acoustic with the outcomes table failed"
 grep -q "dry outcome model: table $T/oc/results.nc" "$T/ac/run.log" || fail "run.log does not name the table"
 grep -q "dry outcome table: queries=" "$T/ac/run.log" || fail "run.log does not count the table queries"
+# Two members read the table on two job threads: HDF5's error printing is per thread, and NetCDF turns it
+# off only on the thread that initialises it; a read elsewhere printed HDF5-DIAG lines (now silenced).
+$A -q --no-plots acoustic "$AC" --set time.end=0.005 --set "output.psd_times=[0.0,0.005]" \
+  --set "output.snapshot_times=[0.0]" --set outcomes.dry_model=table --set "outcomes.table=\"$T/oc/results.nc\"" \
+  --seeds 2 --threads 2 --out "$T/ac2" > /dev/null 2> "$T/ac2.err" || fail "acoustic --seeds 2 with the table failed"
+grep -q "HDF5-DIAG" "$T/ac2.err" && fail "HDF5-DIAG lines on stderr: $(head -c 300 "$T/ac2.err")"
 # Refusals.
 sed 's/^\[time\]/[[particles]]\nposition = [5e-6, 0.0, 0.0]\nradius = 1e-6\n\n[time]/' "$O" > "$T/bad.toml"
 refused outcomes "needs a one-sphere target" "two-sphere target"

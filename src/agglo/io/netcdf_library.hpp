@@ -25,7 +25,9 @@ struct NetcdfLibrary {
 };
 
 // The library's functions, loaded on the first call (thread-safe); throws std::runtime_error naming the
-// library and the loader's message when it or one of the functions cannot be loaded.
+// library and the loader's message when it or one of the functions cannot be loaded. The first call on
+// each thread also turns off HDF5's error printing for that thread (NetCDF-C does it only on the thread
+// that initialises it), so that reads on worker threads print no HDF5-DIAG lines.
 const NetcdfLibrary& netcdf();
 
 }  // namespace agglo::io

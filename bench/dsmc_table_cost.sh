@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# Cost of the DSMC's tabulated dry outcome against the closed-form default (issue 26: at most 1.2x per
+# sample-step; docs/acoustics.md §1.7 "Cost"), callgrind instructions of Engine::step (inclusive), one
+# thread, in one script so that the variants share the machine, the build and the case:
+#   case   4000 + 4000 solid samples of 1 and 10 um (monodisperse, 2500 kg/m^3, 1e12 m^-3 each) in a
+#          140 dB, 2 kHz travelling wave, constant kernel K = 4.5e-10 m^3/s, 20 collision steps of 1e-4 s
+#          (a collision-heavy case: most collisions are dry)
+#   default  outcomes.dry_model absent (v_cr,dry, eq. 13)
+#   table    the 6 x 3 x 3 sphere table of cases/outcomes_sphere_sphere.toml (agglo outcomes; P_break = 0)
+#   break    the same table with P_stick and P_bounce scaled by 0.7 and P_break = 0.3, N_f = 3, f_L = 0.5
+#            (written with netCDF4-python, Debian python3-netcdf4)
+# Prints per variant: Engine::step instructions per sample-step, the ratio to the default, the dry
+# collisions and how many stuck, bounced and broke; and OutcomeTable's share (at, fragments_at).
+#   bench/dsmc_table_cost.sh [AGGLO] [OUT_DIR]
+set -euo pipefail
+SRC=$(cd "$(dirname "$0")/.." && pwd)
+AGGLO=$(realpath "${1:-$SRC/build/agglo}")
+OUT=$(realpath -m "${2:-$SRC/results/bench_dsmc_table_cost}")
+mkdir -p "$OUT"
+export OMP_NUM_THREADS=1
+STEPS=20
+DT=1e-4
+
+cat > "$OUT/case.toml" <<EOF
+seed = 26
+[sound]
+level_db = 140.0
+frequency_hz = 2000.0
+[domain]
+cells_x = 100
+[time]
+end = $(/usr/bin/python3 -c "print($STEPS * $DT)")
+collision_dt = $DT
+motion_dt = $DT
+[kernels]
+model = "constant"
+constant_coefficient = 4.5e-10
+[[population]]
+name = "fine"
+phase = "solid"
+distribution = "monodisperse"
+diameter = 1e-6
+number_concentration = 1e12
+density = 2500.0
+samples = 4000
+[[population]]
+name = "coarse"
+phase = "solid"
+distribution = "monodisperse"
+diameter = 10e-6
+number_concentration = 1e12
+density = 2500.0
+samples = 4000
+[output]
+psd_times = [0.0]
+snapshot_times = []
+EOF
+
+"$AGGLO" -q --no-plots outcomes "$SRC/cases/outcomes_sphere_sphere.toml" --out "$OUT/outcomes" --overwrite --threads 1 > /dev/null
+/usr/bin/python3 - "$OUT/outcomes/results.nc" "$OUT/table_break.nc" <<'PY'
+import shutil, sys
+import netCDF4
+shutil.copy(sys.argv[1], sys.argv[2])
+with netCDF4.Dataset(sys.argv[2], "a") as d:
+    dims = d["p_stick"].dimensions
+    d["p_stick"][:] = 0.7 * d["p_stick"][:]
+    d["p_bounce"][:] = 0.7 * d["p_bounce"][:]
+    d["p_break"][:] = 0.3
+    for name, value in (("fragments", 3.0), ("largest_fraction", 0.5)):
+        v = d[name] if name in d.variables else d.createVariable(name, "f8", dims)
+        v.units = "1"
+        v[:] = value
+PY
+
+run() {  # run LABEL [--set ...]
+  local label=$1; shift
+  valgrind --tool=callgrind --callgrind-out-file="$OUT/callgrind_$label.out" \
+    "$AGGLO" -q --no-plots acoustic "$OUT/case.toml" --out "$OUT/$label" --overwrite --threads 1 --format csv "$@" \
+    > /dev/null 2> "$OUT/callgrind_$label.log"
+  callgrind_annotate --inclusive=yes --threshold=100 "$OUT/callgrind_$label.out" > "$OUT/callgrind_$label.txt" 2> /dev/null
+}
+run default
+run table --set outcomes.dry_model=table --set "outcomes.table=\"$OUT/outcomes/results.nc\""
+run break --set outcomes.dry_model=table --set "outcomes.table=\"$OUT/table_break.nc\""
+
+/usr/bin/python3 - "$OUT" "$STEPS" <<'PY'
+import csv, json, re, sys
+out, steps = sys.argv[1], int(sys.argv[2])
+def inclusive(label, prefix):
+    best = 0
+    for line in open(f"{out}/callgrind_{label}.txt"):
+        m = re.match(r"\s*([\d,]+) \(\s*[\d.]+%\)\s+(.*)$", line)
+        if m and ":" in m.group(2) and m.group(2).split(":", 1)[1].startswith(prefix):
+            best = max(best, int(m.group(1).replace(",", "")))
+    return best
+rows = {}
+for label in ("default", "table", "break"):
+    n = json.load(open(f"{out}/{label}/summary.json"))["samples"]
+    step = inclusive(label, "agglo::acoustics::Engine::step(")
+    at = inclusive(label, "agglo::acoustics::OutcomeTable::at(")
+    frag = inclusive(label, "agglo::acoustics::OutcomeTable::fragments_at(")
+    brk = inclusive(label, "agglo::acoustics::break_weighted(")
+    dry = next(r for r in csv.DictReader(open(f"{out}/{label}/outcomes_by_pair.csv")) if r["pair_type"] == "dry")
+    rows[label] = (step / (n * steps), step, at, frag, brk, dry)
+base = rows["default"][0]
+print(f"Engine::step, callgrind, one thread, {steps} steps; instructions per sample-step (ratio to the default)")
+for label, (per, step, at, frag, brk, dry) in rows.items():
+    print(f"  {label:8} {per:8.1f} ({per / base:.3f}x)  Engine::step {step / 1e6:.1f}e6  OutcomeTable::at {at / 1e6:.2f}e6"
+          f"  fragments_at {frag / 1e6:.2f}e6  break_weighted {brk / 1e6:.2f}e6  dry collisions {dry['pair_collisions']}:"
+          f" stuck {dry['stuck']}, bounced {dry['bounced']}, broke {dry['broke']}")
+PY
