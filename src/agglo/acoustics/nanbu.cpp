@@ -14,7 +14,7 @@
 namespace agglo::acoustics {
 
 CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
-                       const Gas& gas) {
+                       const Gas& gas, std::size_t* live) {
   CellBounds cb;
   cb.need_cbar = k.needs_thermal_speed();
   // Same maxima as calling cb.include for every live sample: the size maxima and the mean velocity in
@@ -40,6 +40,7 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
     w_max = std::max(w_max, w[i]);
     m_min = std::min(m_min, mass[i]);
   }
+  if (live) *live = static_cast<std::size_t>(sw);
   if (sw > 0.0) {
     cb.vref[0] = mx / sw;
     cb.vref[1] = my / sw;
@@ -97,23 +98,32 @@ class CellCollision {
   const Kernel& K;
   const std::size_t N;  // dead samples stay candidates (they are refilled when possible): the draw is uniform over n
   const double Vc, invN;
+  std::size_t live_at_start = 0;  // live samples when the step began (set by cell_bounds)
   CellBounds cb;
   CounterRng rng;
   CellEvents events;
   const bool need_r, excl;
   double pcell = 0.0;  // cell-wide majorant probability of a full step
+  // Every sample of the cell is live: true from the start if none is dead, false after the first
+  // collision (which may kill or refill samples); then the live samples are counted.
+  bool all_live = false;
+  // log1p(-min(pe, 1 - 1e-16)) of the geometric skip for the pe it was computed for (pe changes only
+  // when a collision changes the cell bounds): one logarithm per cell instead of one per passing trial.
+  double skip_pe = -1.0, skip_log = 0.0;
 };
 
 CellCollision::CellCollision(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_, std::uint64_t cell_,
                              std::uint64_t step_, const CollisionContext& ctx_, CollisionStats& st_)
     : p(p_), idx(idx_), n(n_), cell(cell_), step(step_), ctx(ctx_), st(st_), K(*ctx_.kernel),
       N(n_), Vc(ctx_.domain.cell_volume()), invN(1.0 / static_cast<double>(n_)),
-      cb(cell_bounds(p_, idx_, n_, K, *ctx_.gas)), rng(ctx_.seed, 0x100000000ULL + cell_, step_),
-      events(p_, idx_, n_, ctx_, st_, rng), need_r(K.needs_distance()), excl(K.settings().exclude_same_population) {}
+      cb(cell_bounds(p_, idx_, n_, K, *ctx_.gas, &live_at_start)), rng(ctx_.seed, 0x100000000ULL + cell_, step_),
+      events(p_, idx_, n_, ctx_, st_, rng), need_r(K.needs_distance()), excl(K.settings().exclude_same_population),
+      all_live(live_at_start == n_) {}
 
 // Outcome of a collision of samples i and j; the cell bounds take in every changed sample.
 void CellCollision::collide(std::size_t i, std::size_t j) {
   events.collide(i, j);
+  all_live = false;
   for (const std::uint32_t s : events.touched()) cb.include(p, s, *ctx.gas);
   events.clear_touched();
 }
@@ -167,10 +177,14 @@ void CellCollision::plain_trial(std::size_t& a, double pe) {
 bool CellCollision::skip_to_passing_trial(std::size_t& a, double pe) {
   std::size_t skip = n - a;
   if (pe > 0.0) {
-    const double g = std::floor(std::log1p(-rng.uniform()) / std::log1p(-std::min(pe, 1.0 - 1e-16)));
+    if (pe != skip_pe) {
+      skip_pe = pe;
+      skip_log = std::log1p(-std::min(pe, 1.0 - 1e-16));
+    }
+    const double g = std::floor(std::log1p(-rng.uniform()) / skip_log);
     if (g < static_cast<double>(n - a)) skip = static_cast<std::size_t>(g);
   }
-  std::uint64_t live = count_positive(p.w.data(), idx, a, a + skip);
+  std::uint64_t live = all_live ? skip : count_positive(p.w.data(), idx, a, a + skip);
   a += skip;
   if (a < n && p.w[idx[a]] > 0.0) ++live;
   if (live > 0) {
