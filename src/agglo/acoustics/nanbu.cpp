@@ -22,6 +22,9 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
   // monotone, so sqrt of the largest square is the value include() would have kept). The thermal speed
   // sqrt(8 k T / (pi m)) is non-increasing in m under correctly rounded division and sqrt, so its largest
   // value is that of the lightest live sample: one sqrt per cell instead of one per sample.
+  // The running extremum is the second argument of std::max/min (the value kept when they are equal):
+  // the same result for numbers (positive sizes, weights, masses; the state check has excluded NaN), and
+  // x86's maxsd/minsd then update the running value in place (no register copy per sample and extremum).
   double sw = 0.0, mx = 0.0, my = 0.0, mz = 0.0;
   double d_max = 0.0, vol_max = 0.0, dl_max = 0.0, ccd_max = 0.0, w_max = 0.0, s2_max = 0.0;
   double m_min = std::numeric_limits<double>::infinity();
@@ -34,11 +37,11 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
     my += vy[i];
     mz += vz[i];
     sw += 1.0;
-    d_max = std::max(d_max, d[i]);
-    dl_max = std::max(dl_max, dl[i]);
-    ccd_max = std::max(ccd_max, ccd[i]);
-    w_max = std::max(w_max, w[i]);
-    m_min = std::min(m_min, mass[i]);
+    d_max = std::max(d[i], d_max);
+    dl_max = std::max(dl[i], dl_max);
+    ccd_max = std::max(ccd[i], ccd_max);
+    w_max = std::max(w[i], w_max);
+    m_min = std::min(mass[i], m_min);
   }
   if (live) *live = static_cast<std::size_t>(sw);
   if (sw > 0.0) {
@@ -51,7 +54,7 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
     const std::size_t i = idx[a];
     if (w[i] <= 0.0) continue;
     const double ex = vx[i] - rx, ey = vy[i] - ry, ez = vz[i] - rz;
-    s2_max = std::max(s2_max, ex * ex + ey * ey + ez * ez);
+    s2_max = std::max(ex * ex + ey * ey + ez * ez, s2_max);
   }
   if (k.needs_volume())  // vol_max is used by the additive kernel only
     for (std::size_t a = 0; a < n; ++a)
