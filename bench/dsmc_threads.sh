@@ -7,8 +7,9 @@
 #             step's thread count chosen by timed probes, src/agglo/acoustics/thread_choice.hpp)
 #   j2_fixed  --threads 2 with AGGLO_THREAD_PROBE=off: two threads at every step (agglo before the probes)
 #   j2_spin   --threads 2 with GOMP_SPINCOUNT=300000, libgomp's own default (agglo before passive waits)
-# under /usr/bin/time (wall and user CPU of the whole process). Prints every run, then per case the
-# median wall and user CPU of each variant and the ratios to j1 (> 1: slower than one thread).
+# under /usr/bin/time (wall and user CPU of the whole process), the variants' order rotated each round.
+# Prints every run, then per case the median wall and user CPU of each variant and the ratios to j1
+# (> 1: slower than one thread).
 #   bench/dsmc_threads.sh [AGGLO] [OUT_DIR]     ROUNDS=3, T=0.1, VARIANTS="j1 j2 j2_fixed j2_spin"
 # Timing only (never a test); on a shared machine only the ratios of one invocation mean anything.
 set -euo pipefail
@@ -38,8 +39,10 @@ run() {  # run CASE_LABEL CASE_FILE VARIANT ROUND [extra args]
   read -r wall user < "$OUT/time"
   printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$label" "$v" "$r" "$wall" "$user" "$(cut -d' ' -f1 /proc/loadavg)" | tee -a "$table"
 }
+read -r -a vars <<< "$VARIANTS"
 for r in $(seq 1 "$ROUNDS"); do
-  for v in $VARIANTS; do
+  for k in $(seq 0 $((${#vars[@]} - 1))); do  # the order rotates by one variant per round (a load trend
+    v=${vars[$(((k + r - 1) % ${#vars[@]}))]}  # over the rounds then favours none)
     run flyash_8000 "$SRC/cases/flyash_147db.toml" "$v" "$r" --set population.0.samples=8000
     run seed002_baseline "$SRC/cases/seed002_baseline.toml" "$v" "$r"
   done
