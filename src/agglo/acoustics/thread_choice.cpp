@@ -37,7 +37,7 @@ void ThreadChoice::record(double seconds) {
     case Phase::probe_one: {
       const int best = t_many_ < t_one_ ? max_ : 1;
       // the same choice as before: a longer stretch before the next probe; a new one: the first stretch
-      stretch_ = best == chosen_ ? std::min(2 * stretch_, kMaxStretch) : kFirstStretch;
+      stretch_ = best == chosen_ ? std::min(4 * stretch_, kMaxStretch) : kFirstStretch;
       chosen_ = best;
       phase_ = Phase::run;
       left_ = stretch_;

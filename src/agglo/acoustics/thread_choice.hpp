@@ -5,11 +5,11 @@
 // take longer than one thread alone. The engine therefore measures both, in alternation:
 //   probe   kProbeSteps steps at T threads, then kProbeSteps at one thread (wall time, steady clock);
 //   run     the faster count (T only when its probe took less time) for a stretch of steps that starts
-//           at kFirstStretch and doubles, up to kMaxStretch, while the probes keep choosing the same
-//           count; then probe again.
-// Cost on an idle machine where T threads are faster: the one-thread probes, at most
-// kProbeSteps / (kFirstStretch + 2 kProbeSteps) of the steps (a few per cent of the wall time at first,
-// less as the stretch grows). With T = 1 (or `AGGLO_THREAD_PROBE=off` in the environment: always T,
+//           at kFirstStretch and grows 4× per probe, up to kMaxStretch, while the probes keep choosing
+//           the same count; then probe again.
+// The cost is the probes of the slower count: kProbeSteps of every kFirstStretch + 2 kProbeSteps steps
+// at first (3 %), of every kMaxStretch + 2 kProbeSteps later (0.2 %), each slower by the ratio of the
+// two counts' step times (a 4 s baseline of 80 000 steps probes 6 times). With T = 1 (or `AGGLO_THREAD_PROBE=off` in the environment: always T,
 // for measuring the fixed count) nothing is measured.
 #include <cstdint>
 
@@ -17,7 +17,7 @@ namespace agglo::acoustics {
 
 class ThreadChoice {
  public:
-  static constexpr std::uint64_t kProbeSteps = 64, kFirstStretch = 512, kMaxStretch = 8192;
+  static constexpr std::uint64_t kProbeSteps = 32, kFirstStretch = 1024, kMaxStretch = 16384;
 
   // Threads for the next step, at most max_threads (a change of max_threads restarts the probes).
   int next(int max_threads);
