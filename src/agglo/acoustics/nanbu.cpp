@@ -23,7 +23,8 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
   // sqrt(8 k T / (pi m)) is non-increasing in m under correctly rounded division and sqrt, so its largest
   // value is that of the lightest live sample: one sqrt per cell instead of one per sample.
   // The running extremum is the second argument of std::max/min (the value kept when they are equal):
-  // the same result for numbers (positive sizes, weights, masses; the state check has excluded NaN), and
+  // the same result for numbers (positive sizes, weights, masses; the state check of a moving run has
+  // excluded NaN; without motion a NaN would now reach the bound instead of being passed over), and
   // x86's maxsd/minsd then update the running value in place (no register copy per sample and extremum).
   double sw = 0.0, mx = 0.0, my = 0.0, mz = 0.0;
   double d_max = 0.0, vol_max = 0.0, dl_max = 0.0, ccd_max = 0.0, w_max = 0.0, s2_max = 0.0;
