@@ -3,11 +3,14 @@
 # docs/acoustics.md §5.2): the fly-ash case at 8000 samples and the seed-002 baseline (9843 samples),
 # each shortened to T, ROUNDS interleaved rounds of
 #   j1        --threads 1
-#   j2        --threads 2 (agglo's default: passive OpenMP waits, apps/agglo/omp_wait/omp_wait.cpp)
+#   j2        --threads 2 (agglo's default: passive OpenMP waits, apps/agglo/omp_wait/omp_wait.cpp, and the
+#             step's thread count chosen by timed probes, src/agglo/acoustics/thread_choice.hpp)
+#   j2_fixed  --threads 2 with AGGLO_THREAD_PROBE=off: two threads at every step (agglo before the probes)
 #   j2_spin   --threads 2 with GOMP_SPINCOUNT=300000, libgomp's own default (agglo before passive waits)
-# under /usr/bin/time (wall and user CPU of the whole process). Prints every run, then per case the
-# median wall and user CPU of each variant and the ratios to j1 (> 1: slower than one thread).
-#   bench/dsmc_threads.sh [AGGLO] [OUT_DIR]     ROUNDS=3, T=0.1, VARIANTS="j1 j2 j2_spin"
+# under /usr/bin/time (wall and user CPU of the whole process), the variants' order rotated each round.
+# Prints every run, then per case the median wall and user CPU of each variant and the ratios to j1
+# (> 1: slower than one thread).
+#   bench/dsmc_threads.sh [AGGLO] [OUT_DIR]     ROUNDS=3, T=0.1, VARIANTS="j1 j2 j2_fixed j2_spin"
 # Timing only (never a test); on a shared machine only the ratios of one invocation mean anything.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
@@ -15,7 +18,7 @@ AGGLO=${1:-$SRC/build/agglo}
 OUT=${2:-$SRC/results/bench_dsmc_threads}
 ROUNDS=${ROUNDS:-3}
 T=${T:-0.1}
-VARIANTS=${VARIANTS:-"j1 j2 j2_spin"}
+VARIANTS=${VARIANTS:-"j1 j2 j2_fixed j2_spin"}
 mkdir -p "$OUT"
 table="$OUT/threads.tsv"
 printf 'case\tvariant\tround\twall_s\tuser_s\tload\n' > "$table"
@@ -23,11 +26,12 @@ common=(--no-plots --quiet --format csv --overwrite --set time.end="$T" --set "o
         --set "output.snapshot_times=[]" --set output.efficiency_interval="$T")
 run() {  # run CASE_LABEL CASE_FILE VARIANT ROUND [extra args]
   local label=$1 file=$2 v=$3 r=$4; shift 4
-  local j=2 envs=(-u OMP_WAIT_POLICY -u GOMP_SPINCOUNT)
+  local j=2 envs=(-u OMP_WAIT_POLICY -u GOMP_SPINCOUNT -u AGGLO_THREAD_PROBE)
   case $v in
     j1) j=1 ;;
     j2) ;;
-    j2_spin) envs+=(GOMP_SPINCOUNT=300000) ;;
+    j2_fixed) envs+=(AGGLO_THREAD_PROBE=off) ;;
+    j2_spin) envs+=(GOMP_SPINCOUNT=300000 AGGLO_THREAD_PROBE=off) ;;
     *) echo "unknown variant $v" >&2; exit 2 ;;
   esac
   env "${envs[@]}" /usr/bin/time -f "%e %U" -o "$OUT/time" "$AGGLO" acoustic "$file" --out "$OUT/run_${label}_$v" \
@@ -35,8 +39,10 @@ run() {  # run CASE_LABEL CASE_FILE VARIANT ROUND [extra args]
   read -r wall user < "$OUT/time"
   printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$label" "$v" "$r" "$wall" "$user" "$(cut -d' ' -f1 /proc/loadavg)" | tee -a "$table"
 }
+read -r -a vars <<< "$VARIANTS"
 for r in $(seq 1 "$ROUNDS"); do
-  for v in $VARIANTS; do
+  for k in $(seq 0 $((${#vars[@]} - 1))); do  # the order rotates by one variant per round (a load trend
+    v=${vars[$(((k + r - 1) % ${#vars[@]}))]}  # over the rounds then favours none)
     run flyash_8000 "$SRC/cases/flyash_147db.toml" "$v" "$r" --set population.0.samples=8000
     run seed002_baseline "$SRC/cases/seed002_baseline.toml" "$v" "$r"
   done
@@ -50,7 +56,8 @@ for case in dict.fromkeys(r["case"] for r in rows):
         rs = [r for r in rows if r["case"] == case and r["variant"] == v]
         med[v] = (statistics.median(float(r["wall_s"]) for r in rs), statistics.median(float(r["user_s"]) for r in rs))
     base = med.get("j1")
-    print(f"{case}: median over {len(rs)} rounds")
+    loads = [float(r["load"]) for r in rows if r["case"] == case]
+    print(f"{case}: median over {len(rs)} rounds (1-min load average {min(loads):.1f}-{max(loads):.1f})")
     for v, (w, u) in med.items():
         ratio = f"  wall {w / base[0]:.2f}x, user {u / base[1]:.2f}x of j1" if base else ""
         print(f"  {v:8s} wall {w:6.2f} s  user {u:6.2f} s{ratio}")

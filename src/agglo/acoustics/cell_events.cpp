@@ -36,7 +36,12 @@ Vec3 contact_normal(const Vec3& G, CounterRng& rng) {
 
 CellEvents::CellEvents(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_, const CollisionContext& ctx_,
                        CollisionStats& st_, CounterRng& rng_)
-    : p(p_), idx(idx_), n(n_), ctx(ctx_), st(st_), rng(rng_), oc(*ctx_.outcomes) {
+    : p(p_), idx(idx_), n(n_), ctx(ctx_), st(st_), rng(rng_), oc(*ctx_.outcomes) {}
+
+// The cell's debtors as the step found them, listed at its first collision (debts change only in
+// collisions, so these are the debts at the start of the step; most cells of a step have no collision).
+void CellEvents::list_debtors() {
+  debtors_listed_ = true;
   // debts are only paid back at rebounds; most cells have none (count_positive: SIMD lanes)
   if (oc.energy_compensation && !oc.always_coalesce && count_positive(p.debt.data(), idx, 0, n) > 0)
     for (std::size_t a = 0; a < n; ++a)
@@ -100,6 +105,7 @@ CollisionOutcome CellEvents::dry_outcome(std::size_t i, std::size_t j, double gn
 }
 
 void CellEvents::collide(std::size_t i, std::size_t j) {
+  if (!debtors_listed_) list_debtors();
   ++st.collisions;
   touched_.push_back(static_cast<std::uint32_t>(i));
   touched_.push_back(static_cast<std::uint32_t>(j));

@@ -28,6 +28,7 @@ class CellEvents {
   void clear_touched() { touched_.clear(); }
 
  private:
+  void list_debtors();
   void refill(std::size_t dead);
   void compensate(std::size_t i, std::size_t j);
   CollisionOutcome dry_outcome(std::size_t i, std::size_t j, double gn);
@@ -40,6 +41,7 @@ class CellEvents {
   CounterRng& rng;
   const OutcomeParams& oc;
   std::vector<std::uint32_t> debtors, touched_;
+  bool debtors_listed_ = false;  // debtors holds the start-of-step debtors (listed at the first collision)
 };
 
 }  // namespace agglo::acoustics

@@ -1,6 +1,7 @@
 #include "agglo/acoustics/engine.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <exception>
 
@@ -173,7 +174,12 @@ void Engine::step() {
   bool bad_state = false;
   std::exception_ptr serial_error;
   GroupReuse reuse = GroupReuse::rebuild;
-#pragma omp parallel if (n >= kParallelMinSamples)
+  // The thread count changes only the wall time (threads_: one thread where T were slower here).
+  const bool parallel = n >= kParallelMinSamples;
+  const int nt = parallel ? threads_.next(omp_get_max_threads()) : 1;
+  const bool timed = parallel && threads_.measuring();
+  const auto wall0 = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+#pragma omp parallel num_threads(nt) if (parallel)
   {
     if (move) move_pass(bad_state);
 #pragma omp barrier
@@ -187,6 +193,7 @@ void Engine::step() {
     }  // implicit barrier: every thread sees serial_error
     if (!serial_error) collide_pass(ctx, reuse, errors);
   }
+  if (timed) threads_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
   if (serial_error) std::rethrow_exception(serial_error);
   for (int c = 0; c < nc; ++c)
     if (!errors[static_cast<std::size_t>(c)].empty()) throw NumericalError(errors[static_cast<std::size_t>(c)]);

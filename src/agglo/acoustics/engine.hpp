@@ -16,6 +16,7 @@
 #include "agglo/acoustics/samples.hpp"
 #include "agglo/acoustics/populations.hpp"
 #include "agglo/acoustics/initial_placement.hpp"
+#include "agglo/acoustics/thread_choice.hpp"
 
 namespace agglo::acoustics {
 
@@ -55,6 +56,8 @@ class Engine {
   const std::vector<SampledPopulation>& sampled() const { return sampled_; }
   const CollisionStats& stats() const { return stats_; }
   const Kernel& kernel() const { return kernel_; }
+  // Thread counts the steps ran with (thread_choice.hpp: one thread where it was faster on this machine).
+  const ThreadChoice& thread_choice() const { return threads_; }
 
   // Largest N * P_bound(dt_c) over the samples of the current state (guard check at start-up); the
   // sample attaining it in `argmax` when given.
@@ -87,6 +90,7 @@ class Engine {
   std::vector<std::uint32_t> local_of_;  // scratch of the binned selection
   std::vector<BinnedGroups> groups_;     // binned selection: groups of each cell
   bool regroup_ = true;                  // samples re-binned or reordered since the groups were built
+  ThreadChoice threads_;                 // thread count of the parallel steps (wall time only)
 };
 
 }  // namespace agglo::acoustics

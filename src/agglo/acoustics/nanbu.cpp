@@ -14,7 +14,7 @@
 namespace agglo::acoustics {
 
 CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
-                       const Gas& gas) {
+                       const Gas& gas, std::size_t* live) {
   CellBounds cb;
   cb.need_cbar = k.needs_thermal_speed();
   // Same maxima as calling cb.include for every live sample: the size maxima and the mean velocity in
@@ -22,6 +22,10 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
   // monotone, so sqrt of the largest square is the value include() would have kept). The thermal speed
   // sqrt(8 k T / (pi m)) is non-increasing in m under correctly rounded division and sqrt, so its largest
   // value is that of the lightest live sample: one sqrt per cell instead of one per sample.
+  // The running extremum is the second argument of std::max/min (the value kept when they are equal):
+  // the same result for numbers (positive sizes, weights, masses; the state check of a moving run has
+  // excluded NaN; without motion a NaN would now reach the bound instead of being passed over), and
+  // x86's maxsd/minsd then update the running value in place (no register copy per sample and extremum).
   double sw = 0.0, mx = 0.0, my = 0.0, mz = 0.0;
   double d_max = 0.0, vol_max = 0.0, dl_max = 0.0, ccd_max = 0.0, w_max = 0.0, s2_max = 0.0;
   double m_min = std::numeric_limits<double>::infinity();
@@ -34,12 +38,13 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
     my += vy[i];
     mz += vz[i];
     sw += 1.0;
-    d_max = std::max(d_max, d[i]);
-    dl_max = std::max(dl_max, dl[i]);
-    ccd_max = std::max(ccd_max, ccd[i]);
-    w_max = std::max(w_max, w[i]);
-    m_min = std::min(m_min, mass[i]);
+    d_max = std::max(d[i], d_max);
+    dl_max = std::max(dl[i], dl_max);
+    ccd_max = std::max(ccd[i], ccd_max);
+    w_max = std::max(w[i], w_max);
+    m_min = std::min(mass[i], m_min);
   }
+  if (live) *live = static_cast<std::size_t>(sw);
   if (sw > 0.0) {
     cb.vref[0] = mx / sw;
     cb.vref[1] = my / sw;
@@ -50,7 +55,7 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
     const std::size_t i = idx[a];
     if (w[i] <= 0.0) continue;
     const double ex = vx[i] - rx, ey = vy[i] - ry, ez = vz[i] - rz;
-    s2_max = std::max(s2_max, ex * ex + ey * ey + ez * ez);
+    s2_max = std::max(ex * ex + ey * ey + ez * ez, s2_max);
   }
   if (k.needs_volume())  // vol_max is used by the additive kernel only
     for (std::size_t a = 0; a < n; ++a)
@@ -97,23 +102,32 @@ class CellCollision {
   const Kernel& K;
   const std::size_t N;  // dead samples stay candidates (they are refilled when possible): the draw is uniform over n
   const double Vc, invN;
+  std::size_t live_at_start = 0;  // live samples when the step began (set by cell_bounds)
   CellBounds cb;
   CounterRng rng;
   CellEvents events;
   const bool need_r, excl;
   double pcell = 0.0;  // cell-wide majorant probability of a full step
+  // Every sample of the cell is live: true from the start if none is dead, false after the first
+  // collision (which may kill or refill samples); then the live samples are counted.
+  bool all_live = false;
+  // log1p(-min(pe, 1 - 1e-16)) of the geometric skip for the pe it was computed for (pe changes only
+  // when a collision changes the cell bounds): one logarithm per cell instead of one per passing trial.
+  double skip_pe = -1.0, skip_log = 0.0;
 };
 
 CellCollision::CellCollision(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_, std::uint64_t cell_,
                              std::uint64_t step_, const CollisionContext& ctx_, CollisionStats& st_)
     : p(p_), idx(idx_), n(n_), cell(cell_), step(step_), ctx(ctx_), st(st_), K(*ctx_.kernel),
       N(n_), Vc(ctx_.domain.cell_volume()), invN(1.0 / static_cast<double>(n_)),
-      cb(cell_bounds(p_, idx_, n_, K, *ctx_.gas)), rng(ctx_.seed, 0x100000000ULL + cell_, step_),
-      events(p_, idx_, n_, ctx_, st_, rng), need_r(K.needs_distance()), excl(K.settings().exclude_same_population) {}
+      cb(cell_bounds(p_, idx_, n_, K, *ctx_.gas, &live_at_start)), rng(ctx_.seed, 0x100000000ULL + cell_, step_),
+      events(p_, idx_, n_, ctx_, st_, rng), need_r(K.needs_distance()), excl(K.settings().exclude_same_population),
+      all_live(live_at_start == n_) {}
 
 // Outcome of a collision of samples i and j; the cell bounds take in every changed sample.
 void CellCollision::collide(std::size_t i, std::size_t j) {
   events.collide(i, j);
+  all_live = false;
   for (const std::uint32_t s : events.touched()) cb.include(p, s, *ctx.gas);
   events.clear_touched();
 }
@@ -167,10 +181,14 @@ void CellCollision::plain_trial(std::size_t& a, double pe) {
 bool CellCollision::skip_to_passing_trial(std::size_t& a, double pe) {
   std::size_t skip = n - a;
   if (pe > 0.0) {
-    const double g = std::floor(std::log1p(-rng.uniform()) / std::log1p(-std::min(pe, 1.0 - 1e-16)));
+    if (pe != skip_pe) {
+      skip_pe = pe;
+      skip_log = std::log1p(-std::min(pe, 1.0 - 1e-16));
+    }
+    const double g = std::floor(std::log1p(-rng.uniform()) / skip_log);
     if (g < static_cast<double>(n - a)) skip = static_cast<std::size_t>(g);
   }
-  std::uint64_t live = count_positive(p.w.data(), idx, a, a + skip);
+  std::uint64_t live = all_live ? skip : count_positive(p.w.data(), idx, a, a + skip);
   a += skip;
   if (a < n && p.w[idx[a]] > 0.0) ++live;
   if (live > 0) {

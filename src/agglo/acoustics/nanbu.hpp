@@ -27,9 +27,10 @@ namespace agglo::acoustics {
 void collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
                   const CollisionContext& ctx, CollisionStats& st);
 
-// Cell bounds of the listed samples (used by collide_cell and by the start-up guard check).
+// Cell bounds of the listed samples (used by collide_cell and by the start-up guard check); with
+// `live`, also the number of live samples (weight > 0) among them.
 CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
-                       const Gas& gas);
+                       const Gas& gas, std::size_t* live = nullptr);
 
 // Number of trial intervals the guard needs for sample i (ceil(N P_bound)), given the bounds.
 double guard_pn(const SampleSet& p, std::size_t i, std::size_t N, const CellBounds& cb, const Kernel& k,
