@@ -103,7 +103,7 @@ Vec3 read_field(const py::object& o) {
 }
 
 // A Python number or string as a TOML value (read back by the [electrostatics] settings).
-std::string toml_value(const std::string& name, const py::handle& v) {
+std::string option_toml_value(const std::string& name, const py::handle& v) {
   if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "true" : "false";
   if (py::isinstance<py::str>(v)) return nlohmann::json(v.cast<std::string>()).dump();
   if (PyIndex_Check(v.ptr())) {
@@ -141,7 +141,7 @@ es::EsConfig read_settings(const EsArguments& a) {
   const auto& k = es::es_keys();
   std::string text = fmt::format("[{}]\n", k.t.name());
   auto add = [&](std::string_view leaf, const py::handle& v) {
-    text += fmt::format("{} = {}\n", leaf, toml_value(std::string(leaf), v));
+    text += fmt::format("{} = {}\n", leaf, option_toml_value(std::string(leaf), v));
   };
   add(k.solver.leaf(), a.solver);
   add(k.medium_permittivity.leaf(), a.medium_permittivity);
@@ -202,7 +202,7 @@ run::Budgets read_budgets(const EsArguments& a) {
 
 std::optional<int> read_threads(const py::object& o) {
   if (o.is_none()) return std::nullopt;
-  const std::string v = toml_value("threads", o);
+  const std::string v = option_toml_value("threads", o);
   char* end = nullptr;
   const long long n = std::strtoll(v.c_str(), &end, 10);
   if (*end != '\0' || n < 0 || n > std::numeric_limits<int>::max())
