@@ -26,7 +26,7 @@ double dot(std::span<const double> w, std::span<const double> a, std::span<const
 // The basis is reserved whole but its vectors are sized (and their pages touched) only when the
 // iteration reaches them (use(k)): a solve of 10 iterations does not zero a basis of m + 1 vectors
 // (1.1 GB for 1000 spheres at L = 47). Every vector is written before it is read, so sizing one does not
-// zero it (UninitialisedAllocator, gmres.hpp).
+// zero it, and its blocks lie on huge pages (LargeBufferAllocator, large_buffer.hpp).
 struct Krylov {
   Krylov(GmresWorkspace& ws, std::size_t n_, int m_) : w(ws), n(n_), m(m_) {
     const std::size_t full = (static_cast<std::size_t>(m) + 1) * n;

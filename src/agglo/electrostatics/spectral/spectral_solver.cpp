@@ -14,6 +14,7 @@
 #include "agglo/core/error.hpp"
 #include "agglo/electrostatics/keys.hpp"
 #include "agglo/electrostatics/gmres.hpp"
+#include "agglo/electrostatics/large_buffer.hpp"
 #include "agglo/electrostatics/spectral/degree.hpp"
 #include "agglo/electrostatics/spectral/far_field.hpp"
 #include "agglo/electrostatics/spectral/harmonics.hpp"
@@ -64,11 +65,11 @@ class SpectralSolver final : public Solver {
   }
   std::vector<SurfaceSample> surface() const override;
   std::vector<std::array<int, 3>> surface_triangles() const override;
-  WarmStart warm_start() const override { return {{prev_L_, prev_N_}, prev_beta_}; }
+  WarmStart warm_start() const override { return {{prev_L_, prev_N_}, {prev_beta_.begin(), prev_beta_.end()}}; }
   void set_warm_start(const WarmStart& w) override {
     prev_L_ = static_cast<int>(w.ints.at(0));
     prev_N_ = static_cast<int>(w.ints.at(1));
-    prev_beta_ = w.values;
+    prev_beta_.assign(w.values.begin(), w.values.end());
   }
 
  private:
@@ -90,9 +91,9 @@ class SpectralSolver final : public Solver {
   int choose_degree(const Problem& p, double& est_err);
   void prepare(const Problem& p, int L);
   void build_pairs(const Problem& p);
-  void applied_field(const Problem& p, std::vector<double>& alpha_ext, std::vector<double>& rhs);
+  void applied_field(const Problem& p, LargeVector& alpha_ext, LargeVector& rhs);
   void apply_system(std::span<const double> x, std::span<double> y);
-  GmresResult solve_multipoles(const Problem& p, const std::vector<double>& rhs, double tol);
+  GmresResult solve_multipoles(const Problem& p, const LargeVector& rhs, double tol);
   Solution forces_and_energy(const Problem& p) const;
 
   SolverOptions opt_;
@@ -103,7 +104,8 @@ class SpectralSolver final : public Solver {
   sh::FarFieldOptions far_options_;
   int L_ = 0, N_ = 0, nc_ = 0;
   std::vector<double> gamma_;  // per sphere, per l
-  std::vector<double> beta_, alpha_;
+  // per sphere ncoef(L) numbers (18 MB each at N = 1000, L = 47): on huge pages (large_buffer.hpp)
+  LargeVector beta_, alpha_;
   std::vector<double> out_, scratch_;  // matvec_M: per-pair products of a block, per-thread scratch
   std::vector<std::size_t> slot_;      // matvec_M: offset of each pair's products in out_
   // Blocks of one product with the work to run in parallel (whether or not threads > 1: an output
@@ -114,7 +116,7 @@ class SpectralSolver final : public Solver {
   Problem last_;
   GmresWorkspace ws_;
   // warm start
-  std::vector<double> prev_beta_;
+  LargeVector prev_beta_;
   int prev_L_ = -1, prev_N_ = -1;
 };
 
@@ -234,7 +236,8 @@ std::size_t SpectralSolver::block_end(std::size_t b0, double& work) const {
   work = 0.0;
   while (b1 < pairs_.size() && work < kBlockWork && used + slot_size(pairs_[b1]) <= cap) {
     used += slot_size(pairs_[b1]);
-    work += std::pow(pairs_[b1++].L + 1.0, 3);
+    const double w = pairs_[b1++].L + 1.0;
+    work += w * w * w;  // (L + 1)^3, exact: the same blocks as std::pow, without its cost per pair and product
   }
   return b1;
 }
@@ -293,7 +296,7 @@ void SpectralSolver::build_pairs(const Problem& p) {
 
 // gamma_l per sphere; the applied field's local coefficients alpha_ext (phi = -E.x, scaled by
 // a^l) and the right-hand side rhs = -gamma alpha_ext (l >= 1), q / (4 pi eps0 kappa0 a) (l = 0).
-void SpectralSolver::applied_field(const Problem& p, std::vector<double>& alpha_ext, std::vector<double>& rhs) {
+void SpectralSolver::applied_field(const Problem& p, LargeVector& alpha_ext, LargeVector& rhs) {
   const int N = N_, L = L_;
   const double k0 = p.medium_permittivity;
   gamma_.assign(std::size_t(N) * (L + 1), 0.0);
@@ -340,7 +343,7 @@ void SpectralSolver::apply_system(std::span<const double> xs, std::span<double> 
 
 // beta_ from (I + gamma M) beta = rhs: exact (beta = rhs) when no sphere is polarisable, else GMRES
 // to `tol` warm-started from the previous solve (same number of spheres).
-GmresResult SpectralSolver::solve_multipoles(const Problem& p, const std::vector<double>& rhs, double tol) {
+GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector& rhs, double tol) {
   const int N = N_;
   const std::size_t n = std::size_t(N) * nc_;
   beta_.assign(n, 0.0);
@@ -419,7 +422,7 @@ Solution SpectralSolver::solve(const Problem& p) {
   double est_err = 0.0;
   const int L = choose_degree(p, est_err);
   prepare(p, L);
-  std::vector<double> alpha_ext, rhs;
+  LargeVector alpha_ext, rhs;
   applied_field(p, alpha_ext, rhs);
   const double tol = std::min(opt_.tolerance, 1e-2 * opt_.target_accuracy);
   const GmresResult gr = solve_multipoles(p, rhs, tol);
