@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <stdexcept>
 
@@ -43,6 +44,10 @@ constexpr double kBlockWork = 1e7;
 // two threads with GOMP_SPINCOUNT=3000, 9.4 s on one and 36.6 s on two with the default spin count
 // under a load of 4 (docs/electrostatics.md, "Threads").
 constexpr double kParallelPairWork = 1e6;
+// Element-wise passes over the unknowns (apply_system) run in parallel from this many numbers on.
+constexpr std::size_t kParallelLength = std::size_t(1) << 18;
+// choose_degree: pairs of spheres from this many spheres on are visited in parallel.
+constexpr int kParallelDegreeSpheres = 200;
 
 // Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
 // sphere's own potential outside is sum B_lm I_l^m(x - x_i). The external potential at sphere i
@@ -84,6 +89,7 @@ class SpectralSolver final : public Solver {
   };
   // alpha = M beta (sphere-sphere part)
   void matvec_M(const double* beta, double* alpha);
+  void add_block(std::size_t b0, std::size_t b1, double* alpha, bool parallel) const;
   long count_parallel_blocks() const;
   void pair_product(const Pair& pr, const double* beta, double* out_i, double* out_k, double* s) const;
   std::size_t block_end(std::size_t b0, double& work) const;
@@ -120,38 +126,41 @@ class SpectralSolver final : public Solver {
   int prev_L_ = -1, prev_N_ = -1;
 };
 
+// L: the largest pair degree for the target over pairs with a polarisable sphere (capped), or max_degree;
+// est_err: the largest error estimate at L (every pair when max_degree is set). Maxima do not depend on
+// the order of the pairs, so the pairs are visited in parallel from kParallelDegreeSpheres spheres on.
 int SpectralSolver::choose_degree(const Problem& p, double& est_err) {
   const int N = static_cast<int>(p.spheres.size());
-  est_err = 0.0;
-  if (opt_.max_degree > 0) {
+  const bool threaded = N >= kParallelDegreeSpheres;
+  const bool every_pair = opt_.max_degree > 0;
+  auto skip = [&](const Sphere& a, const Sphere& b) {
+    // a pair with no polarisable sphere needs only its monopoles
+    return !every_pair && a.permittivity == p.medium_permittivity && b.permittivity == p.medium_permittivity;
+  };
+  int L = every_pair ? opt_.max_degree : 2;
+  if (!every_pair) {
+#pragma omp parallel for schedule(dynamic, 8) reduction(max : L) if (threaded)
     for (int i = 0; i < N; ++i)
       for (int k = i + 1; k < N; ++k) {
         const auto& a = p.spheres[i];
         const auto& b = p.spheres[k];
+        if (skip(a, b)) continue;
         auto r = sh::limit_ratios(a.radius, b.radius, norm(b.center - a.center));
-        est_err = std::max(est_err, sh::error_estimate(r, opt_.max_degree));
+        L = std::max(L, sh::degree_for(r, opt_.target_accuracy));
       }
-    return opt_.max_degree;
+    L = std::min(L, opt_.max_degree_limit);
   }
-  int L = 2;
+  double e = 0.0;
+#pragma omp parallel for schedule(dynamic, 8) reduction(max : e) if (threaded)
   for (int i = 0; i < N; ++i)
     for (int k = i + 1; k < N; ++k) {
       const auto& a = p.spheres[i];
       const auto& b = p.spheres[k];
-      // a pair with no polarisable sphere needs only its monopoles
-      if (a.permittivity == p.medium_permittivity && b.permittivity == p.medium_permittivity) continue;
+      if (skip(a, b)) continue;
       auto r = sh::limit_ratios(a.radius, b.radius, norm(b.center - a.center));
-      L = std::max(L, sh::degree_for(r, opt_.target_accuracy));
+      e = std::max(e, sh::error_estimate(r, L));
     }
-  L = std::min(L, opt_.max_degree_limit);
-  for (int i = 0; i < N; ++i)
-    for (int k = i + 1; k < N; ++k) {
-      const auto& a = p.spheres[i];
-      const auto& b = p.spheres[k];
-      if (a.permittivity == p.medium_permittivity && b.permittivity == p.medium_permittivity) continue;
-      auto r = sh::limit_ratios(a.radius, b.radius, norm(b.center - a.center));
-      est_err = std::max(est_err, sh::error_estimate(r, L));
-    }
+  est_err = e;
   return L;
 }
 
@@ -200,19 +209,35 @@ void SpectralSolver::matvec_M(const double* beta, double* alpha) {
       double* o = &out_[slot_[q - b0]];
       pair_product(pairs_[q], beta, o, o + slot_size(pairs_[q]), &scratch_[std::size_t(omp_get_thread_num()) * 4 * nc]);
     }
+    add_block(b0, b1, alpha, parallel);
+  }
+  if (far_) far_->add(beta, alpha);
+}
+
+// alpha += the products of pairs b0..b1 (out_, slot_). Every number of alpha receives its terms in pair
+// order; with `parallel` the threads split the spheres (thread t adds to spheres [N t/T, N (t+1)/T) only),
+// so the bits do not depend on the thread count.
+void SpectralSolver::add_block(std::size_t b0, std::size_t b1, double* alpha, bool parallel) const {
+  const std::size_t nc = std::size_t(nc_);
+#pragma omp parallel if (parallel)
+  {
+    const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+    const int s0 = int(std::int64_t(N_) * t / nt), s1 = int(std::int64_t(N_) * (t + 1) / nt);
     for (std::size_t q = b0; q < b1; ++q) {
       const Pair& pr = pairs_[q];
       const double* o = &out_[slot_[q - b0]];
-      const std::size_t half = slot_size(pr);
-      double* al_i = alpha + std::size_t(pr.i) * nc;
-      double* al_k = alpha + std::size_t(pr.k) * nc;
-      for (int c = 0, np = sh::ncoef(pr.L); c < np; ++c) {
-        al_i[c] += o[c];
-        al_k[c] += o[half + c];
+      const int np = sh::ncoef(pr.L);
+      if (pr.i >= s0 && pr.i < s1) {
+        double* al = alpha + std::size_t(pr.i) * nc;
+        for (int c = 0; c < np; ++c) al[c] += o[c];
+      }
+      if (pr.k >= s0 && pr.k < s1) {
+        double* al = alpha + std::size_t(pr.k) * nc;
+        const double* ok = o + slot_size(pr);
+        for (int c = 0; c < np; ++c) al[c] += ok[c];
       }
     }
   }
-  if (far_) far_->add(beta, alpha);
 }
 
 // Blocks of one product with the work to run in parallel (as matvec_M decides, at any thread count).
@@ -331,6 +356,8 @@ void SpectralSolver::apply_system(std::span<const double> xs, std::span<double> 
   double* y = ys.data();
   const int L = L_;
   matvec_M(x, alpha_.data());
+  // sphere by sphere: the same bits at any thread count
+#pragma omp parallel for schedule(static) if (std::size_t(N_) * nc_ >= kParallelLength)
   for (int i = 0; i < N_; ++i) {
     const double* g = &gamma_[i * (L + 1)];
     const double* xi = x + std::size_t(i) * nc_;
