@@ -11,12 +11,13 @@
 // 1e-2 of it); every later solve of that N and kappa_p reports max_i |F_i - F_ref,i| / max_i |F_ref,i|
 // (force_vs_reference), and "reference_check" (target kReferenceCheckTarget) the same against it: how far
 // the reference itself is from converged. "bem": the seed paper's method on the same aggregate (BEM,
-// FMM matvec, kBemPatches patches per sphere, GMRES to 1e-2), against the reference as well.
+// FMM matvec, kBemPatches patches per sphere, GMRES to 1e-2 within 1000 iterations), against the reference as well.
 // bench/spectral_far_field.sh runs it and prints the per-solve and per-product ratios.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <string>
 
 #include "agglo/core/constants.hpp"
@@ -66,6 +67,7 @@ es::SolverOptions bench_options(const std::string& far_field) {
     o.solver = "bem";
     o.patches_per_sphere = kBemPatches;
     o.tolerance = 1e-2;
+    o.max_iterations = 1000;  // 200 (the default) were not enough at N = 1000 (relative residual 0.025)
     o.matvec = "fmm";
   }
   return o;
@@ -94,8 +96,14 @@ void solve(benchmark::State& st, const std::string& far_field, double kappa) {
   // process otherwise pays the page faults of every later one). Not for the reference and the BEM
   // (each solve costs tens of seconds).
   const bool slow = far_field.starts_with("reference") || far_field == "bem";
-  es::Solution sol = slow ? es::Solution{} : bench_solver(far_field)->solve(p);
-  for (auto _ : st) sol = bench_solver(far_field)->solve(p);
+  es::Solution sol;
+  try {
+    if (!slow) sol = bench_solver(far_field)->solve(p);
+    for (auto _ : st) sol = bench_solver(far_field)->solve(p);
+  } catch (const std::exception& e) {  // e.g. GMRES not converging: reported, the other runs go on
+    st.SkipWithError(e.what());
+    return;
+  }
   st.counters["gmres_iterations"] = sol.stats.iterations;
   st.counters["degree"] = sol.stats.degree;
   if (sol.stats.extra.contains("near_pairs")) {
