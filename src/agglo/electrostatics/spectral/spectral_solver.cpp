@@ -191,8 +191,9 @@ void SpectralSolver::pair_product(const Pair& pr, const double* beta, double* ou
 // pair order, so alpha does not depend on the thread count. Cancellation is polled between blocks
 // (never inside a parallel region, core/cancel.hpp): a block is at most kBlockWork of work.
 void SpectralSolver::matvec_M(const double* beta, double* alpha) {
-  std::fill(alpha, alpha + std::size_t(N_) * nc_, 0.0);
-  const std::size_t npairs = pairs_.size(), nc = std::size_t(nc_);
+  const std::size_t npairs = pairs_.size(), nc = std::size_t(nc_), n = std::size_t(N_) * nc;
+#pragma omp parallel for schedule(static) if (n >= kParallelLength)
+  for (std::size_t c = 0; c < n; ++c) alpha[c] = 0.0;
   const int threads = omp_get_max_threads();
   out_.resize(std::min(npairs, kPairBlock) * 2 * nc);
   scratch_.resize(std::size_t(threads) * 4 * nc);
