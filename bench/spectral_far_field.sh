@@ -40,6 +40,8 @@ for b in json.load(open(sys.argv[1]))["benchmarks"]:
     best[key] = min(best.get(key, float("inf")), b["cpu_time"])
     counters[key] = b
 print(f"{'kappa':>5} {'N':>5} {'far':>15} {'solve_s':>8} {'it':>3} {'product_s':>9} {'setup_s':>8} {'near':>7} {'m2l':>6} {'F_vs_dense':>10} {'F_vs_ref':>9}")
+def opt(c, key, width):  # a counter the run has, or "-" (no dense or reference run of that N)
+    return f"{c[key]:>{width}.2e}" if key in c else f"{'-':>{width}}"
 kinds = ("reference", "reference_check", "dense", "fmm_stored", "fmm", "bem")
 for kap, n in sorted({k[:2] for k in best}, key=lambda t: (float(t[0]), t[1])):
     row = {}
@@ -53,7 +55,7 @@ for kap, n in sorted({k[:2] for k in best}, key=lambda t: (float(t[0]), t[1])):
         row[ff] = (s, prod)
         near = c.get('near_pairs', n * (n - 1) // 2 if ff != "bem" else 0)
         print(f"{kap:>5} {n:>5} {ff:>15} {s:>8.3f} {int(c['gmres_iterations']):>3} {prod:>9.4f} {p1 - prod:>8.3f} "
-              f"{near:>7.0f} {c.get('m2l', 0):>6.0f} {c.get('force_vs_dense', 0):>10.2e} {c.get('force_vs_reference', 0):>9.2e}")
+              f"{near:>7.0f} {c.get('m2l', 0):>6.0f} {opt(c, 'force_vs_dense', 10)} {opt(c, 'force_vs_reference', 9)}")
     for ref in ("dense", "fmm_stored"):
         if ref in row and "fmm" in row:
             print(f"{kap:>5} {n:>5} {ref}/fmm: solve {row[ref][0] / row['fmm'][0]:.2f}x, product {row[ref][1] / row['fmm'][1]:.2f}x")
