@@ -10,6 +10,10 @@ namespace agglo::es {
 
 namespace {
 
+// Element-wise updates of vectors at least this long run in parallel (OpenMP; each number is computed
+// alone, so the bits do not depend on the thread count). The inner products stay sequential sums.
+constexpr std::size_t kParallelLength = std::size_t(1) << 18;
+
 // <a, b> = sum_i w_i a_i b_i, evaluated as (w_i a_i) b_i; empty w: sum_i a_i b_i. Sequential sums,
 // so the result is the same bit pattern on every run.
 double dot(std::span<const double> w, std::span<const double> a, std::span<const double> b) {
@@ -26,7 +30,7 @@ double dot(std::span<const double> w, std::span<const double> a, std::span<const
 // The basis is reserved whole but its vectors are sized (and their pages touched) only when the
 // iteration reaches them (use(k)): a solve of 10 iterations does not zero a basis of m + 1 vectors
 // (1.1 GB for 1000 spheres at L = 47). Every vector is written before it is read, so sizing one does not
-// zero it (UninitialisedAllocator, gmres.hpp).
+// zero it, and its blocks lie on huge pages (LargeBufferAllocator, large_buffer.hpp).
 struct Krylov {
   Krylov(GmresWorkspace& ws, std::size_t n_, int m_) : w(ws), n(n_), m(m_) {
     const std::size_t full = (static_cast<std::size_t>(m) + 1) * n;
@@ -66,12 +70,15 @@ double arnoldi_step(const LinearOperator& A, std::span<const double> weights, co
     const std::span<const double> vi = K.V(i);
     const double d = dot(weights, v, vi);
     K.h(i, k) = d;
+#pragma omp parallel for schedule(static) if (K.n >= kParallelLength)
     for (std::size_t j = 0; j < K.n; ++j) v[j] -= d * vi[j];
   }
   const double hn = std::sqrt(dot(weights, v, v));
   K.h(k + 1, k) = hn;
-  if (hn > 0.0)
+  if (hn > 0.0) {
+#pragma omp parallel for schedule(static) if (K.n >= kParallelLength)
     for (std::size_t j = 0; j < K.n; ++j) v[j] /= hn;
+  }
   for (int i = 0; i < k; ++i) {
     const double t = cs[i] * K.h(i, k) + sn[i] * K.h(i + 1, k);
     K.h(i + 1, k) = -sn[i] * K.h(i, k) + cs[i] * K.h(i + 1, k);
@@ -101,7 +108,9 @@ bool update_solution(const Krylov& K, int k, std::span<double> x) {
   }
   for (int i = 0; i < k; ++i) {
     const std::span<const double> vi = K.V(i);
-    for (std::size_t j = 0; j < K.n; ++j) x[j] += y[i] * vi[j];
+    const double yi = y[i];
+#pragma omp parallel for schedule(static) if (K.n >= kParallelLength)
+    for (std::size_t j = 0; j < K.n; ++j) x[j] += yi * vi[j];
   }
   return zero_pivot;
 }
@@ -137,6 +146,7 @@ GmresResult gmres(const LinearOperator& A, std::span<const double> b, std::span<
     A(x, r);
     ++res.matvecs;
     poll_cancel();  // every operator application: a cancelled run stops here (core/cancel.hpp)
+#pragma omp parallel for schedule(static) if (n >= kParallelLength)
     for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
     const double beta = std::sqrt(dot(weights, r, r));
     res.residual = beta / bnorm;
@@ -146,6 +156,7 @@ GmresResult gmres(const LinearOperator& A, std::span<const double> b, std::span<
       return res;
     }
     if (res.iterations >= max_iterations) return res;
+#pragma omp parallel for schedule(static) if (n >= kParallelLength)
     for (std::size_t i = 0; i < n; ++i) r[i] /= beta;
     std::fill(g.begin(), g.end(), 0.0);
     g[0] = beta;

@@ -10,11 +10,10 @@
 // After every operator application the calling thread's cancel token is polled (core/cancel.hpp):
 // InterruptedError when it is set.
 #include <functional>
-#include <memory>
-#include <new>
 #include <span>
-#include <utility>
 #include <vector>
+
+#include "agglo/electrostatics/large_buffer.hpp"
 
 namespace agglo::es {
 
@@ -40,30 +39,8 @@ struct GmresResult {
 
 // Reusable storage (Krylov basis, Hessenberg matrix, rotations): repeated solves of the same size
 // and restart length do not allocate.
-// An allocator whose value-initialisation (vector::resize) leaves the numbers unset: the Krylov basis is
-// written before it is read, and zeroing it first cost 13 % of a cold spectral solve of 1000 spheres
-// (perf, the memset of 9 basis vectors of 18 MB each; issue 25).
-template <class T>
-struct UninitialisedAllocator : std::allocator<T> {
-  template <class U>
-  struct rebind {
-    using other = UninitialisedAllocator<U>;
-  };
-  UninitialisedAllocator() = default;
-  template <class U>
-  UninitialisedAllocator(const UninitialisedAllocator<U>&) noexcept {}
-  template <class U>
-  void construct(U* p) noexcept {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
-
 struct GmresWorkspace {
-  std::vector<double, UninitialisedAllocator<double>> V;  // (restart + 1) basis vectors of length n, contiguous
+  LargeVector V;  // (restart + 1) basis vectors of length n, contiguous
   std::vector<double> H, cs, sn, g, y;
 };
 

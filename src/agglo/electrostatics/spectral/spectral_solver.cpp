@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <stdexcept>
 
@@ -14,6 +15,7 @@
 #include "agglo/core/error.hpp"
 #include "agglo/electrostatics/keys.hpp"
 #include "agglo/electrostatics/gmres.hpp"
+#include "agglo/electrostatics/large_buffer.hpp"
 #include "agglo/electrostatics/spectral/degree.hpp"
 #include "agglo/electrostatics/spectral/far_field.hpp"
 #include "agglo/electrostatics/spectral/harmonics.hpp"
@@ -42,6 +44,10 @@ constexpr double kBlockWork = 1e7;
 // two threads with GOMP_SPINCOUNT=3000, 9.4 s on one and 36.6 s on two with the default spin count
 // under a load of 4 (docs/electrostatics.md, "Threads").
 constexpr double kParallelPairWork = 1e6;
+// Element-wise passes over the unknowns (apply_system) run in parallel from this many numbers on.
+constexpr std::size_t kParallelLength = std::size_t(1) << 18;
+// choose_degree: pairs of spheres from this many spheres on are visited in parallel.
+constexpr int kParallelDegreeSpheres = 200;
 
 // Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
 // sphere's own potential outside is sum B_lm I_l^m(x - x_i). The external potential at sphere i
@@ -64,11 +70,11 @@ class SpectralSolver final : public Solver {
   }
   std::vector<SurfaceSample> surface() const override;
   std::vector<std::array<int, 3>> surface_triangles() const override;
-  WarmStart warm_start() const override { return {{prev_L_, prev_N_}, prev_beta_}; }
+  WarmStart warm_start() const override { return {{prev_L_, prev_N_}, {prev_beta_.begin(), prev_beta_.end()}}; }
   void set_warm_start(const WarmStart& w) override {
     prev_L_ = static_cast<int>(w.ints.at(0));
     prev_N_ = static_cast<int>(w.ints.at(1));
-    prev_beta_ = w.values;
+    prev_beta_.assign(w.values.begin(), w.values.end());
   }
 
  private:
@@ -83,6 +89,7 @@ class SpectralSolver final : public Solver {
   };
   // alpha = M beta (sphere-sphere part)
   void matvec_M(const double* beta, double* alpha);
+  void add_block(std::size_t b0, std::size_t b1, double* alpha, bool parallel) const;
   long count_parallel_blocks() const;
   void pair_product(const Pair& pr, const double* beta, double* out_i, double* out_k, double* s) const;
   std::size_t block_end(std::size_t b0, double& work) const;
@@ -90,9 +97,9 @@ class SpectralSolver final : public Solver {
   int choose_degree(const Problem& p, double& est_err);
   void prepare(const Problem& p, int L);
   void build_pairs(const Problem& p);
-  void applied_field(const Problem& p, std::vector<double>& alpha_ext, std::vector<double>& rhs);
+  void applied_field(const Problem& p, LargeVector& alpha_ext, LargeVector& rhs);
   void apply_system(std::span<const double> x, std::span<double> y);
-  GmresResult solve_multipoles(const Problem& p, const std::vector<double>& rhs, double tol);
+  GmresResult solve_multipoles(const Problem& p, const LargeVector& rhs, double tol);
   Solution forces_and_energy(const Problem& p) const;
 
   SolverOptions opt_;
@@ -103,7 +110,8 @@ class SpectralSolver final : public Solver {
   sh::FarFieldOptions far_options_;
   int L_ = 0, N_ = 0, nc_ = 0;
   std::vector<double> gamma_;  // per sphere, per l
-  std::vector<double> beta_, alpha_;
+  // per sphere ncoef(L) numbers (18 MB each at N = 1000, L = 47): on huge pages (large_buffer.hpp)
+  LargeVector beta_, alpha_;
   std::vector<double> out_, scratch_;  // matvec_M: per-pair products of a block, per-thread scratch
   std::vector<std::size_t> slot_;      // matvec_M: offset of each pair's products in out_
   // Blocks of one product with the work to run in parallel (whether or not threads > 1: an output
@@ -114,42 +122,45 @@ class SpectralSolver final : public Solver {
   Problem last_;
   GmresWorkspace ws_;
   // warm start
-  std::vector<double> prev_beta_;
+  LargeVector prev_beta_;
   int prev_L_ = -1, prev_N_ = -1;
 };
 
+// L: the largest pair degree for the target over pairs with a polarisable sphere (capped), or max_degree;
+// est_err: the largest error estimate at L (every pair when max_degree is set). Maxima do not depend on
+// the order of the pairs, so the pairs are visited in parallel from kParallelDegreeSpheres spheres on.
 int SpectralSolver::choose_degree(const Problem& p, double& est_err) {
   const int N = static_cast<int>(p.spheres.size());
-  est_err = 0.0;
-  if (opt_.max_degree > 0) {
+  const bool threaded = N >= kParallelDegreeSpheres;
+  const bool every_pair = opt_.max_degree > 0;
+  auto skip = [&](const Sphere& a, const Sphere& b) {
+    // a pair with no polarisable sphere needs only its monopoles
+    return !every_pair && a.permittivity == p.medium_permittivity && b.permittivity == p.medium_permittivity;
+  };
+  int L = every_pair ? opt_.max_degree : 2;
+  if (!every_pair) {
+#pragma omp parallel for schedule(dynamic, 8) reduction(max : L) if (threaded)
     for (int i = 0; i < N; ++i)
       for (int k = i + 1; k < N; ++k) {
         const auto& a = p.spheres[i];
         const auto& b = p.spheres[k];
+        if (skip(a, b)) continue;
         auto r = sh::limit_ratios(a.radius, b.radius, norm(b.center - a.center));
-        est_err = std::max(est_err, sh::error_estimate(r, opt_.max_degree));
+        L = std::max(L, sh::degree_for(r, opt_.target_accuracy));
       }
-    return opt_.max_degree;
+    L = std::min(L, opt_.max_degree_limit);
   }
-  int L = 2;
+  double e = 0.0;
+#pragma omp parallel for schedule(dynamic, 8) reduction(max : e) if (threaded)
   for (int i = 0; i < N; ++i)
     for (int k = i + 1; k < N; ++k) {
       const auto& a = p.spheres[i];
       const auto& b = p.spheres[k];
-      // a pair with no polarisable sphere needs only its monopoles
-      if (a.permittivity == p.medium_permittivity && b.permittivity == p.medium_permittivity) continue;
+      if (skip(a, b)) continue;
       auto r = sh::limit_ratios(a.radius, b.radius, norm(b.center - a.center));
-      L = std::max(L, sh::degree_for(r, opt_.target_accuracy));
+      e = std::max(e, sh::error_estimate(r, L));
     }
-  L = std::min(L, opt_.max_degree_limit);
-  for (int i = 0; i < N; ++i)
-    for (int k = i + 1; k < N; ++k) {
-      const auto& a = p.spheres[i];
-      const auto& b = p.spheres[k];
-      if (a.permittivity == p.medium_permittivity && b.permittivity == p.medium_permittivity) continue;
-      auto r = sh::limit_ratios(a.radius, b.radius, norm(b.center - a.center));
-      est_err = std::max(est_err, sh::error_estimate(r, L));
-    }
+  est_err = e;
   return L;
 }
 
@@ -180,8 +191,9 @@ void SpectralSolver::pair_product(const Pair& pr, const double* beta, double* ou
 // pair order, so alpha does not depend on the thread count. Cancellation is polled between blocks
 // (never inside a parallel region, core/cancel.hpp): a block is at most kBlockWork of work.
 void SpectralSolver::matvec_M(const double* beta, double* alpha) {
-  std::fill(alpha, alpha + std::size_t(N_) * nc_, 0.0);
-  const std::size_t npairs = pairs_.size(), nc = std::size_t(nc_);
+  const std::size_t npairs = pairs_.size(), nc = std::size_t(nc_), n = std::size_t(N_) * nc;
+#pragma omp parallel for schedule(static) if (n >= kParallelLength)
+  for (std::size_t c = 0; c < n; ++c) alpha[c] = 0.0;
   const int threads = omp_get_max_threads();
   out_.resize(std::min(npairs, kPairBlock) * 2 * nc);
   scratch_.resize(std::size_t(threads) * 4 * nc);
@@ -198,19 +210,35 @@ void SpectralSolver::matvec_M(const double* beta, double* alpha) {
       double* o = &out_[slot_[q - b0]];
       pair_product(pairs_[q], beta, o, o + slot_size(pairs_[q]), &scratch_[std::size_t(omp_get_thread_num()) * 4 * nc]);
     }
+    add_block(b0, b1, alpha, parallel);
+  }
+  if (far_) far_->add(beta, alpha);
+}
+
+// alpha += the products of pairs b0..b1 (out_, slot_). Every number of alpha receives its terms in pair
+// order; with `parallel` the threads split the spheres (thread t adds to spheres [N t/T, N (t+1)/T) only),
+// so the bits do not depend on the thread count.
+void SpectralSolver::add_block(std::size_t b0, std::size_t b1, double* alpha, bool parallel) const {
+  const std::size_t nc = std::size_t(nc_);
+#pragma omp parallel if (parallel)
+  {
+    const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+    const int s0 = int(std::int64_t(N_) * t / nt), s1 = int(std::int64_t(N_) * (t + 1) / nt);
     for (std::size_t q = b0; q < b1; ++q) {
       const Pair& pr = pairs_[q];
       const double* o = &out_[slot_[q - b0]];
-      const std::size_t half = slot_size(pr);
-      double* al_i = alpha + std::size_t(pr.i) * nc;
-      double* al_k = alpha + std::size_t(pr.k) * nc;
-      for (int c = 0, np = sh::ncoef(pr.L); c < np; ++c) {
-        al_i[c] += o[c];
-        al_k[c] += o[half + c];
+      const int np = sh::ncoef(pr.L);
+      if (pr.i >= s0 && pr.i < s1) {
+        double* al = alpha + std::size_t(pr.i) * nc;
+        for (int c = 0; c < np; ++c) al[c] += o[c];
+      }
+      if (pr.k >= s0 && pr.k < s1) {
+        double* al = alpha + std::size_t(pr.k) * nc;
+        const double* ok = o + slot_size(pr);
+        for (int c = 0; c < np; ++c) al[c] += ok[c];
       }
     }
   }
-  if (far_) far_->add(beta, alpha);
 }
 
 // Blocks of one product with the work to run in parallel (as matvec_M decides, at any thread count).
@@ -234,7 +262,8 @@ std::size_t SpectralSolver::block_end(std::size_t b0, double& work) const {
   work = 0.0;
   while (b1 < pairs_.size() && work < kBlockWork && used + slot_size(pairs_[b1]) <= cap) {
     used += slot_size(pairs_[b1]);
-    work += std::pow(pairs_[b1++].L + 1.0, 3);
+    const double w = pairs_[b1++].L + 1.0;
+    work += w * w * w;  // (L + 1)^3, exact: the same blocks as std::pow, without its cost per pair and product
   }
   return b1;
 }
@@ -293,7 +322,7 @@ void SpectralSolver::build_pairs(const Problem& p) {
 
 // gamma_l per sphere; the applied field's local coefficients alpha_ext (phi = -E.x, scaled by
 // a^l) and the right-hand side rhs = -gamma alpha_ext (l >= 1), q / (4 pi eps0 kappa0 a) (l = 0).
-void SpectralSolver::applied_field(const Problem& p, std::vector<double>& alpha_ext, std::vector<double>& rhs) {
+void SpectralSolver::applied_field(const Problem& p, LargeVector& alpha_ext, LargeVector& rhs) {
   const int N = N_, L = L_;
   const double k0 = p.medium_permittivity;
   gamma_.assign(std::size_t(N) * (L + 1), 0.0);
@@ -328,6 +357,8 @@ void SpectralSolver::apply_system(std::span<const double> xs, std::span<double> 
   double* y = ys.data();
   const int L = L_;
   matvec_M(x, alpha_.data());
+  // sphere by sphere: the same bits at any thread count
+#pragma omp parallel for schedule(static) if (std::size_t(N_) * nc_ >= kParallelLength)
   for (int i = 0; i < N_; ++i) {
     const double* g = &gamma_[i * (L + 1)];
     const double* xi = x + std::size_t(i) * nc_;
@@ -340,7 +371,7 @@ void SpectralSolver::apply_system(std::span<const double> xs, std::span<double> 
 
 // beta_ from (I + gamma M) beta = rhs: exact (beta = rhs) when no sphere is polarisable, else GMRES
 // to `tol` warm-started from the previous solve (same number of spheres).
-GmresResult SpectralSolver::solve_multipoles(const Problem& p, const std::vector<double>& rhs, double tol) {
+GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector& rhs, double tol) {
   const int N = N_;
   const std::size_t n = std::size_t(N) * nc_;
   beta_.assign(n, 0.0);
@@ -419,7 +450,7 @@ Solution SpectralSolver::solve(const Problem& p) {
   double est_err = 0.0;
   const int L = choose_degree(p, est_err);
   prepare(p, L);
-  std::vector<double> alpha_ext, rhs;
+  LargeVector alpha_ext, rhs;
   applied_field(p, alpha_ext, rhs);
   const double tol = std::min(opt_.tolerance, 1e-2 * opt_.target_accuracy);
   const GmresResult gr = solve_multipoles(p, rhs, tol);
