@@ -12,7 +12,7 @@ namespace {
 
 // Element-wise updates of vectors at least this long run in parallel (OpenMP; each number is computed
 // alone, so the bits do not depend on the thread count). The inner products stay sequential sums.
-constexpr std::size_t kParallelLength = std::size_t(1) << 18;
+constexpr std::size_t kGmresParallelLength = std::size_t(1) << 18;
 
 // <a, b> = sum_i w_i a_i b_i, evaluated as (w_i a_i) b_i; empty w: sum_i a_i b_i. Sequential sums,
 // so the result is the same bit pattern on every run.
@@ -70,13 +70,13 @@ double arnoldi_step(const LinearOperator& A, std::span<const double> weights, co
     const std::span<const double> vi = K.V(i);
     const double d = dot(weights, v, vi);
     K.h(i, k) = d;
-#pragma omp parallel for schedule(static) if (K.n >= kParallelLength)
+#pragma omp parallel for schedule(static) if (K.n >= kGmresParallelLength)
     for (std::size_t j = 0; j < K.n; ++j) v[j] -= d * vi[j];
   }
   const double hn = std::sqrt(dot(weights, v, v));
   K.h(k + 1, k) = hn;
   if (hn > 0.0) {
-#pragma omp parallel for schedule(static) if (K.n >= kParallelLength)
+#pragma omp parallel for schedule(static) if (K.n >= kGmresParallelLength)
     for (std::size_t j = 0; j < K.n; ++j) v[j] /= hn;
   }
   for (int i = 0; i < k; ++i) {
@@ -109,7 +109,7 @@ bool update_solution(const Krylov& K, int k, std::span<double> x) {
   for (int i = 0; i < k; ++i) {
     const std::span<const double> vi = K.V(i);
     const double yi = y[i];
-#pragma omp parallel for schedule(static) if (K.n >= kParallelLength)
+#pragma omp parallel for schedule(static) if (K.n >= kGmresParallelLength)
     for (std::size_t j = 0; j < K.n; ++j) x[j] += yi * vi[j];
   }
   return zero_pivot;
@@ -146,7 +146,7 @@ GmresResult gmres(const LinearOperator& A, std::span<const double> b, std::span<
     A(x, r);
     ++res.matvecs;
     poll_cancel();  // every operator application: a cancelled run stops here (core/cancel.hpp)
-#pragma omp parallel for schedule(static) if (n >= kParallelLength)
+#pragma omp parallel for schedule(static) if (n >= kGmresParallelLength)
     for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
     const double beta = std::sqrt(dot(weights, r, r));
     res.residual = beta / bnorm;
@@ -156,7 +156,7 @@ GmresResult gmres(const LinearOperator& A, std::span<const double> b, std::span<
       return res;
     }
     if (res.iterations >= max_iterations) return res;
-#pragma omp parallel for schedule(static) if (n >= kParallelLength)
+#pragma omp parallel for schedule(static) if (n >= kGmresParallelLength)
     for (std::size_t i = 0; i < n; ++i) r[i] /= beta;
     std::fill(g.begin(), g.end(), 0.0);
     g[0] = beta;

@@ -45,7 +45,7 @@ constexpr double kBlockWork = 1e7;
 // under a load of 4 (docs/electrostatics.md, "Threads").
 constexpr double kParallelPairWork = 1e6;
 // Element-wise passes over the unknowns (apply_system) run in parallel from this many numbers on.
-constexpr std::size_t kParallelLength = std::size_t(1) << 18;
+constexpr std::size_t kSpectralParallelLength = std::size_t(1) << 18;
 // choose_degree: pairs of spheres from this many spheres on are visited in parallel.
 constexpr int kParallelDegreeSpheres = 200;
 
@@ -192,7 +192,7 @@ void SpectralSolver::pair_product(const Pair& pr, const double* beta, double* ou
 // (never inside a parallel region, core/cancel.hpp): a block is at most kBlockWork of work.
 void SpectralSolver::matvec_M(const double* beta, double* alpha) {
   const std::size_t npairs = pairs_.size(), nc = std::size_t(nc_), n = std::size_t(N_) * nc;
-#pragma omp parallel for schedule(static) if (n >= kParallelLength)
+#pragma omp parallel for schedule(static) if (n >= kSpectralParallelLength)
   for (std::size_t c = 0; c < n; ++c) alpha[c] = 0.0;
   const int threads = omp_get_max_threads();
   out_.resize(std::min(npairs, kPairBlock) * 2 * nc);
@@ -358,7 +358,7 @@ void SpectralSolver::apply_system(std::span<const double> xs, std::span<double> 
   const int L = L_;
   matvec_M(x, alpha_.data());
   // sphere by sphere: the same bits at any thread count
-#pragma omp parallel for schedule(static) if (std::size_t(N_) * nc_ >= kParallelLength)
+#pragma omp parallel for schedule(static) if (std::size_t(N_) * nc_ >= kSpectralParallelLength)
   for (int i = 0; i < N_; ++i) {
     const double* g = &gamma_[i * (L + 1)];
     const double* xi = x + std::size_t(i) * nc_;
