@@ -5,6 +5,9 @@
 #include <cmath>
 #include <limits>
 
+#include "agglo/dem/contact/jkr_normal.hpp"
+#include "agglo/dem/contact/no_resistance.hpp"
+#include "agglo/dem/contact/ruan_li_friction.hpp"
 #include "agglo/impact/contact_barrier.hpp"
 
 namespace agglo::impact {
@@ -27,7 +30,9 @@ const char* intact_model_obstacle(const dem::DemSystem& sys) {
   if (!d.walls.empty()) return "walls";
   if (d.gas.enabled) return "gas drag";
   const auto& m = sys.contact_law().names();
-  if (m.normal != "jkr" || m.tangential != "ruan_li" || m.rolling != "none" || m.twisting != "none")
+  namespace c = dem::contact;
+  if (m.normal != c::JkrNormal::name || m.tangential != c::RuanLiFriction::name || m.rolling != c::NoRolling::name ||
+      m.twisting != c::NoTwisting::name)
     return "a contact model with stored tangential energy";
   return nullptr;
 }
