@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # Runs the seed-002 studies behind docs/acoustics.md. Usage: bench/acoustic_studies.sh AGGLO OUTDIR [part]
 # parts: integrator | diameter | concentration | validation | baseline | diameter_seeds |
-# concentration_seeds | all (default all: the first five; the *_seeds parts are the two sweeps with 4 seeds
-# per point and error bars, points with droplets only, docs/acoustics.md "Seed ensembles and error bars").
+# concentration_seeds | all | every (default all: the first five; every: all seven; the *_seeds parts are
+# the two sweeps with 4 seeds per point and error bars, points with droplets only, docs/acoustics.md "Seed
+# ensembles and error bars").
 # Every case runs at its own steps (5e-5 s for the 2000 Hz cases, 10 steps per acoustic period; the
 # exact integrator with drift correction, docs/acoustics.md sec. 3). Extra flags for every sweep can be
 # given in BIG (e.g. BIG="--set time.collision_dt=1e-5 --set time.motion_dt=1e-5"). JOBS = threads,
 # SEEDS = members per point of the *_seeds parts (default 4).
 # SMOKE=1: the smoke test (ctest -L bench): "all" runs every part, each case cut to 1e-4 s (two steps;
 # the integrator check 10 steps of 1e-5 s, 1000 explicit ones), 200 + 20 samples (no clones), no snapshots,
-# CSV outputs only (no results.nc), no plots, one seed of the integrator check, SEEDS=2, JOBS=1; the same cases, sweeps and options otherwise.
+# CSV outputs only (no results.nc), no plots, one seed of the integrator check, SEEDS=2, JOBS=1; the same
+# cases, sweeps and options otherwise.
 set -eu
 AGGLO="$1"
 OUT="$2"
