@@ -15,7 +15,7 @@
 # contact from a 0.02 r gap (no relaxation, no extensions), electrostatics.target_accuracy = 0.1 and
 # update_fraction = 0.2, v_crit scans of 3 speeds up to 1.5 m/s bisected to 0.5 m/s; the calibration on a
 # 3 x 3 map without refinement, its targets' tolerance 1 m/s (the cut runs cannot meet the seed's values);
-# no agglo plots, CSV outputs only (no results.nc). The same steps, table and figures.
+# no plots, CSV outputs only (no results.nc). The same steps and table (table2.csv, table2.json).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 A=${AGGLO:-build/agglo}
@@ -62,4 +62,6 @@ $A -q --no-plots collide cases/seed000_neutral_tetrahedron.toml --speed 0.175 --
 for k in k1 k15; do
   $A -q --no-plots collide cases/seed000_charged_tetrahedron_$k.toml --speed 0.18 --overwrite --out "$OUT/hist_${k}_0.18" "$@"
 done
-/usr/bin/python3 scripts/plot_seed000.py "$OUT" "$((end - start))" "$((cal - start))"
+figures=()
+[ "${SMOKE:-0}" = 1 ] && figures=(--no-figures)
+/usr/bin/python3 scripts/plot_seed000.py "$OUT" "$((end - start))" "$((cal - start))" "${figures[@]}"
