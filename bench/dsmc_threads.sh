@@ -14,15 +14,16 @@
 #   FLYASH_SAMPLES=8000
 # Timing only (never a test); on a shared machine only the ratios of one invocation mean anything.
 #   SMOKE=1: the smoke test (ctest -L bench): ROUNDS=1, T=0.0025 (49 and 50 steps), FLYASH_SAMPLES=800 and
-#   the baseline with 800 + 16 samples, both without clones (sampling.min_samples_per_cell = 0); every
-#   variant, the same table and medians.
+#   the baseline with 800 + 16 samples, both without clones (sampling.min_samples_per_cell = 0),
+#   VARIANTS="j1 j2" (j2_fixed and j2_spin differ from j2 only by their environment); the same table,
+#   medians and ratios.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 AGGLO=${1:-$SRC/build/agglo}
 OUT=${2:-$SRC/results/bench_dsmc_threads}
 smoke=() base_smoke=()
 if [ "${SMOKE:-0}" = 1 ]; then
-  ROUNDS=${ROUNDS:-1} T=${T:-0.0025} FLYASH_SAMPLES=${FLYASH_SAMPLES:-800}
+  ROUNDS=${ROUNDS:-1} T=${T:-0.0025} FLYASH_SAMPLES=${FLYASH_SAMPLES:-800} VARIANTS=${VARIANTS:-"j1 j2"}
   smoke=(--set sampling.min_samples_per_cell=0)
   base_smoke=(--set population.0.samples=800 --set population.1.samples=16)
 fi
