@@ -134,39 +134,40 @@ void product(benchmark::State& st, const std::string& far_field, double kappa) {
 
 }  // namespace
 
-// The references first: later solves of the same N and kappa_p compare with them.
+// The references first: later solves of the same N and kappa_p compare with them. N = 10: the size of
+// the smoke test (SMOKE=1 bench/spectral_far_field.sh, ctest -L bench).
 BENCHMARK_CAPTURE(solve, reference_k2.5, std::string("reference"), 2.5)
-    ->ArgName("N")->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, reference_k15, std::string("reference"), 15.0)
-    ->ArgName("N")->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, reference_check_k2.5, std::string("reference_check"), 2.5)
-    ->ArgName("N")->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(product, dense_k2.5, std::string("dense"), 2.5)
-    ->ArgNames({"N", "products"})->ArgsProduct({{100, 200, 400, 1000}, {1, 6}})
+    ->ArgNames({"N", "products"})->ArgsProduct({{10, 100, 200, 400, 1000}, {1, 6}})
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(product, fmm_k2.5, std::string("fmm"), 2.5)
-    ->ArgNames({"N", "products"})->ArgsProduct({{100, 200, 400, 1000, 2000, 3000}, {1, 6}})
+    ->ArgNames({"N", "products"})->ArgsProduct({{10, 100, 200, 400, 1000, 2000, 3000}, {1, 6}})
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(product, fmm_stored_k2.5, std::string("fmm_stored"), 2.5)
-    ->ArgNames({"N", "products"})->ArgsProduct({{100, 200, 400, 1000}, {1, 6}})
+    ->ArgNames({"N", "products"})->ArgsProduct({{10, 100, 200, 400, 1000}, {1, 6}})
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, dense_k2.5, std::string("dense"), 2.5)
-    ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, fmm_k2.5, std::string("fmm"), 2.5)
-    ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)->Arg(2000)->Arg(3000)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)->Arg(2000)->Arg(3000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, fmm_stored_k2.5, std::string("fmm_stored"), 2.5)
-    ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, dense_k15, std::string("dense"), 15.0)
-    ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, fmm_k15, std::string("fmm"), 15.0)
-    ->ArgName("N")->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 
 BENCHMARK_CAPTURE(solve, bem_k2.5, std::string("bem"), 2.5)
-    ->ArgName("N")->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 
 BENCHMARK_MAIN();

@@ -7,10 +7,12 @@
 # of the 1e9-sample geometry in docs/scaling.md).
 #   bench/dsmc_migration.sh [AGGLO] [OUT_DIR]      T=0.1 (s; the case's step is 5e-5 s)
 #   STEPS=1: steps between the two snapshots (e.g. 2000 to see the rare y moves of rebound kicks)
+#   SMOKE=1: the smoke test (ctest -L bench): T=1e-4 (2 steps); the same run and analysis.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 AGGLO=${1:-$SRC/build/agglo}
 OUT=${2:-$SRC/results/bench_dsmc_migration}
+[ "${SMOKE:-0}" = 1 ] && T=${T:-1e-4}
 T=${T:-0.1}
 DT=5e-5
 STEPS=${STEPS:-1}

@@ -15,31 +15,48 @@
 #   in OUT/before_src, built in OUT/before_build with ccache when present; both kept for the next run:
 #   `git worktree remove OUT/before_src` when done), printed before/after.
 #   BEFORE_AGGLO=PATH: an agglo already built from REV (no rebuild). SCALES= (empty): parts 1-3 skipped.
+#   N_SOLID=8243, N_LIQUID=160: samples of the two populations at scale 1 (the case's).
+#   SMOKE=1: the smoke test (ctest -L bench): SCALES="1 4", T1=1e-4, T2=2e-4 (2 and 4 steps), N_SOLID=824,
+#   N_LIQUID=16 without clones (sampling.min_samples_per_cell = 0); part 4 skipped
+#   unless CALLGRIND=1 (a callgrind run costs ~3 s even at 10 steps), BEFORE and BEFORE_AGGLO ignored (no
+#   rebuild); the same parsing and printing of parts 1-3.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 AGGLO=${1:-$SRC/build/agglo}
 OUT=${2:-$SRC/results/bench_dsmc_sample_cost}
+if [ "${SMOKE:-0}" = 1 ]; then
+  SCALES=${SCALES-"1 4"} T1=${T1:-1e-4} T2=${T2:-2e-4} CALLGRIND=${CALLGRIND:-0} N_SOLID=${N_SOLID:-824}
+  N_LIQUID=${N_LIQUID:-16} smoke="--set sampling.min_samples_per_cell=0"
+  [ -z "${BEFORE:-}${BEFORE_AGGLO:-}" ] || echo "smoke: BEFORE and BEFORE_AGGLO ignored (no rebuild of a previous commit)"
+  unset BEFORE BEFORE_AGGLO
+  [ "$CALLGRIND" = 1 ] || echo "smoke: part 4 (callgrind) skipped"
+fi
 SCALES=${SCALES-"1 9 100"}
 T1=${T1:-0.005}
 T2=${T2:-0.025}
 CALLGRIND=${CALLGRIND:-1}
 CG_T1=${CG_T1:-0.0025}
 CG_T2=${CG_T2:-0.005}
+N_SOLID=${N_SOLID:-8243}
+N_LIQUID=${N_LIQUID:-160}
 CASE="$SRC/cases/seed002_baseline.toml"
 DT=5e-5  # the case's collision_dt = motion_dt
 mkdir -p "$OUT"
 export OMP_NUM_THREADS=1
 
-# Options of a run at scale S to end time T (extra arguments appended).
+isqrt() { local k=0; while (( (k + 1) * (k + 1) <= $1 )); do k=$((k + 1)); done; echo "$k"; }
+# Options of a run at scale S to end time T (extra arguments appended). The cross-section 0.01 m x k is
+# printed with 17 digits (the double of 0.01 * k exactly).
 opts() {
   local s=$1 t=$2
-  local k
-  k=$(/usr/bin/python3 -c "import math; print(math.isqrt($s))")
+  local k len
+  k=$(isqrt "$s")
+  len=$(awk -v k="$k" 'BEGIN { printf "%.17g", 0.01 * k }')
   echo "--threads 1 --no-plots --format csv --quiet --overwrite --set time.end=$t \
  --set output.psd_times=[0.0] --set output.snapshot_times=[] --set output.efficiency_interval=$T1 \
- --set domain.length_y=$(/usr/bin/python3 -c "print(0.01 * $k)") --set domain.length_z=$(/usr/bin/python3 -c "print(0.01 * $k)") \
+ --set domain.length_y=$len --set domain.length_z=$len \
  --set domain.cells_y=$k --set domain.cells_z=$k \
- --set population.0.samples=$((8243 * s)) --set population.1.samples=$((160 * s))"
+ --set population.0.samples=$((N_SOLID * s)) --set population.1.samples=$((N_LIQUID * s)) ${smoke:-}"
 }
 
 if [ -n "$SCALES" ]; then
@@ -52,7 +69,7 @@ for s in $SCALES; do
     /usr/bin/time -f "%e %U %M" -o "$dir.time" "$AGGLO" acoustic "$CASE" --out "$dir" $(opts "$s" "$t") > /dev/null
     read -r wall user rss < "$dir.time"
     n=$(/usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d['samples'])" "$dir/summary.json")
-    k=$(/usr/bin/python3 -c "import math; print(math.isqrt($s))")
+    k=$(isqrt "$s")
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$s" "$n" "$((100 * k * k))" "$t" "$wall" "$user" "$rss" >> "$table"
   done
 done
@@ -87,7 +104,7 @@ for s in $(echo "$SCALES" | cut -d' ' -f1-2); do
   "$AGGLO" acoustic "$CASE" --out "$dir" $(opts "$s" "$T1") --checkpoint "$T1" > /dev/null
   n=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['samples'])" "$dir/summary.json")
   bytes=$(stat -c %s "$dir/checkpoint.bin")
-  echo "checkpoint scale $s: $bytes bytes for $n samples = $(/usr/bin/python3 -c "print(f'{$bytes / $n:.1f}')") bytes per sample"
+  echo "checkpoint scale $s: $bytes bytes for $n samples = $(awk -v b="$bytes" -v n="$n" 'BEGIN { printf "%.1f", b / n }') bytes per sample"
 done
 fi
 

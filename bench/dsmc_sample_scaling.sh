@@ -8,10 +8,18 @@
 #   bench/dsmc_sample_scaling.sh [AGGLO] [OUT_DIR]
 #   SAMPLES="1000 2000 4000 8000", T1=0.0510204 (1000 steps), T2=0.2040816 (4000 steps),
 #   CALLGRIND=1, CG_SAMPLES="2000 8000", CG_T1=0.0102041 (200 steps), CG_T2=0.0204082 (400 steps)
+#   SMOKE=1: the smoke test (ctest -L bench): SAMPLES="200 400" without clones (sampling.min_samples_per_cell
+#   = 0), T1 and T2 of 2 and 4 steps, part 2
+#   (callgrind) skipped unless CALLGRIND=1 (a callgrind run costs ~3 s even at 10 steps).
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 AGGLO=${1:-$SRC/build/agglo}
 OUT=${2:-$SRC/results/bench_dsmc_sample_scaling}
+if [ "${SMOKE:-0}" = 1 ]; then
+  SAMPLES=${SAMPLES:-"200 400"} T1=${T1:-1.0204081632653062e-4} T2=${T2:-2.0408163265306123e-4}
+  CALLGRIND=${CALLGRIND:-0} smoke="--set sampling.min_samples_per_cell=0"
+  [ "$CALLGRIND" = 1 ] || echo "smoke: part 2 (callgrind) skipped"
+fi
 SAMPLES=${SAMPLES:-"1000 2000 4000 8000"}
 T1=${T1:-0.0510204081632653}
 T2=${T2:-0.2040816326530612}
@@ -24,7 +32,7 @@ mkdir -p "$OUT"
 export OMP_NUM_THREADS=1
 opts() {  # opts SAMPLES T
   echo "--threads 1 --no-plots --quiet --format csv --overwrite --set time.end=$2 --set population.0.samples=$1 \
- --set output.psd_times=[0.0] --set output.snapshot_times=[] --set output.efficiency_interval=$2"
+ --set output.psd_times=[0.0] --set output.snapshot_times=[] --set output.efficiency_interval=$2 ${smoke:-}"
 }
 table="$OUT/scaling.tsv"
 printf 'samples\tT_s\twall_s\tuser_s\n' > "$table"
@@ -50,7 +58,8 @@ for n in dict.fromkeys(r["samples"] for r in rows):
     s, m = summary["nanbu"], summary["samples"]
     steps = s["particle_steps"]
     first = first or (m, per_s)
-    print(f"{n:>9}  {m:>7}  {per_s:8.2f} s ({per_s / first[1]:5.2f}x for {m / first[0]:.0f}x samples)  "
+    ratio = f"{per_s / first[1]:5.2f}x" if first[1] > 0 else "    -"  # - : no CPU difference measured
+    print(f"{n:>9}  {m:>7}  {per_s:8.2f} s ({ratio} for {m / first[0]:.0f}x samples)  "
           f"{per_s / m * 1e3:6.3f} ms  {s['trials'] / steps:8.4f}  {s['kernel_evals'] / steps:8.4f}  "
           f"{s['collisions'] / t2:9.0f}")
 PY

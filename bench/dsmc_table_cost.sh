@@ -12,6 +12,9 @@
 # Prints per variant: Engine::step instructions per sample-step, the ratio to the default, the dry
 # collisions and how many stuck, bounced and broke; and OutcomeTable's share (at, fragments_at).
 #   bench/dsmc_table_cost.sh [AGGLO] [OUT_DIR]
+#   CALLGRIND=0: the runs without valgrind (no instruction counts; the collision counts only).
+#   SMOKE=1: the smoke test (ctest -L bench): 2 steps instead of 20, CALLGRIND=0 unless set (a callgrind run
+#   costs ~3 s even at 10 steps); the same table, variants and collision counts.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 AGGLO=$(realpath "${1:-$SRC/build/agglo}")
@@ -20,6 +23,11 @@ mkdir -p "$OUT"
 export OMP_NUM_THREADS=1
 STEPS=20
 DT=1e-4
+if [ "${SMOKE:-0}" = 1 ]; then
+  STEPS=2 CALLGRIND=${CALLGRIND:-0}
+  [ "$CALLGRIND" = 1 ] || echo "smoke: callgrind skipped (collision counts only)"
+fi
+CALLGRIND=${CALLGRIND:-1}
 
 cat > "$OUT/case.toml" <<EOF
 seed = 26
@@ -74,19 +82,23 @@ PY
 
 run() {  # run LABEL [--set ...]
   local label=$1; shift
-  valgrind --tool=callgrind --callgrind-out-file="$OUT/callgrind_$label.out" \
-    "$AGGLO" -q --no-plots acoustic "$OUT/case.toml" --out "$OUT/$label" --overwrite --threads 1 --format csv "$@" \
+  local pre=(valgrind --tool=callgrind --callgrind-out-file="$OUT/callgrind_$label.out")
+  [ "$CALLGRIND" = 1 ] || { pre=(); rm -f "$OUT/callgrind_$label.txt"; }
+  "${pre[@]}" "$AGGLO" -q --no-plots acoustic "$OUT/case.toml" --out "$OUT/$label" --overwrite --threads 1 --format csv "$@" \
     > /dev/null 2> "$OUT/callgrind_$label.log"
+  [ "$CALLGRIND" = 1 ] || return 0
   callgrind_annotate --inclusive=yes --threshold=100 "$OUT/callgrind_$label.out" > "$OUT/callgrind_$label.txt" 2> /dev/null
 }
 run default
 run table --set outcomes.dry_model=table --set "outcomes.table=\"$OUT/outcomes/results.nc\""
 run break --set outcomes.dry_model=table --set "outcomes.table=\"$OUT/table_break.nc\""
 
-/usr/bin/python3 - "$OUT" "$STEPS" <<'PY'
+/usr/bin/python3 - "$OUT" "$STEPS" "$CALLGRIND" <<'PY'
 import csv, json, re, sys
-out, steps = sys.argv[1], int(sys.argv[2])
-def inclusive(label, prefix):
+out, steps, callgrind = sys.argv[1], int(sys.argv[2]), sys.argv[3] == "1"
+def inclusive(label, prefix):  # 1 without callgrind (no counts)
+    if not callgrind:
+        return 1
     best = 0
     for line in open(f"{out}/callgrind_{label}.txt"):
         m = re.match(r"\s*([\d,]+) \(\s*[\d.]+%\)\s+(.*)$", line)
@@ -103,9 +115,11 @@ for label in ("default", "table", "break"):
     dry = next(r for r in csv.DictReader(open(f"{out}/{label}/outcomes_by_pair.csv")) if r["pair_type"] == "dry")
     rows[label] = (step / (n * steps), step, at, frag, brk, dry)
 base = rows["default"][0]
-print(f"Engine::step, callgrind, one thread, {steps} steps; instructions per sample-step (ratio to the default)")
+print(f"Engine::step, callgrind, one thread, {steps} steps; instructions per sample-step (ratio to the default)"
+      if callgrind else f"{steps} steps without callgrind: no instruction counts")
 for label, (per, step, at, frag, brk, dry) in rows.items():
-    print(f"  {label:8} {per:8.1f} ({per / base:.3f}x)  Engine::step {step / 1e6:.1f}e6  OutcomeTable::at {at / 1e6:.2f}e6"
-          f"  fragments_at {frag / 1e6:.2f}e6  break_weighted {brk / 1e6:.2f}e6  dry collisions {dry['pair_collisions']}:"
+    counts = (f"{per:8.1f} ({per / base:.3f}x)  Engine::step {step / 1e6:.1f}e6  OutcomeTable::at {at / 1e6:.2f}e6"
+              f"  fragments_at {frag / 1e6:.2f}e6  break_weighted {brk / 1e6:.2f}e6" if callgrind else "")
+    print(f"  {label:8} {counts}  dry collisions {dry['pair_collisions']}:"
           f" stuck {dry['stuck']}, bounced {dry['bounced']}, broke {dry['broke']}")
 PY

@@ -10,12 +10,24 @@
 # under /usr/bin/time (wall and user CPU of the whole process), the variants' order rotated each round.
 # Prints every run, then per case the median wall and user CPU of each variant and the ratios to j1
 # (> 1: slower than one thread).
-#   bench/dsmc_threads.sh [AGGLO] [OUT_DIR]     ROUNDS=3, T=0.1, VARIANTS="j1 j2 j2_fixed j2_spin"
+#   bench/dsmc_threads.sh [AGGLO] [OUT_DIR]     ROUNDS=3, T=0.1, VARIANTS="j1 j2 j2_fixed j2_spin",
+#   FLYASH_SAMPLES=8000
 # Timing only (never a test); on a shared machine only the ratios of one invocation mean anything.
+#   SMOKE=1: the smoke test (ctest -L bench): ROUNDS=1, T=0.0025 (49 and 50 steps), FLYASH_SAMPLES=800 and
+#   the baseline with 800 + 16 samples, both without clones (sampling.min_samples_per_cell = 0),
+#   VARIANTS="j1 j2" (j2_fixed and j2_spin differ from j2 only by their environment); the same table,
+#   medians and ratios.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 AGGLO=${1:-$SRC/build/agglo}
 OUT=${2:-$SRC/results/bench_dsmc_threads}
+smoke=() base_smoke=()
+if [ "${SMOKE:-0}" = 1 ]; then
+  ROUNDS=${ROUNDS:-1} T=${T:-0.0025} FLYASH_SAMPLES=${FLYASH_SAMPLES:-800} VARIANTS=${VARIANTS:-"j1 j2"}
+  smoke=(--set sampling.min_samples_per_cell=0)
+  base_smoke=(--set population.0.samples=800 --set population.1.samples=16)
+fi
+FLYASH_SAMPLES=${FLYASH_SAMPLES:-8000}
 ROUNDS=${ROUNDS:-3}
 T=${T:-0.1}
 VARIANTS=${VARIANTS:-"j1 j2 j2_fixed j2_spin"}
@@ -23,7 +35,7 @@ mkdir -p "$OUT"
 table="$OUT/threads.tsv"
 printf 'case\tvariant\tround\twall_s\tuser_s\tload\n' > "$table"
 common=(--no-plots --quiet --format csv --overwrite --set time.end="$T" --set "output.psd_times=[0.0]"
-        --set "output.snapshot_times=[]" --set output.efficiency_interval="$T")
+        --set "output.snapshot_times=[]" --set output.efficiency_interval="$T" "${smoke[@]}")
 run() {  # run CASE_LABEL CASE_FILE VARIANT ROUND [extra args]
   local label=$1 file=$2 v=$3 r=$4; shift 4
   local j=2 envs=(-u OMP_WAIT_POLICY -u GOMP_SPINCOUNT -u AGGLO_THREAD_PROBE)
@@ -43,8 +55,8 @@ read -r -a vars <<< "$VARIANTS"
 for r in $(seq 1 "$ROUNDS"); do
   for k in $(seq 0 $((${#vars[@]} - 1))); do  # the order rotates by one variant per round (a load trend
     v=${vars[$(((k + r - 1) % ${#vars[@]}))]}  # over the rounds then favours none)
-    run flyash_8000 "$SRC/cases/flyash_147db.toml" "$v" "$r" --set population.0.samples=8000
-    run seed002_baseline "$SRC/cases/seed002_baseline.toml" "$v" "$r"
+    run "flyash_$FLYASH_SAMPLES" "$SRC/cases/flyash_147db.toml" "$v" "$r" --set population.0.samples="$FLYASH_SAMPLES"
+    run seed002_baseline "$SRC/cases/seed002_baseline.toml" "$v" "$r" "${base_smoke[@]}"
   done
 done
 /usr/bin/python3 - "$table" <<'PY'
@@ -59,6 +71,7 @@ for case in dict.fromkeys(r["case"] for r in rows):
     loads = [float(r["load"]) for r in rows if r["case"] == case]
     print(f"{case}: median over {len(rs)} rounds (1-min load average {min(loads):.1f}-{max(loads):.1f})")
     for v, (w, u) in med.items():
-        ratio = f"  wall {w / base[0]:.2f}x, user {u / base[1]:.2f}x of j1" if base else ""
+        div = lambda a, b: f"{a / b:.2f}x" if b > 0 else "-"  # - : j1 under 0.01 s
+        ratio = f"  wall {div(w, base[0])}, user {div(u, base[1])} of j1" if base else ""
         print(f"  {v:8s} wall {w:6.2f} s  user {u:6.2f} s{ratio}")
 PY

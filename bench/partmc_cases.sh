@@ -11,6 +11,9 @@
 #
 #   bench/partmc_cases.sh [OUT]                 (default OUT: results/partmc_cases)
 #   QUICK=1 bench/partmc_cases.sh /tmp/pmc      (2 seeds, 1e4 only, Brownian cut to 600 s, no callgrind)
+#   SMOKE=1 bench/partmc_cases.sh /tmp/pmc      (the smoke test, ctest -L bench: QUICK's settings with 1e3
+#                                                samples, one seed, Brownian 120 s (shortened: 60 s), SECT_BPD=10,
+#                                                JOBS=1, CSV outputs only: no results.nc)
 #
 # Environment (defaults in brackets; QUICK=1 changes the ones marked *):
 #   AGGLO            agglo binary [build/agglo]
@@ -37,6 +40,11 @@ SRC=$(cd "$(dirname "$0")/.." && pwd)
 OUT=${1:-$SRC/results/partmc_cases}
 AGGLO=${AGGLO:-$SRC/build/agglo}
 QUICK=${QUICK:-0}
+if [[ ${SMOKE:-0} == 1 ]]; then
+  QUICK=1 SAMPLES=${SAMPLES:-1000} SEEDS=${SEEDS:-1} SHORT_SEEDS=${SHORT_SEEDS:-1} NANBU_BROWN_SEEDS=${NANBU_BROWN_SEEDS:-1}
+  BROWN_END=${BROWN_END:-120} SHORT_END=${SHORT_END:-60} SECT_BPD=${SECT_BPD:-10}
+  JOBS=${JOBS:-1}
+fi
 if [[ $QUICK == 1 ]]; then
   q_samples=10000 q_seeds=2 q_nb_seeds=2 q_brown_end=600 q_short_seeds=2 q_callgrind=0
 else
@@ -115,6 +123,7 @@ add_job sect brownian_short brownian - 0 1 "$SHORT_END"
 run_job() {
   local kind=$1 name=$2 case=$3 sel=$4 n=$5 seed=$6 end=$7
   local dir args=(--threads 1 --overwrite --set "seed=$seed")
+  [[ ${SMOKE:-0} == 1 ]] && args+=(--format csv)
   [[ $end != - ]] && args+=(--set "time.end=$end" --set "output.psd_times=[0.0,$end]")
   if [[ $kind == sect ]]; then
     dir="$OUT/sectional/$name"

@@ -244,7 +244,8 @@ def speed_table(groups, sels, counts):
         row = [case, samples_str(n), f"{t:g}"]
         if ratio_name:
             a, b = gs[sels[0]], gs[sels[1]]
-            row.append(f"{statistics.mean(a['user']) / statistics.mean(b['user']):.3f}" if a and b else "–")
+            row.append(f"{statistics.mean(a['user']) / statistics.mean(b['user']):.3f}"
+                       if a and b and statistics.mean(b["user"]) > 0 else "–")  # – : nanbu under 0.01 s
             ca, cb = (counts.get(f"{case}_{variant}_n{n}_{s}") for s in sels[:2])
             row.append(f"{ca / cb:.3f} ({ca / 1e9:.2f} G / {cb / 1e9:.2f} G)" if ca and cb else "–")
         row += [fmt_range(gs[s]["user"]) if gs[s] else "–" for s in sels]

@@ -18,9 +18,15 @@
 #   bench/spectral_far_field.sh [BUILD_DIR]     NS="100 200 400 1000", THREADS=1, REPS=3, ONLY=regex
 # ONLY selects benchmarks by name (e.g. ONLY='solve/fmm' for the fast far field alone; N = 2000 and 3000
 # are registered for fmm only).
+#   SMOKE=1: the smoke test (ctest -L bench): NS=10 (registered for this), REPS=1, ONLY the solves and
+#   products of the dense and the fast far field at kappa_p = 2.5 (the others cost 0.3-3 s each even
+#   there); the same parsing, table and ratios (no growth exponent: one N).
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 BUILD=${1:-$SRC/build}
+if [ "${SMOKE:-0}" = 1 ]; then
+  NS=${NS:-10} REPS=${REPS:-1} ONLY=${ONLY-"(solve|product)/(dense|fmm)_k2.5/"}
+fi
 NS=${NS:-"100 200 400 1000"}
 THREADS=${THREADS:-1}
 REPS=${REPS:-3}

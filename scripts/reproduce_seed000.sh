@@ -9,12 +9,31 @@
 #   --ranges  also predicts kappa_p = 2.5 and 15 over the whole fitted set (calibrate.predict = "range": the
 #             best fit and the set's extreme points, 10 spectral bisections, about 1 h on 2 cores)
 # Other arguments go to every agglo call of steps 2-3 (e.g. --set electrostatics.update_fraction=0.0125).
+# AGGLO (build/agglo) and OUT (results/seed000): the agglo binary and the output folder (relative paths: to
+# the repository).
+# SMOKE=1: the smoke test of bench/table2_wall_time.sh (ctest -L bench): every impact cut to 2 us after
+# contact from a 0.02 r gap (no relaxation, no extensions), electrostatics.target_accuracy = 0.1 and
+# update_fraction = 0.2, v_crit scans of 3 speeds up to 1.5 m/s bisected to 0.5 m/s; the calibration on a
+# 3 x 3 map without refinement, its targets' tolerance 1 m/s (the cut runs cannot meet the seed's values);
+# no plots, CSV outputs only (no results.nc). The same steps and table (table2.csv, table2.json).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-A=build/agglo
-OUT=results/seed000
+A=${AGGLO:-build/agglo}
+OUT=${OUT:-results/seed000}
 predict=none
 if [ "${1:-}" = --ranges ]; then predict=range; shift; fi
+smoke_cal=()
+if [ "${SMOKE:-0}" = 1 ]; then
+  cut=(projectile.gap_radii=0.02 time.after_contact=2e-6 time.max_extensions=0 time.relax_time=0
+       electrostatics.target_accuracy=1e-1 electrostatics.update_fraction=0.2 vcrit.scan_points=3 vcrit.v_max=1.5
+       vcrit.tolerance=0.5)
+  sets=()
+  for c in "${cut[@]}"; do sets+=(--set "$c"); done
+  set -- "${sets[@]}" --format csv "$@"
+  smoke_cal=(--no-plots --format csv --set calibrate.grid_points=3 --set calibrate.refine_rounds=0
+             --set target.0.tolerance=1 --set target.1.tolerance=1
+             --set "calibrate.case_overrides=\"agglomerate.orientation=\\\"edge_along\\\";$(IFS=';'; echo "${cut[*]}")\"")
+fi
 mkdir -p "$OUT"
 start=$(date +%s)
 # Steps 1 and 2 are independent (the shipped cases carry the fitted point): they run side by side, the two
@@ -33,7 +52,7 @@ done
 mode=--overwrite
 [ -f "$OUT/calibration/journal.jsonl" ] && mode=--resume
 $A -q calibrate cases/calibrate_seed000_tetrahedron.toml --out "$OUT/calibration" $mode \
-  --set "calibrate.predict=\"$predict\""
+  --set "calibrate.predict=\"$predict\"" "${smoke_cal[@]}"
 cal=$(date +%s)
 for p in "${pids[@]}"; do wait "$p"; done
 end=$(date +%s)
@@ -43,4 +62,6 @@ $A -q --no-plots collide cases/seed000_neutral_tetrahedron.toml --speed 0.175 --
 for k in k1 k15; do
   $A -q --no-plots collide cases/seed000_charged_tetrahedron_$k.toml --speed 0.18 --overwrite --out "$OUT/hist_${k}_0.18" "$@"
 done
-/usr/bin/python3 scripts/plot_seed000.py "$OUT" "$((end - start))" "$((cal - start))"
+figures=()
+[ "${SMOKE:-0}" = 1 ] && figures=(--no-figures)
+/usr/bin/python3 scripts/plot_seed000.py "$OUT" "$((end - start))" "$((cal - start))" "${figures[@]}"

@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Smoke test of one bench/ script (CTest bench.<script>, label bench; bench/README.md "Smoke tests"): the
+# script at its tiny sizes (SMOKE=1, what it shrinks and skips is in its header), into a temporary folder.
+# Fails when the script fails (a renamed setting, a missing output column, a broken parser all stop it:
+# every script runs under set -e) or when its output lacks the line that carries its result. No timing is
+# asserted. A script without an entry below fails here: every bench/ script gets one (CMakeLists.txt adds
+# a test per bench/*.sh).
+#   tests/bench/script_smoke.sh NAME AGGLO BUILD_DIR SOURCE_DIR [MPIRUN]
+set -euo pipefail
+name=$1 AGGLO=$2 BUILD=$3 SRC=$4
+export MPIRUN=${5:-mpirun}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+export SMOKE=1
+log=$T/stdout.txt
+
+run() { bash "$SRC/bench/$name.sh" "$@" > "$log"; }
+expect() {  # a regular expression (grep -E) the output must match
+  grep -Eq -- "$1" "$log" || { cat "$log"; echo "FAIL: bench/$name.sh printed no line matching: $1"; exit 1; }
+}
+expect_file() {
+  [ -s "$1" ] || { cat "$log"; echo "FAIL: bench/$name.sh left no $1"; exit 1; }
+}
+
+case $name in
+  acoustic_baseline_wall_time)
+    run "$AGGLO" "$T/out"
+    expect '^run 1: simulation [0-9.]+ s, fine efficiency [0-9.]+; process [0-9.]+ s$' ;;
+  acoustic_studies)
+    run "$AGGLO" "$T/out"
+    for f in int_exact_1e-5_s1/summary.json int_explicit_1e-7_s1/summary.json baseline/summary.json; do
+      expect_file "$T/out/$f"
+    done
+    for s in droplet_diameter droplet_concentration validation droplet_diameter_seeds droplet_concentration_seeds; do
+      expect_file "$T/out/$s/sweep.csv"
+    done ;;
+  breakup_job_cost)
+    run "$AGGLO" "$T/out"
+    expect '^slowest/fastest: user CPU ([0-9.]+x|-.*), steps [0-9.]+x; sum user' ;;
+  dsmc_migration)
+    run "$AGGLO" "$T/out"
+    for ax in x y z; do expect "^  $ax-slabs, K = 256 \(width [0-9.e+-]+ mm\): [0-9]+ of [0-9]+ samples change slab"; done ;;
+  dsmc_sample_cost)
+    run "$AGGLO" "$T/out"
+    expect '^scale 4: [0-9]+ samples in 400 cells: -?[0-9]+ ns user CPU'
+    expect '^  resident bytes per sample \(slope from the previous size\): -?[0-9]+$'
+    expect '^checkpoint scale 4: [0-9]+ bytes for [0-9]+ samples = [0-9.]+ bytes per sample$' ;;
+  dsmc_sample_scaling)
+    run "$AGGLO" "$T/out"
+    expect '^ +400 +400 +-?[0-9.]+ s \( *([0-9.-]+x|-) for 2x samples\) +-?[0-9.]+ ms +[0-9.]+ +[0-9.]+ +[0-9]+$' ;;
+  dsmc_table_cost)
+    run "$AGGLO" "$T/out"
+    expect '^  break +dry collisions [0-9]+: stuck [0-9]+, bounced [0-9]+, broke [1-9][0-9]*$' ;;
+  dsmc_threads)
+    run "$AGGLO" "$T/out"
+    [ "$(grep -Ec '^  j2       wall +[0-9.]+ s  user +[0-9.]+ s  wall ([0-9.]+x|-), user ([0-9.]+x|-) of j1$' "$log")" = 2 ] ||
+      { cat "$log"; echo "FAIL: bench/$name.sh: no j2 line for each case"; exit 1; } ;;
+  mpi_farm)
+    run "$AGGLO"
+    expect '^\| 2 x 1 \| [0-9.]+ \| 4 \| [0-9.]+ \([0-9.]+-[0-9.]+\) \| [0-9.]+ \| [0-9.]+ \|$' ;;
+  partmc_cases)
+    AGGLO=$AGGLO run "$T/out" 2> "$T/stderr.txt" || { cat "$T/stderr.txt"; exit 1; }
+    for c in constant additive; do expect "^\| $c \| 1e3 \| [0-9]+ \| ([0-9.]+|–) \|"; done
+    expect '^\| brownian \| binned \| 0.36 \|' ;;
+  spectral_far_field)
+    run "$BUILD"
+    expect '^ +2.5 +10 dense/fmm: solve [0-9.]+x, product -?[0-9.]+x$' ;;
+  table2_wall_time)
+    AGGLO=$AGGLO OUT=$T/out run
+    expect '^== calibration [0-9]+ s; calibration \+ Table 2: [0-9]+ s$'
+    expect_file "$T/out/table2.json"
+    /usr/bin/python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))["rows"]; sys.exit(len(r) != 4)' \
+      "$T/out/table2.json" || { echo "FAIL: table2.json has not the 4 rows of Table 2"; exit 1; } ;;
+  *)
+    echo "FAIL: no smoke invocation for bench/$name.sh in tests/bench/script_smoke.sh"; exit 1 ;;
+esac
+echo "bench/$name.sh: smoke run passed"
