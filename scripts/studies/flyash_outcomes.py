@@ -8,8 +8,9 @@
   aggregates   a DEM table of BPCA aggregates of 0.25 um fly-ash primaries (cases/outcomes_flyash_aggregates.toml),
                read by the DSMC over volume-equivalent diameters (its samples stay compact spheres)
   aggregates_structured  the same table with structure-aware samples (docs/acoustics.md §1.8): the population
-               is fractal, 0.25 um primaries, D_f and k_f of the table's BPCA partners (STRUCTURE below), so the
+               is fractal, 0.25 um primaries, D_f and k_f of the table's BPCA partners (SETS_OF below), so the
                kernels use the collision radius and the drag the mobility radius (= the collision radius)
+  aggregates_structured_273  the same with BPCA's large-N D_f = 2.73 (a sensitivity to the extrapolation)
 
 The tables are built first with `agglo outcomes -j THREADS`; the user and system CPU of each build (the
 children's rusage) and its wall time are reported and written to OUT/study.json with, per variant and
@@ -43,12 +44,16 @@ TABLES = {  # variant: (table case, --set overrides)
 }
 # Structure-aware samples: D_f, k_f of the characteristic radius sqrt(5/3) R_g (R_g with each sphere's 3/5 a^2)
 # of BPCA aggregates of the table's builder, a = 0.25 um, prefixes N = 2 ... 64 of 30 aggregates of 64
-# (seeds 1-30, `agglo aggregate cases/aggregate_bpca.toml`), least squares of ln(a_c/a) on ln N.
-STRUCTURE = ["population.0.structure=\"fractal\"", "population.0.primary_radius=0.25e-6",
-             "population.0.fractal_dimension=2.23", "population.0.fractal_prefactor=0.60"]
-TABLE_OF = {"aggregates_structured": "aggregates"}  # a variant that reads another variant's table
-SETS_OF = {"aggregates_structured": STRUCTURE}      # further --set of a variant's DSMC runs
-VARIANTS = ["default", "spheres", "spheres_seed", "aggregates", "aggregates_structured"]
+# (seeds 1-30, `agglo aggregate cases/aggregate_bpca.toml`), least squares of ln(a_c/a) on ln N: D_f = 2.23,
+# k_f = 0.60; the sensitivity variant takes BPCA's D_f = 2.73 (docs/model.md §S.3) with k_f = 0.244 fitted
+# to the same prefixes N = 16 ... 64.
+def structure(df, kf):
+    return ["population.0.structure=\"fractal\"", "population.0.primary_radius=0.25e-6",
+            f"population.0.fractal_dimension={df}", f"population.0.fractal_prefactor={kf}"]
+TABLE_OF = {"aggregates_structured": "aggregates", "aggregates_structured_273": "aggregates"}  # another's table
+SETS_OF = {"aggregates_structured": structure(2.23, 0.60),  # further --set of a variant's DSMC runs
+           "aggregates_structured_273": structure(2.73, 0.244)}
+VARIANTS = ["default", "spheres", "spheres_seed", "aggregates", "aggregates_structured", "aggregates_structured_273"]
 COLUMNS = ["number_reduction", "pm2_5_vol_reduction", "pm2_5_aero_reduction"]
 
 
