@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "agglo/acoustics/diagnostics.hpp"
 #include "agglo/acoustics/fragments.hpp"
 #include "agglo/acoustics/kernels.hpp"
 #include "agglo/acoustics/merge.hpp"
@@ -306,4 +307,25 @@ fractal_dimension = 1.8
     EXPECT_NE(std::string(err.what()).find("kernels.model"), std::string::npos) << err.what();
   }
   EXPECT_NO_THROW(test::parse_case(fractal_box("")));
+}
+
+TEST(Structure, AerodynamicPmCutUsesTheAggregatesSettling) {
+  // An open aggregate of d_v = 3 um (2500 kg/m^3) settles as a much smaller sphere: with tau = m C_c(d_m) /
+  // (3 pi mu d_m), its aerodynamic diameter d_a solves rho_0 d_a^2 C_c(d_a) = 18 mu tau; the compact sphere's
+  // rho_p d_v^2 C_c(d_v) puts it above 2.5 um (negative control), the aggregate's below.
+  const Air a;
+  const double rp = 25e-9, n = std::pow(1.5e-6 / rp, 3);
+  SampleSet p;
+  p.structure_laws = {fractal_law(rp, 1.8, 1.3)};
+  add_aggregate(p, a, n, rp, 1.0, 0.0);
+  const double m = p.mass[0], dm = 2.0 * law_radius(n, rp, 1.8, 1.3);
+  const double settling = 18.0 * a.gas.viscosity * m * a.gas.slip_correction(dm) / (3.0 * pi * a.gas.viscosity * dm);
+  const double cut = 1000.0 * 2.5e-6 * 2.5e-6 * a.gas.slip_correction(2.5e-6);
+  ASSERT_LT(settling, cut);
+  const double dv = p.volume_diameter(0);
+  ASSERT_GT(2500.0 * dv * dv * a.gas.slip_correction(dv), cut);  // the compact sphere is above the cut
+  const PmMass pm = pm_mass(p, 1.0, a.gas);
+  EXPECT_EQ(pm.volume[1], 0.0);           // d_v = 3 um > 2.5 um
+  EXPECT_EQ(pm.aerodynamic[1], m);        // but it settles as a sphere below 2.5 um
+  EXPECT_EQ(pm.aerodynamic[2], m);
 }
