@@ -7,6 +7,10 @@
   spheres_seed the same grid with the seed material (E = 1 GPa, gamma = 0.01 J/m^2, e = 0.7, friction 0.3)
   aggregates   a DEM table of BPCA aggregates of 0.25 um fly-ash primaries (cases/outcomes_flyash_aggregates.toml),
                read by the DSMC over volume-equivalent diameters (its samples stay compact spheres)
+  aggregates_structured  the same table with structure-aware samples (docs/acoustics.md §1.8): the population
+               is fractal, 0.25 um primaries, D_f and k_f of the table's BPCA partners (SETS_OF below), so the
+               kernels use the collision radius and the drag the mobility radius (= the collision radius)
+  aggregates_structured_273  the same with BPCA's large-N D_f = 2.73 (a sensitivity to the extrapolation)
 
 The tables are built first with `agglo outcomes -j THREADS`; the user and system CPU of each build (the
 children's rusage) and its wall time are reported and written to OUT/study.json with, per variant and
@@ -38,7 +42,18 @@ TABLES = {  # variant: (table case, --set overrides)
     "spheres_seed": ("cases/outcomes_flyash_spheres.toml", SEED_MATERIAL),
     "aggregates": ("cases/outcomes_flyash_aggregates.toml", []),
 }
-VARIANTS = ["default", "spheres", "spheres_seed", "aggregates"]
+# Structure-aware samples: D_f, k_f of the characteristic radius sqrt(5/3) R_g (R_g with each sphere's 3/5 a^2)
+# of BPCA aggregates of the table's builder, a = 0.25 um, prefixes N = 2 ... 64 of 30 aggregates of 64
+# (seeds 1-30, `agglo aggregate cases/aggregate_bpca.toml`), least squares of ln(a_c/a) on ln N: D_f = 2.23,
+# k_f = 0.60; the sensitivity variant takes BPCA's D_f = 2.73 (docs/model.md §S.3) with k_f = 0.244 fitted
+# to the same prefixes N = 16 ... 64.
+def structure(df, kf):
+    return ["population.0.structure=\"fractal\"", "population.0.primary_radius=0.25e-6",
+            f"population.0.fractal_dimension={df}", f"population.0.fractal_prefactor={kf}"]
+TABLE_OF = {"aggregates_structured": "aggregates", "aggregates_structured_273": "aggregates"}  # another's table
+SETS_OF = {"aggregates_structured": structure(2.23, 0.60),  # further --set of a variant's DSMC runs
+           "aggregates_structured_273": structure(2.73, 0.244)}
+VARIANTS = ["default", "spheres", "spheres_seed", "aggregates", "aggregates_structured", "aggregates_structured_273"]
 COLUMNS = ["number_reduction", "pm2_5_vol_reduction", "pm2_5_aero_reduction"]
 
 
@@ -116,8 +131,10 @@ def run_variant(args, variant, table):
                 "--set", "output.snapshot_times=[0.0]"]
     if table is not None:
         tables = args.tables_from or args.out
+        name = TABLE_OF.get(variant, variant)
         cmd += ["--set", "outcomes.dry_model=table",
-                "--set", f'outcomes.table="{os.path.join(tables, "table_" + variant, "results.nc")}"']
+                "--set", f'outcomes.table="{os.path.join(tables, "table_" + name, "results.nc")}"']
+    cmd += [a for s in SETS_OF.get(variant, []) for a in ("--set", s)]
     cmd += ["--resume"] if os.path.exists(os.path.join(out, "journal.jsonl")) else ["--overwrite"]
     user, system, wall = timed(cmd)
     members = sorted(d for d in os.listdir(out) if d.startswith("case_"))
@@ -155,13 +172,13 @@ def main():
     variants = args.variants.split(",")
     study = {"case": CASE, "seeds": args.seeds, "tables": {}, "variants": {}}
     path = os.path.join(args.out, "study.json")
-    for v in variants:
+    for v in dict.fromkeys(TABLE_OF.get(v, v) for v in variants):
         if v in TABLES:
             study["tables"][v] = earlier_table(args.tables_from, v) if args.tables_from else build_table(args, v)
             save(study, path)
     if not args.tables_only:
         for v in variants:
-            study["variants"][v] = run_variant(args, v, study["tables"].get(v))
+            study["variants"][v] = run_variant(args, v, study["tables"].get(TABLE_OF.get(v, v)))
             save(study, path)
     return 0
 

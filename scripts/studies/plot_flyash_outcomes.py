@@ -10,6 +10,8 @@ scripts/studies/flyash_outcomes.py:
                                   1 um (and 2 um), with the closed-form critical velocity of the default model
 
     /usr/bin/python3 scripts/studies/plot_flyash_outcomes.py results/flyash_outcomes/study.json [more.json ...] docs/img
+    ... --structure  (the variants of the study.json files only, as flyash_outcomes_structure.png: the
+                      structure-aware samples against the aggregate table with compact samples)
 """
 import json
 import math
@@ -22,8 +24,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 LABELS = {"default": "closed-form v_cr (default)", "spheres": "DEM spheres, fly ash",
-          "spheres_seed": "DEM spheres, seed material", "aggregates": "DEM BPCA aggregates, fly ash"}
-COLORS = {"default": "k", "spheres": "tab:red", "spheres_seed": "tab:blue", "aggregates": "tab:green"}
+          "spheres_seed": "DEM spheres, seed material", "aggregates": "DEM BPCA aggregates, fly ash",
+          "aggregates_structured": "aggregates + fractal samples (D_f 2.23)",
+          "aggregates_structured_273": "aggregates + fractal samples (D_f 2.73)"}
+COLORS = {"default": "k", "spheres": "tab:red", "spheres_seed": "tab:blue", "aggregates": "tab:green",
+          "aggregates_structured": "tab:purple", "aggregates_structured_273": "tab:orange"}
 ZHANG = {"number_reduction": 0.684, "pm2_5": 0.756}  # Zhang et al. 2009, 1400 Hz, 147 dB: number concentrations
 
 
@@ -34,7 +39,7 @@ def critical_velocity_dry(d1, d2, rho=2500.0, hamaker=1e-19, e=0.6, z0=4e-10, pc
                                              * math.sqrt(6 * pc * rho * (1 + dmin / dmax)))
 
 
-def plot_reductions(study, out):
+def plot_reductions(study, out, filename="flyash_outcomes_reductions.png"):
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4))
     for v, r in study["variants"].items():
         t = r["times"]
@@ -61,7 +66,7 @@ def plot_reductions(study, out):
     left.legend(fontsize=7.5, loc="upper left")
     right.legend(fontsize=7.5, loc="upper left")
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "flyash_outcomes_reductions.png"), dpi=110)
+    fig.savefig(os.path.join(out, filename), dpi=110)
 
 
 def plot_tables(study, out):
@@ -89,6 +94,12 @@ def plot_tables(study, out):
 
 def main():
     study = {"tables": {}, "variants": {}}
+    args = [a for a in sys.argv[1:] if a != "--structure"]
+    if "--structure" in sys.argv:
+        for path in args[:-1]:
+            study["variants"].update(json.load(open(path))["variants"])
+        plot_reductions(study, args[-1], "flyash_outcomes_structure.png")
+        return 0
     for path in sys.argv[1:-1]:  # several study.json (variants run apart) are merged
         part = json.load(open(path))
         study["tables"].update(part["tables"])

@@ -134,8 +134,17 @@ void expect_resume_exact(const AcousticCase& c, const std::vector<std::uint64_t>
   }
 }
 
+// sound_case with fractal fines (docs/acoustics.md §1.8): the primary counts and radii are saved too.
+std::string fractal_sound_case() {
+  std::string s = sound_case();
+  const std::string fines = "samples = 1500\n";
+  s.insert(s.find(fines) + fines.size(),
+           "structure = \"fractal\"\nprimary_radius = 5e-8\nfractal_dimension = 1.8\nfractal_prefactor = 1.3\n");
+  return s;
+}
+
 TEST(AcousticCheckpoint, SaveLoadSaveGivesTheSameBytes) {
-  for (const std::string& toml : {sound_case(), binned_case()}) {
+  for (const std::string& toml : {sound_case(), binned_case(), fractal_sound_case()}) {
     const AcousticCase c = test::parse_case(toml);
     Engine e(c.engine);
     for (int s = 0; s < 37; ++s) e.step();

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "agglo/acoustics/kernels/keys.hpp"
+#include "agglo/acoustics/kernels/registry.hpp"
 #include "agglo/acoustics/outcome_table.hpp"
 #include "agglo/io/netcdf_reader.hpp"
 #include "agglo/core/constants.hpp"
@@ -52,6 +53,29 @@ void parse_distribution(const ConfigSection& s, const std::string& dist, Populat
   }
 }
 
+// population.structure and its keys, each read only when set (a compact case's resolved config is unchanged).
+void parse_structure(const ConfigSection& s, PopulationSpec& p) {
+  const auto& k = keys().population;
+  const bool fractal = k.structure.present(s) && k.structure.read(s) == settings::kStructureFractal;
+  const settings::Setting* fractal_keys[] = {&k.primary_radius, &k.fractal_dimension, &k.fractal_prefactor,
+                                             &k.mobility_radius};
+  if (!fractal) {
+    for (const settings::Setting* key : fractal_keys)
+      if (key->present(s))
+        key->reject(s, fmt::format("is read only with {} = \"{}\"", k.structure.dotted(), settings::kStructureFractal));
+    return;
+  }
+  if (p.phase != Phase::solid) k.structure.reject(s, "droplets are compact spheres: only a solid population is fractal");
+  StructureLaw& law = p.structure;
+  law.fractal = true;
+  law.primary_radius = k.primary_radius.read(s);
+  law.fractal_dimension = k.fractal_dimension.read(s);
+  law.fractal_prefactor = k.fractal_prefactor.read(s);
+  law.mobility = k.mobility_radius.present(s) && k.mobility_radius.read(s) == settings::kMobilitySorensen
+                     ? MobilityRule::sorensen
+                     : MobilityRule::collision;
+}
+
 PopulationSpec parse_population(const ConfigSection& s) {
   const auto& k = keys().population;
   PopulationSpec p;
@@ -63,6 +87,7 @@ PopulationSpec parse_population(const ConfigSection& s) {
   p.samples = k.samples.read(s);
   p.conserving_rounding = k.weight_rounding.read(s) == "conserving";
   parse_distribution(s, dist, p);
+  parse_structure(s, p);
   return p;
 }
 
@@ -126,6 +151,10 @@ double largest_diameter(const PopulationSpec& p) {
   if (p.distribution == Distribution::lognormal) d = p.geometric_mean_diameter * std::pow(p.geometric_std, p.lognormal_range);
   if (p.distribution == Distribution::table)
     for (double x : p.table_diameters) d = std::max(d, x);
+  if (p.structure.fractal && d > 0.0) {  // its collision diameter (structure.hpp)
+    const double rp = p.structure.primary_radius;
+    d = 2.0 * collision_radius(p.structure, std::pow(0.5 * d / rp, 3), rp, 0.5 * d);
+  }
   return d;
 }
 
@@ -220,6 +249,16 @@ void parse_kernels(const ConfigSection& root, EngineSettings& e) {
   ConfigSection s = k.t.open(root);
   e.kernel = read_kernels(s);
   e.motion.inertia_correction = k.inertia_correction.read(s);
+  const auto fractal = std::find_if(e.populations.begin(), e.populations.end(),
+                                    [](const PopulationSpec& p) { return p.structure.fractal; });
+  if (fractal == e.populations.end()) return;
+  for (const std::string& name : mechanism_names(e.kernel))
+    for (std::string_view compact : KernelMechanisms::compact_spheres_only_names())
+      if (name == compact)
+        (e.kernel.model == name ? k.model : k.brownian)
+            .reject(s, fmt::format("treats particles as compact spheres, but population '{}' has {} = \"{}\" "
+                                   "(docs/acoustics.md §1.8)",
+                                   fractal->name, keys().population.structure.dotted(), settings::kStructureFractal));
 }
 
 // outcomes.dry_model and outcomes.table (both read only when set, so the resolved config of a case without

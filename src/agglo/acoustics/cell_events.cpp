@@ -92,11 +92,13 @@ void CellEvents::compensate(std::size_t i, std::size_t j) {
 
 // Dry pair (i, j) at normal speed gn: sticks below the critical velocity, else bounces; or drawn from the
 // outcome table with one uniform u: sticks if u < P_stick, breaks if u < P_stick + P_break, else bounces.
+// Diameters are volume-equivalent (structure.hpp; the kernels' d in compact runs).
 CollisionOutcome CellEvents::dry_outcome(std::size_t i, std::size_t j, double gn) {
+  const double di = p.volume_diameter(i), dj = p.volume_diameter(j);
   if (oc.dry_model == DryModel::critical_velocity)
-    return gn <= critical_velocity_dry(oc, p.d[i], p.d[j], p.rho[i], p.rho[j]) ? CollisionOutcome::stick
-                                                                                : CollisionOutcome::bounce;
-  const OutcomeProbabilities pr = oc.dry_table->at(gn, p.d[i], p.d[j]);
+    return gn <= critical_velocity_dry(oc, di, dj, p.rho[i], p.rho[j]) ? CollisionOutcome::stick
+                                                                        : CollisionOutcome::bounce;
+  const OutcomeProbabilities pr = oc.dry_table->at(gn, di, dj);
   ++st.table_queries;
   if (pr.clamped) ++st.table_clamped;
   const double u = rng.uniform();
@@ -120,7 +122,8 @@ void CellEvents::collide(std::size_t i, std::size_t j) {
     if (type == PairType::dry)
       out = dry_outcome(i, j, gn);
     else
-      out = gn <= critical_velocity_wet(oc, p.d[i], p.d[j]) ? CollisionOutcome::stick : CollisionOutcome::bounce;
+      out = gn <= critical_velocity_wet(oc, p.volume_diameter(i), p.volume_diameter(j)) ? CollisionOutcome::stick
+                                                                                          : CollisionOutcome::bounce;
   }
   if (out == CollisionOutcome::stick) {
     ++st.coalescences[static_cast<int>(type)];
@@ -129,10 +132,12 @@ void CellEvents::collide(std::size_t i, std::size_t j) {
     if (p.w[j] <= 0.0) refill(j);
   } else if (out == CollisionOutcome::brk) {  // only dry pairs with a table (weights stay >= 1: no refill)
     ++st.breakups[static_cast<int>(type)];
-    break_weighted(p, i, j, oc.dry_table->fragments_at(gn, p.d[i], p.d[j]), rng, *ctx.gas, *ctx.sound);
+    break_weighted(p, i, j, oc.dry_table->fragments_at(gn, p.volume_diameter(i), p.volume_diameter(j)), rng, *ctx.gas,
+                   *ctx.sound);
   } else {
     ++st.rebounds[static_cast<int>(type)];
-    const double e = type == PairType::dry ? oc.restitution : wet_restitution(oc, p.d[i], p.d[j], gn);
+    const double e =
+        type == PairType::dry ? oc.restitution : wet_restitution(oc, p.volume_diameter(i), p.volume_diameter(j), gn);
     const double dE = rebound_weighted(p, i, j, nrm, e, oc.friction);
     st.energy_lost += dE;
     if (dE > 0.0) debtors.push_back(static_cast<std::uint32_t>(p.w[i] > p.w[j] ? i : j));

@@ -9,7 +9,7 @@ namespace agglo::acoustics {
 namespace {
 
 // The layouts below list every field; a field added to one of these types must be added here too.
-static_assert(sizeof(SampleSet) == 28 * sizeof(std::vector<double>), "SampleSet changed: update each_array");
+static_assert(sizeof(SampleSet) == 32 * sizeof(std::vector<double>), "SampleSet changed: update each_array");
 static_assert(sizeof(CellBounds) == 17 * sizeof(double), "CellBounds changed: update save_bounds");
 static_assert(sizeof(BinnedGroup) == sizeof(std::vector<std::uint32_t>) + sizeof(CellBounds) + 8,
               "BinnedGroup changed: update save_groups");
@@ -27,6 +27,8 @@ void each_array(S& p, F&& f) {
     f(*v);
   f(p.pop);
   f(p.id);
+  if (p.structured())  // aggregate structure (structure.hpp): set by the case, so save and load agree
+    for (auto* v : {&p.np, &p.rp, &p.dm}) f(*v);
 }
 
 template <class T>

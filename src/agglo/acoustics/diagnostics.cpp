@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agglo/core/constants.hpp"
+
 namespace agglo::acoustics {
 
 // Dead samples (w = 0) add exact zeros, so the sums need no branch.
@@ -31,9 +33,11 @@ PmMass pm_mass(const SampleSet& p, double V, const Gas& g) {
   std::array<double, 3> limit{};  // rho_0 x^2 C_c(x): d_a < x iff rho_p d_v^2 C_c(d_v) is below it
   for (std::size_t k = 0; k < 3; ++k) limit[k] = kPmUnitDensity * kPmCuts[k] * kPmCuts[k] * g.slip_correction(kPmCuts[k]);
   PmMass m;
+  const bool structured = p.structured();
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const double wm = p.w[i] * p.mass[i], d = p.d[i];
-    const double settling = p.rho[i] * d * d * p.cc[i];
+    const double wm = p.w[i] * p.mass[i], d = p.volume_diameter(i);
+    const double settling = structured ? 6.0 * p.mass[i] * p.cc[i] / (constants::pi * p.dm[i])
+                                       : p.rho[i] * d * d * p.cc[i];
     for (std::size_t k = 0; k < 3; ++k) {
       m.volume[k] += d < kPmCuts[k] ? wm : 0.0;
       m.aerodynamic[k] += settling < limit[k] ? wm : 0.0;
@@ -76,7 +80,7 @@ std::array<std::vector<double>, 4> psd(const SampleSet& p, double V, const PsdBi
   for (auto& v : out) v.assign(K, 0.0);
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.w[i] <= 0.0) continue;
-    const int b = bins.find(p.d[i]);
+    const int b = bins.find(p.volume_diameter(i));
     if (b < 0) continue;
     out[static_cast<int>(p.phase(i))][b] += p.w[i];
     out[3][b] += p.w[i];

@@ -41,6 +41,9 @@ struct PsdBins {
 //    C_c the Cunningham correction of the case's gas (Gas::slip_correction). d^2 C_c(d) increases with d,
 //    so d_a < x iff rho_p d_v^2 C_c(d_v) < rho_0 x^2 C_c(x): pm_mass classifies by that test (no
 //    iteration); aerodynamic_diameter gives d_a itself.
+//    An aggregate (structure.hpp) settles with its relaxation time tau = m C_c(d_m) / (3 pi mu_g d_m), so
+//    its test is 6 m C_c(d_m) / (pi d_m) < rho_0 x^2 C_c(x) (18 mu_g tau; rho_p d_v^2 C_c(d_v) for a sphere).
+//    psd.csv and the cut by volume use d_v in every run.
 inline constexpr std::array<double, 3> kPmCuts = {1e-6, 2.5e-6, 10e-6};     // [m]
 inline constexpr std::array<const char*, 3> kPmNames = {"pm1", "pm2_5", "pm10"};  // output names
 inline constexpr std::array<const char*, 3> kPmLabels = {"PM1", "PM2.5", "PM10"};  // run.log, long names

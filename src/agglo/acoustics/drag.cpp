@@ -81,7 +81,7 @@ inline void wave_phase(SampleSet& p, std::size_t i, double k, const Motion::Step
 inline double start_reynolds(const SampleSet& p, std::size_t i, const Gas& gas, double A, double s0) {
   const double sx = A * s0 - p.vx[i];
   const double slip = std::sqrt(sx * sx + p.vy[i] * p.vy[i] + p.vz[i] * p.vz[i]);
-  return gas.reynolds(slip, p.d[i]);
+  return gas.reynolds(slip, p.mobility_diameters()[i]);
 }
 
 // tau_e = tau / C_I with C_I at the mid-step slip predicted with the start-of-step tau_e `te` (sound on).
@@ -96,7 +96,7 @@ inline double midstep_tau(const SampleSet& p, std::size_t i, const Gas& gas, con
   const double vt = p.acc_z[i] * te;
   const double vyh = p.vy[i] * Eh, vzh = vt + (p.vz[i] - vt) * Eh;
   const double slh = std::sqrt(sxh * sxh + vyh * vyh + vzh * vzh);
-  return p.tau[i] / Gas::inertia_correction_fast(gas.reynolds(slh, p.d[i]));
+  return p.tau[i] / Gas::inertia_correction_fast(gas.reynolds(slh, p.mobility_diameters()[i]));
 }
 
 // E = exp(-x), omE = 1 - exp(-x); expm1 only where 1 - exp(-x) would lose digits.
@@ -142,7 +142,7 @@ double Motion::effective_tau(const SampleSet& p, std::size_t i, double t) const 
   const double ug = sound.u_amp * std::sin(sound.omega * t - sound.wavenumber * p.x[i]);
   const double sx = ug - p.vx[i];
   const double slip = std::sqrt(sx * sx + p.vy[i] * p.vy[i] + p.vz[i] * p.vz[i]);
-  return p.tau[i] / Gas::inertia_correction(gas.reynolds(slip, p.d[i]));
+  return p.tau[i] / Gas::inertia_correction(gas.reynolds(slip, p.mobility_diameters()[i]));
 }
 
 void Motion::set_steady_velocity(SampleSet& p, std::size_t i, double t) const {

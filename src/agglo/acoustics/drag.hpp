@@ -2,6 +2,9 @@
 // Particle motion in the sound field (docs/model.md §C.2; Zhao et al. 2023, eqs. 3-5):
 //   m dv/dt = 3 pi mu_g d (u_g - v) C_I / C_c + (rho - rho_g) pi d^3 g / 6
 // i.e. dv/dt = (u_g - v)/tau_e + a,  tau_e = tau / C_I,  a = -g (rho - rho_g)/rho e_z.
+// d is the mobility diameter d_m of an aggregate (structure.hpp: tau = m C_c(d_m) / (3 pi mu_g d_m), C_I at
+// Re = rho_g |u_g - v| d_m / mu_g; the weight term is m g (1 - rho_g/rho)); the volume-equivalent diameter
+// of a compact sphere.
 // Integrators over a step h:
 //  - exact: C_I frozen over the step and x frozen in the wave phase; the linear ODE with
 //    sinusoidal forcing is then solved in closed form (velocity and position), so h may be much

@@ -27,6 +27,10 @@ void set_fragments(SampleSet& p, std::size_t k, const Merged& m, double count, d
   p.vz[k] = m.v.z;
   p.pop[k] = m.pop;
   p.w[k] = count;
+  if (p.structured()) {  // primaries in proportion to mass (structure.hpp)
+    p.np[k] = share * m.primaries.count;
+    p.rp[k] = m.primaries.radius;
+  }
 }
 
 }  // namespace

@@ -28,6 +28,8 @@
 // the fragment mass of an unequal-weight break deviates from f_L M (or the others' mass) by the rounding
 // of c, at most a factor (c + 1) / c. Kinetic energy of the relative motion is lost, as in coalescence.
 // Split-merge debts (merge.hpp) follow coalescence: equal weights pool them on i, else they stay.
+// Aggregate structure (structure.hpp): a fragment of mass f M holds f (n_i + n_j) primaries of the pair's
+// (merged) primary radius, so primary count and solid volume are conserved as the mass is.
 #include <cstddef>
 
 #include "agglo/acoustics/outcome_table.hpp"

@@ -15,6 +15,7 @@ Merged merged_state(const SampleSet& p, std::size_t i, std::size_t j) {
   m.v = Vec3{(mi * p.vx[i] + mj * p.vx[j]) / m.mass, (mi * p.vy[i] + mj * p.vy[j]) / m.mass,
              (mi * p.vz[i] + mj * p.vz[j]) / m.mass};
   m.pop = p.volume(i) >= p.volume(j) ? p.pop[i] : p.pop[j];
+  if (p.structured()) m.primaries = merged_primaries(p.np[i], p.rp[i], p.np[j], p.rp[j]);
   return m;
 }
 
@@ -27,6 +28,10 @@ void assign(SampleSet& p, std::size_t k, const Merged& m) {
   p.vy[k] = m.v.y;
   p.vz[k] = m.v.z;
   p.pop[k] = m.pop;
+  if (p.structured()) {
+    p.np[k] = m.primaries.count;
+    p.rp[k] = m.primaries.radius;
+  }
 }
 bool is_odd_integer(double w) { return w == std::floor(w) && std::fmod(w, 2.0) == 1.0; }
 }  // namespace

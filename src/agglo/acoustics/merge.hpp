@@ -5,6 +5,8 @@
 //   w_i = w_j even -> both w/2, both merged;   w_i = w_j odd -> (w+1)/2 and (w-1)/2, both merged;
 //   w_i > w_j -> i keeps its state with w_i - w_j, j becomes merged with w_j (mirror for w_i < w_j).
 // Non-integer equal weights are halved.
+// Aggregate structure (structure.hpp, runs with a fractal population): the merged particle holds
+// n_i + n_j primaries, of the common primary radius or else of the cube-mean radius.
 // Rebound: equal weights -> hard-sphere rebound (eqs. 22-23, 26); unequal weights -> split-merge
 // (eqs. 25, 27-28): the heavier sample i is split into i* (w_j) and i** (w_i - w_j), i* and j
 // rebound, then i* and i** merge by momentum. The kinetic energy lost by that merge (eq. 29) is
@@ -24,6 +26,7 @@ struct Merged {
   double vol_s, vol_l, mass;
   Vec3 v;
   int pop;
+  Primaries primaries;  // n_p, r_p of the merged particle (structured runs only; else 0)
 };
 Merged merged_state(const SampleSet& p, std::size_t i, std::size_t j);
 

@@ -88,6 +88,14 @@ void draft(const PopulationSpec& s, double Ntot, std::vector<double>& diam, std:
 }
 }  // namespace
 
+std::vector<StructureLaw> structure_laws_of(const std::vector<PopulationSpec>& pops) {
+  std::vector<StructureLaw> laws;
+  for (const PopulationSpec& s : pops) laws.push_back(s.structure);
+  for (const StructureLaw& l : laws)
+    if (l.fractal) return laws;
+  return {};
+}
+
 SampledPopulation sample_population(const PopulationSpec& s, int index, const Domain& dom, std::uint64_t seed,
                                     const Gas& gas, const Sound& sound, SampleSet& p, const SamplingSettings& sampling) {
   const double Ntot = s.number_concentration * dom.volume();
@@ -110,7 +118,8 @@ SampledPopulation sample_population(const PopulationSpec& s, int index, const Do
       w = std::max(1.0, std::round(num[m]));
     }
     const bool solid = s.phase == Phase::solid;
-    p.add(0.0, 0.0, 0.0, solid ? vol : 0.0, solid ? 0.0 : vol, s.density * vol, w, index, gas, sound);
+    const std::size_t i = p.add(0.0, 0.0, 0.0, solid ? vol : 0.0, solid ? 0.0 : vol, s.density * vol, w, index, gas, sound);
+    if (solid && s.structure.fractal) p.set_primaries(i, s.structure.primary_radius, gas, sound);
     out.weight_sum += w;
   }
   out.clone_factor = clone_factor(static_cast<std::int64_t>(diam.size()), dom.num_cells(), sampling.min_samples_per_cell);

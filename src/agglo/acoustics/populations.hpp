@@ -12,6 +12,9 @@
 // up to N_tot V within 0.5 (samples then differ by one in weight).
 // The samples are then split into clones and placed over the cells as set by [sampling]
 // (initial_placement.hpp: stratified or uniform in the box; counter-based RNG keyed by population and sample).
+// A fractal population (structure.hpp) draws the same volume-equivalent diameters; each solid sample is then
+// an aggregate of n_p = (d / (2 r_p))^3 primaries of radius r_p (below one primary: a compact sphere), so
+// its collision diameter exceeds d. The caller sets SampleSet::structure_laws before sampling.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -46,6 +49,7 @@ struct PopulationSpec {
   double density = kDefaultLiquidDensity;     // [kg/m^3]
   long samples = 0;
   bool conserving_rounding = false;            // weight_rounding = "conserving"
+  StructureLaw structure;                      // compact (default) or fractal aggregates (structure.hpp)
 };
 
 struct SampledPopulation {
@@ -55,6 +59,9 @@ struct SampledPopulation {
   double real_number = 0.0;    // N_tot V requested
   double weight_sum = 0.0;     // after integer rounding
 };
+
+// The law of every population when one of them is fractal, else none (compact run).
+std::vector<StructureLaw> structure_laws_of(const std::vector<PopulationSpec>& pops);
 
 SampledPopulation sample_population(const PopulationSpec& spec, int index, const Domain& dom, std::uint64_t seed,
                                     const Gas& gas, const Sound& sound, SampleSet& p,

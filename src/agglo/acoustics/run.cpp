@@ -246,7 +246,7 @@ class Observer {
     const double xmax = c_.output.snapshot_x_fraction * eng_.settings().motion.domain.L[0];
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.w[i] > 0 && p.x[i] <= xmax)
-        obs_.snapshots.push_back({t, p.x[i], p.y[i], p.z[i], p.d[i], p.vol_s[i], p.vol_l[i], p.w[i], p.id[i], p.phase(i)});
+        obs_.snapshots.push_back({t, p.x[i], p.y[i], p.z[i], p.volume_diameter(i), p.vol_s[i], p.vol_l[i], p.w[i], p.id[i], p.phase(i)});
   }
 
   const AcousticCase& c_;

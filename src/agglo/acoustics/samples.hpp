@@ -6,11 +6,16 @@
 // Phase (docs/model.md §C.5): solid (V_l = 0), liquid (V_s = 0), mixed (both > 0).
 // Derived per-sample quantities used by motion and kernels are cached and refreshed by
 // `refresh(i, ...)` after every change of size or mass.
+// Aggregate structure (structure.hpp): when some population is fractal (structure_laws not empty) every
+// sample also carries its primary count n_p and primary radius r_p, and the caches hold the collision
+// diameter d = 2 R_c and the mobility diameter d_m = 2 R_m (tau, C_c, Re from d_m); otherwise (compact
+// runs) those three arrays stay empty, d = d_m is the volume-equivalent diameter and nothing else changes.
 #include <cstdint>
 #include <vector>
 
 #include "agglo/acoustics/gas.hpp"
 #include "agglo/acoustics/sound.hpp"
+#include "agglo/acoustics/structure.hpp"
 
 namespace agglo::acoustics {
 
@@ -28,8 +33,12 @@ struct SampleSet {
   std::vector<double> debt_ref;       // w m of the particle that incurred the debt [kg] (Zhao et al. 2023, eq. 30)
   std::vector<int> pop;               // population of origin (largest volume wins on merging)
   std::vector<std::uint64_t> id;      // stable id
+  // Aggregate structure (empty unless structure_laws is set): primary count n_p (real-valued, V_s / v_p;
+  // 0 for a droplet), primary radius r_p [m], and the derived mobility diameter d_m [m].
+  std::vector<double> np, rp, dm;
+  std::vector<StructureLaw> structure_laws;  // by population; empty: every sample compact
   // Derived caches.
-  std::vector<double> d, rho;         // diameter [m], density [kg/m^3]
+  std::vector<double> d, rho;         // (collision) diameter [m], density m / (V_s + V_l) [kg/m^3]
   std::vector<double> cc;             // Cunningham slip correction
   std::vector<double> tau;            // Stokes relaxation time with slip, C_I = 1 [s]
   std::vector<double> slip_l;         // slip coefficient l = w tau / sqrt(1 + (w tau)^2)
@@ -56,6 +65,23 @@ struct SampleSet {
   // Reorders the samples: new sample k = old sample order[k] (memory locality of cells).
   void permute(const std::vector<std::uint32_t>& order);
   double volume(std::size_t i) const { return vol_s[i] + vol_l[i]; }
+
+  bool structured() const { return !structure_laws.empty(); }
+  // Volume-equivalent diameter d_v = (6 V / pi)^(1/3) [m] (= d in compact runs).
+  double volume_diameter(std::size_t i) const;
+  // The diameters the drag uses (d_m; d in compact runs).
+  const std::vector<double>& mobility_diameters() const { return structured() ? dm : d; }
+  // Sample i (of a fractal population) becomes an aggregate of primaries of radius r [m] holding its solid
+  // volume (n_p = V_s / ((4/3) pi r^3)); caches refreshed.
+  void set_primaries(std::size_t i, double r, const Gas& gas, const Sound& sound);
+
+ private:
+  void refresh_structured(std::size_t i, const Gas& gas, const Sound& sound);
+  template <class F>
+  void each_structure_array(F&& f) {
+    if (!structured()) return;
+    for (auto* v : {&np, &rp, &dm}) f(*v);
+  }
 };
 
 

@@ -14,6 +14,13 @@ inline constexpr std::string_view kAcousticCommands = "acoustic, sectional, swee
 inline constexpr std::string_view kDryCriticalVelocity = "critical_velocity";
 inline constexpr std::string_view kDryTable = "table";
 
+// Names of the aggregate structures of a DSMC population and of its mobility-radius rules
+// (acoustics/structure.hpp: the formulas, units and sources).
+inline constexpr std::string_view kStructureCompact = "compact";
+inline constexpr std::string_view kStructureFractal = "fractal";
+inline constexpr std::string_view kMobilityCollision = "collision";
+inline constexpr std::string_view kMobilitySorensen = "sorensen";
+
 struct AcousticSettings {
   struct Top {
     Table t{"", kAcousticCommands, "top-level keys of an acoustic case"};
@@ -94,6 +101,26 @@ struct AcousticSettings {
                           Range::open_closed(0.0, 1e-2)};
     Reals table_fractions{t, {"population.table_fractions", "", "table: number fractions"}, std::nullopt,
                           Range::nonnegative()};
+    // Aggregate structure (acoustics/structure.hpp); every key is read only when set, so that the resolved
+    // config of a compact case stays as it was.
+    Choice structure{t,
+                     {"population.structure", "",
+                      "solid particles as compact spheres of their volume, or fractal aggregates of primaries "
+                      "(collision radius r_p (n_p/k_f)^(1/D_f))",
+                      "compact (absent: read only when set)"},
+                     std::nullopt, {kStructureCompact, kStructureFractal}};
+    Real primary_radius{t, {"population.primary_radius", "m", "structure = \"fractal\": primary radius r_p"},
+                        std::nullopt, Range::open_closed(0.0, 1e-3)};
+    Real fractal_dimension{t, {"population.fractal_dimension", "", "structure = \"fractal\": fractal dimension D_f"},
+                           std::nullopt, Range::open_closed(1.0, 3.0)};
+    Real fractal_prefactor{t, {"population.fractal_prefactor", "", "structure = \"fractal\": fractal prefactor k_f"},
+                           std::nullopt, Range::open_closed(0.0, 100.0)};
+    Choice mobility_radius{t,
+                           {"population.mobility_radius", "",
+                            "structure = \"fractal\": drag (mobility) radius: the collision radius, or "
+                            "Sorensen's (2011) continuum r_p n_p^0.46",
+                            "collision (absent: read only when set)"},
+                           std::nullopt, {kMobilityCollision, kMobilitySorensen}};
   } population;
 
   struct Sampling {

@@ -35,6 +35,9 @@ void check_supported(const ConfigSection& root, const acoustics::EngineSettings&
     K.outcomes.always_coalesce.reject(K.outcomes.t.open(root), "the sectional solver merges on every collision: "
                                                                "must be true");
   const auto pops = K.population.t.elements(root);
+  for (std::size_t i = 0; i < e.populations.size() && i < pops.size(); ++i)
+    if (e.populations[i].structure.fractal)
+      K.population.structure.reject(pops[i], "the sectional solver has compact spheres only");
   for (std::size_t i = 1; i < e.populations.size(); ++i) {
     if (e.populations[i].phase != e.populations[0].phase)
       K.population.phase.reject(pops[i], "the sectional solver has one component: every population the same phase");

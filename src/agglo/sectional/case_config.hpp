@@ -4,7 +4,7 @@
 // component that always coalesces, with a kernel of the sizes only; anything else is a ConfigError
 // naming the key: kernels.model must be constant, additive, brownian_fuchs or brownian_partmc,
 // outcomes.always_coalesce true, kernels.exclude_same_population false, and every [[population]] the
-// same phase and density.
+// same phase and density, and compact (population.structure = "fractal" is refused).
 #include "agglo/acoustics/case_config.hpp"
 #include "agglo/core/config.hpp"
 

@@ -3,6 +3,7 @@
 //   beta = (3/16) (u_amp / r) (d_i + d_j)^2 (d_i l_i + d_j l_j)                 [m^3/s]
 // u_amp gas velocity amplitude [m/s], r centre distance [m] floored at contact (d_i + d_j)/2,
 // l = omega tau / sqrt(1 + (omega tau)^2) slip coefficient.
+// d of an aggregate is its collision diameter 2 R_c, its tau that of its mobility diameter (structure.hpp).
 // Bound over the cell: with r >= (d_i + d_j)/2, beta <= (3/8) u_amp (d_i + d_j)(d_i l_i + max d l); over two
 // groups a, b: (3/8) u_amp (max_a d + max_b d)(max_a d l + max_b d l).
 #include <algorithm>

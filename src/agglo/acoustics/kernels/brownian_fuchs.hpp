@@ -6,6 +6,7 @@
 //   g = ((d + l)^3 - (d^2 + l^2)^(3/2)) / (3 d l) - d,  g_ij = sqrt(g_i^2 + g_j^2),  c_ij = sqrt(c_i^2 + c_j^2)
 // D diffusivity [m^2/s], c thermal speed [m/s], m particle mass [kg], T gas temperature [K].
 // Bound: the denominator exceeds 8 D/(d c), so beta <= (pi/4)(d_i + d_j)^2 c_ij (free-molecular limit).
+// Compact spheres only (mass from rho d^3): a case with a fractal population refuses it (compact_spheres_only).
 #include <string_view>
 
 #include "agglo/acoustics/kernels/cell_bounds.hpp"
@@ -33,6 +34,7 @@ struct BrownianFuchs {
   static constexpr std::string_view name = "brownian_fuchs";
   static constexpr bool standalone = true;
   static constexpr bool brownian_term = true;
+  static constexpr bool compact_spheres_only = true;
   Gas gas;
 
   BrownianFuchs(const KernelSettings&, const Gas& g, const Sound&) : gas(g) {}

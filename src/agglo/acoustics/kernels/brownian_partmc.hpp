@@ -13,6 +13,7 @@
 //                                         + 4 (D_i + D_j) / ((r_i + r_j) sqrt(c_i^2 + c_j^2)) ]   [m^3/s]
 // Bound: the denominator exceeds its second term, so beta <= pi (r_i + r_j)^2 sqrt(c_i^2 + c_j^2): the
 // free-molecular bound of brownian_fuchs.hpp, scaled from agglo's k_B to PartMC's.
+// Compact spheres only (mass from rho d^3): a case with a fractal population refuses it (compact_spheres_only).
 #include <string_view>
 
 #include "agglo/acoustics/kernels/brownian_fuchs.hpp"
@@ -39,6 +40,7 @@ void partmc_prepare(const PartmcGas& gas, CellBounds& cb);
 struct BrownianPartmc {
   static constexpr std::string_view name = "brownian_partmc";
   static constexpr bool standalone = true;
+  static constexpr bool compact_spheres_only = true;
   Gas gas;
   PartmcGas pgas;
   double speed_ratio;

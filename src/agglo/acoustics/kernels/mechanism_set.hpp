@@ -14,6 +14,8 @@
 //   optional: void prepare(CellBounds&) const;  // derived fields bound_pair reads, after the group's includes
 //   optional: static constexpr bool standalone = true;     // selectable alone: kernels.model = name
 //   optional: static constexpr bool brownian_term = true;  // the acoustic sum's Brownian term: kernels.brownian = name
+//   optional: static constexpr bool compact_spheres_only = true;  // refused by cases with a fractal population
+//             (structure.hpp: the others read d as the collision diameter and tau, C_c / d from the mobility one)
 // The acoustic terms orthokinetic, acoustic_wake and radiation_pressure have a switch key each.
 // The binned selection (binned.hpp) draws candidates of each mechanism separately: beta_of(k, ...) and
 // bound_pair_of(k, ...) address the k-th switched-on mechanism.
@@ -45,6 +47,12 @@ constexpr bool declares_brownian_term() {
   return false;
 }
 
+template <class M>
+constexpr bool declares_compact_spheres_only() {
+  if constexpr (requires { M::compact_spheres_only; }) return M::compact_spheres_only;
+  return false;
+}
+
 template <class... M>
 class MechanismSet {
  public:
@@ -58,6 +66,12 @@ class MechanismSet {
   static std::vector<std::string_view> brownian_term_names() {
     std::vector<std::string_view> v;
     ((declares_brownian_term<M>() ? v.push_back(M::name) : void()), ...);
+    return v;
+  }
+
+  static std::vector<std::string_view> compact_spheres_only_names() {
+    std::vector<std::string_view> v;
+    ((declares_compact_spheres_only<M>() ? v.push_back(M::name) : void()), ...);
     return v;
   }
 

@@ -2,6 +2,7 @@
 // Orthokinetic interaction + gravitational (differential) settling (docs/model.md §C.3, eq. 8):
 //   beta = E (pi/4) (d_i + d_j)^2 |v_i - v_j|                                   [m^3/s]
 // d diameter [m], v sample velocity [m/s], E collision efficiency (kernels.collision_efficiency).
+// d of an aggregate is its collision diameter 2 R_c, its tau that of its mobility diameter (structure.hpp).
 // Bound over the cell: |v_i - v_j| <= |v_i - v_ref| + max_j |v_j - v_ref|, d_j <= d_max. Bound over two
 // groups a, b with reference velocities v_a, v_b: |v_i - v_j| <= |v_a - v_b| + max_a |v - v_a| + max_b |v - v_b|.
 #include <cmath>

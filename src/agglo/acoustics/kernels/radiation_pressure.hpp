@@ -4,6 +4,7 @@
 //   P = sqrt(3) rho_g u_amp^2 / (144 pi mu_g),  F_ij = F_ji = l_i l_j cos(phi_i - phi_j) / r
 // rho_g gas density [kg/m^3], mu_g viscosity [Pa s], l slip coefficient, phi = atan(omega tau)
 // phase lag, r centre distance floored at contact (F: decision of docs/model.md §C.3).
+// d of an aggregate is its collision diameter 2 R_c, its tau that of its mobility diameter (structure.hpp).
 // Bound over the cell: l <= 1, cos <= 1, r >= (d_i + d_j)/2 give
 //   beta <= 2 P d_i^2 d_j^2 / (d_i + d_j) <= 2 P d_i d_max min(d_i, d_max); over two groups a, b the middle
 // form at the largest diameters (it increases with both).
