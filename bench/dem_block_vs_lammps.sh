@@ -5,7 +5,7 @@
 #     if missing), loop CPU time (loop wall time x LAMMPS' "% CPU use") of STEPS steps after WARM steps;
 #   - agglo: bench_dem_scaling's BM_DemBlock (the same WARM + STEPS), process CPU time, the fast path and
 #     the reference twin (DemSystem::set_reference_kernel), rounds interleaved with LAMMPS;
-#   - both threads: agglo's fast path on OMP_NUM_THREADS=1 and 2, wall time, speed-up;
+#   - threads: agglo's fast path on OMP_NUM_THREADS=1 and 2 (OMP_WAIT_POLICY=passive), wall time, speed-up;
 #   - instructions (callgrind, block_steps() only) per particle-step of the fast path and the reference.
 # Prints ns per particle-step of each code, LAMMPS / agglo and fast / reference ratios.
 #
@@ -67,7 +67,9 @@ for n in $SIZES; do
     agglo_block "$n" 1 1 | tee -a "$RES"
   done
   if [ -n "$THREADS" ]; then
-    for th in $THREADS; do agglo_block "$n" 0 "$th" | sed 's/"code": "agglo"/"code": "agglo_threads"/' | tee -a "$RES"; done
+    # passive OpenMP waits, as the agglo CLI sets them (apps/agglo/omp_wait): spinning threads on a shared
+    # machine take the cores of the others
+    for th in $THREADS; do OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive} agglo_block "$n" 0 "$th" | sed 's/"code": "agglo"/"code": "agglo_threads"/' | tee -a "$RES"; done
   fi
 done
 if [ -n "$CG_SIZE" ]; then
