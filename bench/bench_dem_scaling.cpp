@@ -11,10 +11,18 @@
 //   with the LAMMPS cross-check settings (break_rule = lammps, tangential = marshall). The LAMMPS
 //   side of this comparison is bench/dem_benchmarks.sh.
 //
+// BM_DemBlock/N/reference: the block of BM_DemStep run for a fixed number of steps in one timed
+//   iteration, as its LAMMPS twin (bench/lammps/block_case.py) runs it: AGGLO_BLOCK_WARM untimed steps
+//   (default 200), then AGGLO_BLOCK_STEPS timed steps (default 1000) in block_steps(), which
+//   bench/dem_block_vs_lammps.sh also counts instructions of (callgrind --toggle-collect). reference = 1
+//   runs the reference twin of the DEM step (DemSystem::set_reference_kernel), 0 the fast path.
+//   Counter "ns_per_particle_step" uses the process CPU time (all threads).
+//
 // Run single-threaded for per-core cost: OMP_NUM_THREADS=1 build-bench/bench_dem_scaling
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <random>
 
@@ -72,6 +80,32 @@ void BM_DemStep(benchmark::State& state) {
                                                             benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_DemStep)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+long env_steps(const char* name, long fallback) {
+  const char* v = std::getenv(name);
+  return v ? std::atol(v) : fallback;
+}
+
+// The timed steps of BM_DemBlock (a function of its own: callgrind counts its instructions alone).
+[[gnu::noinline]] void block_steps(dem::DemSystem& sys, long steps) { sys.run(steps); }
+
+void BM_DemBlock(benchmark::State& state) {
+  const std::int64_t n = state.range(0);
+  const long warm = env_steps("AGGLO_BLOCK_WARM", 200), steps = env_steps("AGGLO_BLOCK_STEPS", 1000);
+  auto sys = make_block(n);
+  sys.set_reference_kernel(state.range(1) != 0);
+  sys.run(warm);
+  for (auto _ : state) block_steps(sys, steps);
+  state.counters["contacts"] = sys.active_contacts();
+  state.counters["steps"] = static_cast<double>(steps);
+  state.counters["ns_per_particle_step"] = benchmark::Counter(
+      static_cast<double>(n * steps) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_DemBlock)
+    ->ArgsProduct({{1000, 10000, 100000}, {0, 1}})
+    ->Iterations(1)
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kMillisecond);
 
 void BM_NeighborBuild(benchmark::State& state) {
   const std::int64_t n = state.range(0);

@@ -26,6 +26,10 @@ class ContactLaw {
   void evaluate_pairs(std::vector<Pair>& pairs, const Particles& p, double dt, std::vector<PairForce>& out) const {
     kernel_->evaluate_pairs(pairs, p, dt, out);
   }
+  // The same forces summed into p.f and p.t without a buffer (serial; contact_kernel.hpp).
+  void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const {
+    kernel_->accumulate_pairs(pairs, p, dt);
+  }
   // One contact evaluation: updates `s` (formation, break, springs) and returns the forces.
   PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
                           std::uint32_t kind = 0) const {

@@ -120,7 +120,7 @@ void DemSystem::add_wall_and_body_forces() {
 }
 
 // Half kick of velocity Verlet over h = dt/2; with gas drag its exact exponential form (gas_drag.hpp).
-void DemSystem::kick(std::int64_t q, double h) {
+[[gnu::always_inline]] inline void DemSystem::kick(std::int64_t q, double h) {
   if (params_.gas.enabled) {
     const Vec3 u = params_.gas.flow;
     p_.v[q] = u + decay_[q] * (p_.v[q] - u) + (lag_[q] / p_.m[q]) * p_.f[q];
@@ -137,12 +137,21 @@ JkrPair DemSystem::jkr_for(std::uint32_t i, std::uint32_t j) const {
 }
 
 void DemSystem::compute_forces() {
-  const std::size_t n = p_.size();
   if (nl_.needs_rebuild(p_.x, skin_))
     nl_.build(p_.x, p_.r, skin_, [this](Pair& pr) {
       pr.kind = mats_.kind(p_.mat[pr.i], p_.mat[pr.j]);
       pr.jkr = jkr_for(pr.i, pr.j);
     });
+  if (reference_ || runs_parallel(static_cast<std::int64_t>(nl_.pairs().size())))
+    gather_pair_forces();
+  else
+    law_.accumulate_pairs(nl_.pairs(), p_, dt_);
+  if (!walls_.empty() || norm2(params_.gravity) > 0.0) add_wall_and_body_forces();
+  if (ext_) ext_->add_forces(p_, step_, time_, p_.f, p_.t);
+  forces_ready_ = true;
+}
+
+void DemSystem::gather_pair_forces() {
   law_.evaluate_pairs(nl_.pairs(), p_, dt_, pair_forces_);
   const auto& off = nl_.offsets();
   const auto& ent = nl_.entries();
@@ -161,10 +170,7 @@ void DemSystem::compute_forces() {
     p_.f[q] = f;
     p_.t[q] = t;
   };
-  parallel_for(static_cast<std::int64_t>(n), gather);
-  if (!walls_.empty() || norm2(params_.gravity) > 0.0) add_wall_and_body_forces();
-  if (ext_) ext_->add_forces(p_, step_, time_, p_.f, p_.t);
-  forces_ready_ = true;
+  parallel_for(static_cast<std::int64_t>(p_.size()), gather);
 }
 
 void DemSystem::step() {

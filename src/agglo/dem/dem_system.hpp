@@ -58,6 +58,12 @@ class DemSystem {
     attach();
     forces_ready_ = false;
   }
+  // The reference twin of the pair step (tests, bench/bench_dem_scaling.cpp): every pair force into a
+  // per-pair buffer, then gathered per particle (today's kernel, also the parallel path). Off (the
+  // default): on one thread the forces go straight to the particles; the results are the same.
+  void set_reference_kernel(bool on) { reference_ = on; }
+  bool reference_kernel() const { return reference_; }
+
   void step();
   void run(long nsteps) {
     for (long s = 0; s < nsteps; ++s) step();
@@ -106,6 +112,7 @@ class DemSystem {
   void attach();  // wall contact slots and drag constants of particles added since the last call
   void add_wall_and_body_forces();
   void kick(std::int64_t q, double h);
+  void gather_pair_forces();  // the reference path: per-pair buffer, then a gather per particle
 
   Particles p_;
   DemParams params_;
@@ -120,6 +127,7 @@ class DemSystem {
   double dt_ = 0.0, skin_ = 0.0, time_ = 0.0;
   long step_ = 0;
   bool forces_ready_ = false;
+  bool reference_ = false;
 };
 
 // Reference contact period T0 = 2 pi sqrt(m*/k0), k0 = 0.9905 F_C/delta_C, for the smallest pair, every

@@ -4,9 +4,22 @@
 // exactly one thread, so results do not depend on the thread count when f(k) writes only slot k.
 #include <cstdint>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace agglo::dem {
 
 inline constexpr std::int64_t kParallelThreshold = 4096;  // pairs or particles
+
+// True when parallel_for(n, ...) runs on more than one thread.
+inline bool runs_parallel(std::int64_t n) {
+#ifdef _OPENMP
+  return n > kParallelThreshold && omp_get_max_threads() > 1;
+#else
+  return false;
+#endif
+}
 
 template <class F>
 void parallel_for(std::int64_t n, const F& f) {

@@ -18,6 +18,10 @@ class ContactKernel {
   // Forces of every pair into out[k] (resized to pairs.size()); updates the pair states.
   virtual void evaluate_pairs(std::vector<Pair>& pairs, const Particles& p, double dt,
                               std::vector<PairForce>& out) const = 0;
+  // The same forces added straight into p.f and p.t (zeroed first), serially in pair order: pair k's
+  // force goes to i (+) and j (-) as k grows, the order in which the per-pair buffer is gathered, so
+  // the sums are bit for bit those of evaluate_pairs + gather (DemSystem), without the buffer.
+  virtual void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const = 0;
   // One pair of material pair `kind` (tests and diagnostics; a virtual call per pair).
   virtual PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
                                   std::uint32_t kind) const = 0;

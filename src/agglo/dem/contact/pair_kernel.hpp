@@ -12,6 +12,7 @@
 // The kernel holds one set of sub-models per ordered pair of material ids (dem/material.hpp) and
 // evaluates pair k with the set Pair::kind names (a wall contact: WallContacts::kind); with a single
 // material there is one set. The interface each sub-model implements is the call made on it below.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -48,6 +49,20 @@ class PairKernel final : public ContactKernel {
                                p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
       out[k] = models_[pr.kind].force(pr.jkr, kin, pr.state, dt);
     });
+  }
+
+  void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
+    std::fill(p.f.begin(), p.f.end(), Vec3{});
+    std::fill(p.t.begin(), p.t.end(), Vec3{});
+    for (Pair& pr : pairs) {
+      const PairKinematics kin{p.x[pr.i], p.x[pr.j], p.v[pr.i], p.v[pr.j], p.w[pr.i], p.w[pr.j],
+                               p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
+      const PairForce out = models_[pr.kind].force(pr.jkr, kin, pr.state, dt);
+      p.f[pr.i] += out.f_on_i;
+      p.t[pr.i] += out.t_on_i;
+      p.f[pr.j] -= out.f_on_i;
+      p.t[pr.j] += out.t_on_j;
+    }
   }
 
   PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
@@ -92,7 +107,7 @@ class PairKernel final : public ContactKernel {
 
     // flatten: the sub-model calls are inlined into one body (as fast as a hand-written law; without it
     // GCC keeps them out of line and a step costs ~25 % more).
-    [[gnu::flatten]] PairForce force(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt) const {
+    [[gnu::flatten, gnu::always_inline]] PairForce force(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt) const {
       const Vec3 d = k.xj - k.xi;
       const double dist = norm(d);
       const double delta = k.ri + k.rj - dist;

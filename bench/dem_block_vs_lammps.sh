@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# DEM cost per particle-step of the adhesive block at JKR equilibrium, agglo vs LAMMPS, in one run
+# (issue 27 item 1; docs/benchmarks_dem.md §3):
+#   - LAMMPS: bench/lammps/block_case.py (the same block, contact law and dt; Debian's `lammps`, installed
+#     if missing), loop CPU time (loop wall time x LAMMPS' "% CPU use") of STEPS steps after WARM steps;
+#   - agglo: bench_dem_scaling's BM_DemBlock (the same WARM + STEPS), process CPU time, the fast path and
+#     the reference twin (DemSystem::set_reference_kernel), rounds interleaved with LAMMPS;
+#   - threads: agglo's fast path on OMP_NUM_THREADS=1 and 2 (OMP_WAIT_POLICY=passive), wall time, speed-up;
+#   - instructions (callgrind, block_steps() only) per particle-step of the fast path and the reference.
+# Prints ns per particle-step of each code, LAMMPS / agglo and fast / reference ratios.
+#
+#   bench/dem_block_vs_lammps.sh [OUT_DIR]            (default OUT_DIR: results/dem_block_vs_lammps)
+# Environment: BUILD (build folder with AGGLO_BUILD_BENCH=ON, default build-bench), SIZES (default
+# "10000 100000"; BM_DemBlock has 1000, 10000, 100000), ROUNDS (3), STEPS (1000), WARM (200),
+# THREADS ("1 2"; "" skips the thread comparison), CG_SIZE (10000; "" skips callgrind), CG_STEPS (20),
+# LMP (default lmp). Smoke run: SIZES=1000 ROUNDS=1 STEPS=20 WARM=10 CG_SIZE=1000 CG_STEPS=5.
+set -euo pipefail
+SRC=$(cd "$(dirname "$0")/.." && pwd)
+OUT=${1:-$SRC/results/dem_block_vs_lammps}
+BUILD=${BUILD:-$SRC/build-bench}
+SIZES=${SIZES:-10000 100000}
+ROUNDS=${ROUNDS:-3}
+STEPS=${STEPS:-1000}
+WARM=${WARM:-200}
+THREADS=${THREADS-1 2}
+CG_SIZE=${CG_SIZE-10000}
+CG_STEPS=${CG_STEPS:-20}
+PY=/usr/bin/python3
+export LMP=${LMP:-lmp}
+
+if ! command -v "$LMP" >/dev/null 2>&1; then
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -q && DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q lammps
+fi
+if [ ! -x "$BUILD/bench_dem_scaling" ]; then
+  cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=$PY -DAGGLO_BUILD_BENCH=ON >/dev/null
+  cmake --build "$BUILD" -j2 --target bench_dem_scaling
+fi
+mkdir -p "$OUT"
+RES=$OUT/results.jsonl
+: > "$RES"
+export AGGLO_BLOCK_STEPS=$STEPS AGGLO_BLOCK_WARM=$WARM
+
+# One BM_DemBlock run -> a JSON line {code, n, kernel, threads, cpu_s, wall_s, ns_per_particle_step}.
+agglo_block() {  # n reference(0|1) threads
+  local js=$OUT/bm.json
+  OMP_NUM_THREADS=$3 "$BUILD/bench_dem_scaling" --benchmark_filter="^BM_DemBlock/$1/$2/" \
+      --benchmark_out="$js" --benchmark_out_format=json >/dev/null 2>&1
+  $PY - "$js" "$1" "$2" "$3" "$STEPS" <<'EOF'
+import json, sys
+b = json.load(open(sys.argv[1]))["benchmarks"][0]
+n, ref, th, steps = int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5])
+unit = {"ms": 1e-3, "us": 1e-6, "ns": 1e-9, "s": 1.0}[b["time_unit"]]
+cpu, wall = b["cpu_time"] * unit, b["real_time"] * unit
+print(json.dumps({"code": "agglo", "n": n, "kernel": "reference" if ref else "fast", "threads": th, "cpu_s": cpu,
+                  "wall_s": wall, "contacts": b.get("contacts"), "ns_per_particle_step": cpu / (n * steps) * 1e9}))
+EOF
+}
+
+echo "== machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "== commit $(git -C "$SRC" rev-parse --short HEAD 2>/dev/null || echo '?'); block: $WARM warm-up + $STEPS timed steps"
+for n in $SIZES; do
+  for r in $(seq 1 "$ROUNDS"); do
+    echo "-- N = $n, round $r"
+    $PY "$SRC/bench/lammps/block_case.py" "$n" --steps "$STEPS" --warm "$WARM" --workdir "$OUT/lammps_$n" | tee -a "$RES"
+    agglo_block "$n" 0 1 | tee -a "$RES"
+    agglo_block "$n" 1 1 | tee -a "$RES"
+  done
+  if [ -n "$THREADS" ]; then
+    # passive OpenMP waits, as the agglo CLI sets them (apps/agglo/omp_wait): spinning threads on a shared
+    # machine take the cores of the others
+    for th in $THREADS; do OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive} agglo_block "$n" 0 "$th" | sed 's/"code": "agglo"/"code": "agglo_threads"/' | tee -a "$RES"; done
+  fi
+done
+if [ -n "$CG_SIZE" ]; then
+  for ref in 0 1; do
+    AGGLO_BLOCK_STEPS=$CG_STEPS AGGLO_BLOCK_WARM=$WARM OMP_NUM_THREADS=1 valgrind --tool=callgrind \
+        --callgrind-out-file="$OUT/callgrind.$ref" --collect-atstart=no --toggle-collect='*block_steps*' \
+        "$BUILD/bench_dem_scaling" --benchmark_filter="^BM_DemBlock/$CG_SIZE/$ref/" >/dev/null 2>"$OUT/callgrind.$ref.log"
+    ir=$(sed -n 's/.*Collected : \([0-9]*\).*/\1/p' "$OUT/callgrind.$ref.log")
+    echo "{\"code\": \"callgrind\", \"n\": $CG_SIZE, \"kernel\": \"$([ $ref = 1 ] && echo reference || echo fast)\", \"steps\": $CG_STEPS, \"instructions\": $ir}" | tee -a "$RES"
+  done
+fi
+
+$PY - "$RES" <<'EOF'
+import json, statistics, sys
+rows = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
+def ns(code, n, kernel=None):
+    return [r["ns_per_particle_step"] for r in rows if r["code"] == code and r["n"] == n and
+            (kernel is None or r.get("kernel") == kernel)]
+rng = lambda v: f"{min(v):.0f}-{max(v):.0f}" if len(v) > 1 else f"{v[0]:.0f}"
+print("\nns per particle-step (CPU time, one core; min-max over the rounds) and ratios of the medians:")
+print(f"{'N':>7} {'LAMMPS':>11} {'agglo fast':>11} {'agglo ref':>11} {'LAMMPS/fast':>12} {'ref/fast':>9}")
+for n in sorted({r["n"] for r in rows if r["code"] == "lammps"}):
+    l, f, rf = ns("lammps", n), ns("agglo", n, "fast"), ns("agglo", n, "reference")
+    med = statistics.median
+    print(f"{n:>7} {rng(l):>11} {rng(f):>11} {rng(rf):>11} {med(l) / med(f):>11.2f}x {med(rf) / med(f):>8.2f}x")
+th = [r for r in rows if r["code"] == "agglo_threads"]
+for n in sorted({r["n"] for r in th}):
+    w = {r["threads"]: r["wall_s"] for r in th if r["n"] == n}
+    if 1 in w and 2 in w:
+        print(f"threads, N = {n}: wall {w[1]:.3f} s on 1, {w[2]:.3f} s on 2 -> speed-up {w[1] / w[2]:.2f}x")
+cg = {r["kernel"]: r for r in rows if r["code"] == "callgrind"}
+if "fast" in cg and "reference" in cg:
+    per = {k: v["instructions"] / (v["n"] * v["steps"]) for k, v in cg.items()}
+    print(f"callgrind, N = {cg['fast']['n']}, {cg['fast']['steps']} steps: instructions per particle-step "
+          f"fast {per['fast']:.0f}, reference {per['reference']:.0f} -> {per['reference'] / per['fast']:.3f}x")
+EOF

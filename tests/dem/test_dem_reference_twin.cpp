@@ -1,0 +1,123 @@
+// The fast DEM pair step against its reference twin (DemSystem::set_reference_kernel; issue 27): on one
+// thread the fast path adds every pair force straight into the particles, the reference evaluates into
+// a per-pair buffer and gathers it per particle (today's kernel, also the parallel path). The sums run
+// in the same order, so every position, velocity, force and contact state must be bit for bit equal:
+// on an adhesive block at JKR equilibrium and on an impact that forms and breaks contacts, with a wall.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <omp.h>
+#include <random>
+
+#include "agglo/dem/contact/marshall_rolling.hpp"
+#include "agglo/dem/contact/marshall_sliding.hpp"
+#include "agglo/dem/contact/marshall_twisting.hpp"
+#include "agglo/dem/dem_system.hpp"
+
+using namespace agglo;
+using namespace agglo::dem;
+
+namespace {
+
+constexpr double kTwinR = 10e-6, kTwinRho = 2500.0;
+
+DemParams twin_params(bool all_models) {
+  DemParams p;
+  p.contact.youngs_modulus = 1.0e9;
+  p.contact.poisson_ratio = 0.33;
+  p.contact.surface_energy = 0.01;
+  p.contact.restitution = 0.7;
+  p.contact.friction = 0.3;
+  if (all_models) {
+    p.contact.models.tangential = contact::MarshallSliding::name;
+    p.contact.models.rolling = contact::MarshallRolling::name;
+    p.contact.models.twisting = contact::MarshallTwisting::name;
+  }
+  return p;
+}
+
+// side^3 spheres on a simple cubic lattice of spacing 2r - delta0, random velocities of `speed`.
+Particles twin_block(int side, double speed) {
+  const auto p = twin_params(false);
+  const double L = 2.0 * kTwinR - JkrPair::make(0.5 * kTwinR, p.contact.estar(), p.contact.surface_energy).delta_equilibrium();
+  std::mt19937_64 gen(7);
+  std::normal_distribution<double> g(0.0, speed / std::sqrt(3.0));
+  Particles out;
+  for (int k = 0; k < side * side * side; ++k)
+    out.add(Vec3{(k % side) * L, (k / side % side) * L, (k / (side * side)) * L}, kTwinR, kTwinRho,
+            Vec3{g(gen), g(gen), g(gen)});
+  return out;
+}
+
+bool same_bits(const Vec3& a, const Vec3& b) { return std::memcmp(&a, &b, sizeof(Vec3)) == 0; }
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+// Number of differing particle or pair fields (0: the two systems are bit for bit equal).
+int twin_differences(const DemSystem& a, const DemSystem& b) {
+  int bad = 0;
+  const auto& p = a.particles();
+  const auto& q = b.particles();
+  for (std::size_t k = 0; k < p.size(); ++k)
+    bad += !same_bits(p.x[k], q.x[k]) + !same_bits(p.v[k], q.v[k]) + !same_bits(p.w[k], q.w[k]) +
+           !same_bits(p.f[k], q.f[k]) + !same_bits(p.t[k], q.t[k]);
+  if (a.pairs().size() != b.pairs().size()) return bad + 1;
+  for (std::size_t k = 0; k < a.pairs().size(); ++k) {
+    const auto &s = a.pairs()[k].state, &t = b.pairs()[k].state;
+    bad += (s.active != t.active) + !same_bits(s.a, t.a) + !same_bits(s.xi_t, t.xi_t) + !same_bits(s.xi_r, t.xi_r) +
+           !same_bits(s.xi_q, t.xi_q);
+  }
+  return bad;
+}
+
+}  // namespace
+
+TEST(DemReferenceTwin, BlockAtEquilibriumBitIdentical) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);  // the fast path runs on one thread
+  for (bool all_models : {false, true}) {
+    DemSystem fast(twin_block(5, 1e-3), twin_params(all_models));
+    DemSystem ref(twin_block(5, 1e-3), twin_params(all_models));
+    ref.set_reference_kernel(true);
+    EXPECT_FALSE(fast.reference_kernel());
+    for (int chunk = 0; chunk < 6; ++chunk) {
+      fast.run(50);
+      ref.run(50);
+      ASSERT_EQ(twin_differences(fast, ref), 0) << "step " << fast.steps() << ", all models " << all_models;
+    }
+    EXPECT_EQ(fast.active_contacts(), 300);  // 3 * 5 * 5 * 4 lattice contacts, all kept
+  }
+  omp_set_num_threads(saved);
+}
+
+TEST(DemReferenceTwin, ImpactOnWallBitIdentical) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  auto make = [](bool reference) {
+    Particles p = twin_block(3, 0.0);
+    double xmax = 0.0;
+    for (const auto& x : p.x) xmax = std::max(xmax, x.x);
+    p.add(Vec3{-3.0 * kTwinR, 0.3 * kTwinR, 0.2 * kTwinR}, kTwinR, kTwinRho, Vec3{2.0, 0.0, 0.0});  // projectile
+    auto prm = twin_params(true);
+    prm.walls.push_back(Wall{Vec3{xmax + 1.2 * kTwinR, 0.0, 0.0}, Vec3{-1.0, 0.0, 0.0}});
+    DemSystem sys(std::move(p), prm);
+    sys.set_reference_kernel(reference);
+    return sys;
+  };
+  DemSystem fast = make(false), ref = make(true);
+  int most = 0, least = 1 << 30, wall_max = 0;
+  for (int s = 1; s <= 2000; ++s) {
+    fast.step();
+    ref.step();
+    if (s % 100 == 0) {
+      ASSERT_EQ(twin_differences(fast, ref), 0) << "step " << s;
+    }
+    most = std::max(most, fast.active_contacts());
+    if (most > 54) least = std::min(least, fast.active_contacts());
+    wall_max = std::max(wall_max, fast.wall_contacts());
+  }
+  EXPECT_GT(most, 54);           // the projectile touched the block (54 lattice contacts before)
+  EXPECT_LT(least, most);        // and contacts broke afterwards
+  EXPECT_GT(wall_max, 0);        // the block was pushed onto the wall
+  omp_set_num_threads(saved);
+}
