@@ -13,11 +13,18 @@
 # Environment: BUILD (build folder with AGGLO_BUILD_BENCH=ON, default build-bench), SIZES (default
 # "10000 100000"; BM_DemBlock has 1000, 10000, 100000), ROUNDS (3), STEPS (1000), WARM (200),
 # THREADS ("1 2"; "" skips the thread comparison), CG_SIZE (10000; "" skips callgrind), CG_STEPS (20),
-# LMP (default lmp). Smoke run: SIZES=1000 ROUNDS=1 STEPS=20 WARM=10 CG_SIZE=1000 CG_STEPS=5.
+# LMP (default lmp). LAMMPS is installed (Debian's `lammps`) and bench_dem_scaling built in BUILD if missing.
+#   SMOKE=1: the smoke test (ctest -L bench): SIZES=1000 ROUNDS=1 STEPS=20 WARM=10 unless set, no callgrind
+#   unless CG_SIZE is set (valgrind is not a test package; a callgrind run costs seconds), LAMMPS and
+#   BUILD/bench_dem_scaling must exist (no apt-get, no build); the same runs, table and ratios.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 OUT=${1:-$SRC/results/dem_block_vs_lammps}
 BUILD=${BUILD:-$SRC/build-bench}
+if [ "${SMOKE:-0}" = 1 ]; then
+  SIZES=${SIZES:-1000} ROUNDS=${ROUNDS:-1} STEPS=${STEPS:-20} WARM=${WARM:-10} CG_SIZE=${CG_SIZE-}
+  [ -n "$CG_SIZE" ] || echo "smoke: callgrind skipped (no instruction counts)"
+fi
 SIZES=${SIZES:-10000 100000}
 ROUNDS=${ROUNDS:-3}
 STEPS=${STEPS:-1000}
@@ -28,6 +35,10 @@ CG_STEPS=${CG_STEPS:-20}
 PY=/usr/bin/python3
 export LMP=${LMP:-lmp}
 
+if [ "${SMOKE:-0}" = 1 ]; then
+  command -v "$LMP" >/dev/null || { echo "smoke: no LAMMPS binary '$LMP' (Debian package lammps)"; exit 2; }
+  [ -x "$BUILD/bench_dem_scaling" ] || { echo "smoke: no $BUILD/bench_dem_scaling (AGGLO_BUILD_BENCH=ON)"; exit 2; }
+fi
 if ! command -v "$LMP" >/dev/null 2>&1; then
   SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
   $SUDO apt-get update -q && DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q lammps

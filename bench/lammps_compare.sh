@@ -13,7 +13,13 @@
 # v_crit is found in both by the same scan + bisection (vcrit.* of the case) and the same break-up
 # rule (contact graph + escaping fragments, 2 ms after first contact). Exit 0 when they agree within
 # 3 %, 1 otherwise. Environment: AGGLO (agglo executable), CASE, RESTITUTION (default: the case's
-# material.restitution), STEPS_PER_PERIOD (dt = T0 / this, default 50), LMP (LAMMPS binary, default lmp).
+# material.restitution), STEPS_PER_PERIOD (dt = T0 / this, default 50), LMP (LAMMPS binary, default lmp;
+# installed from Debian's `lammps` if missing; agglo is built in build-bench if AGGLO is missing).
+#   SMOKE=1: the smoke test (ctest -L bench): the v_crit search of both codes cut to SMOKE_SETS below (a
+#   scan of 3 speeds, 0.02, 0.31 and 0.6 m/s, no bisection round; projectile 0.02 r before contact; each run
+#   SMOKE_AFTER s after contact, no extensions), the trajectory the same, CSV output and no plots; LAMMPS and
+#   AGGLO must exist (no apt-get, no build), no LAMMPS version line; the JKR check, the comparison and the
+#   verdict unchanged.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 OUT=${1:-$SRC/results/lammps_compare}
@@ -21,6 +27,15 @@ CASE=${CASE:-$SRC/cases/seed000_neutral_tetrahedron_e0p9.toml}
 AGGLO=${AGGLO:-$SRC/build-bench/agglo}
 PY=/usr/bin/python3
 export LMP=${LMP:-lmp}
+SMOKE_AFTER=1e-4
+SMOKE_SETS=(vcrit.scan_points=3 vcrit.v_min=0.02 vcrit.v_max=0.6 vcrit.tolerance=0.3 projectile.gap_radii=0.02
+            time.after_contact=$SMOKE_AFTER time.max_extensions=0)
+AGGLO_SMOKE=() PNG=(--png "$OUT/ke_history.png")
+if [ "${SMOKE:-0}" = 1 ]; then
+  command -v "$LMP" >/dev/null || { echo "smoke: no LAMMPS binary '$LMP' (Debian package lammps)"; exit 2; }
+  [ -x "$AGGLO" ] || { echo "smoke: no agglo executable '$AGGLO'"; exit 2; }
+  AGGLO_SMOKE=(--format csv --no-plots) PNG=()
+fi
 
 # 1. LAMMPS (Debian package `lammps`, binary `lmp`).
 if ! command -v "$LMP" >/dev/null 2>&1; then
@@ -29,7 +44,7 @@ if ! command -v "$LMP" >/dev/null 2>&1; then
   $SUDO apt-get update -q && DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q lammps
 fi
 command -v "$LMP" >/dev/null || { echo "no LAMMPS binary '$LMP'"; exit 2; }
-echo "== LAMMPS: $("$LMP" -h | grep -m1 "^Large-scale")"
+[ "${SMOKE:-0}" = 1 ] || echo "== LAMMPS: $("$LMP" -h | grep -m1 "^Large-scale")"
 
 # 2. agglo (Release build in build-bench unless AGGLO points elsewhere).
 if [ ! -x "$AGGLO" ]; then
@@ -40,11 +55,16 @@ if [ ! -x "$AGGLO" ]; then
 fi
 
 # 3. Parameters, passed explicitly to both codes (the time step too).
-E_REST=${RESTITUTION:-$($PY -c "import tomllib,sys; print(tomllib.load(open(sys.argv[1],'rb')).get('material',{}).get('restitution',0.7))" "$CASE")}
+# the case's restitution and projectile speed (one Python process: each costs ~0.08 s of CPU)
+cv=$($PY -c "import tomllib,sys; c = tomllib.load(open(sys.argv[1],'rb'))
+print(c.get('material',{}).get('restitution',0.7), c.get('projectile',{}).get('speed',0.18))" "$CASE")
+read -r E_CASE V <<< "$cv"
+E_REST=${RESTITUTION:-$E_CASE}
 SETS=(contact.break_rule=lammps contact.tangential=marshall contact.rolling=false contact.twisting=false
       material.density=2500.0 material.youngs_modulus=1.0e9 material.poisson_ratio=0.33
       material.surface_energy=0.01 material.restitution=$E_REST material.friction=0.3
       time.steps_per_period=${STEPS_PER_PERIOD:-50})
+if [ "${SMOKE:-0}" = 1 ]; then SETS+=("${SMOKE_SETS[@]}"); fi
 SETARGS=(); for s in "${SETS[@]}"; do SETARGS+=(--set "$s"); done
 DT=$($PY -c "
 import sys; sys.path.insert(0, '$SRC/bench/lammps'); import lmp_case
@@ -60,7 +80,7 @@ $PY "$SRC/bench/lammps/check_jkr_lammps.py" "$OUT/lammps_jkr_check" | tee "$OUT/
 # 5. v_crit in both codes.
 echo "== agglo vcrit"
 t0=$(date +%s.%N)
-"$AGGLO" -q vcrit "$CASE" "${SETARGS[@]}" --overwrite --out "$OUT/agglo_vcrit" -j 2 2>/dev/null | tail -3
+"$AGGLO" -q vcrit "$CASE" "${SETARGS[@]}" "${AGGLO_SMOKE[@]}" --overwrite --out "$OUT/agglo_vcrit" -j 2 2>/dev/null | tail -3
 t1=$(date +%s.%N)
 echo "== LAMMPS vcrit (same scan + bisection, 2 lmp processes at a time)"
 $PY "$SRC/bench/lammps/vcrit_lammps.py" "$CASE" "${SETARGS[@]}" --workdir "$OUT/lammps_vcrit" \
@@ -68,13 +88,12 @@ $PY "$SRC/bench/lammps/vcrit_lammps.py" "$CASE" "${SETARGS[@]}" --workdir "$OUT/
 t2=$(date +%s.%N)
 
 # 6. One trajectory in both (v = projectile.speed of the case): kinetic energy history.
-V=$($PY -c "import tomllib,sys; print(tomllib.load(open(sys.argv[1],'rb')).get('projectile',{}).get('speed',0.18))" "$CASE")
-"$AGGLO" collide "$CASE" "${SETARGS[@]}" --speed "$V" --overwrite --out "$OUT/agglo_collide" -j 1 >/dev/null 2>&1
+"$AGGLO" collide "$CASE" "${SETARGS[@]}" "${AGGLO_SMOKE[@]}" --speed "$V" --overwrite --out "$OUT/agglo_collide" -j 1 >/dev/null 2>&1
 mkdir -p "$OUT/lammps_collide"
 $PY "$SRC/bench/lammps/lmp_case.py" "$CASE" "${SETARGS[@]}" --speed "$V" --workdir "$OUT/lammps_collide" \
     --thermo-every 1 > "$OUT/lammps_collide/result.json"
 echo "== kinetic energy history at v = $V m/s (agglo vs LAMMPS)"
-$PY "$SRC/bench/lammps/compare_trajectory.py" "$OUT/agglo_collide" "$OUT/lammps_collide" --png "$OUT/ke_history.png"
+$PY "$SRC/bench/lammps/compare_trajectory.py" "$OUT/agglo_collide" "$OUT/lammps_collide" "${PNG[@]}"
 
 # 7. Verdict.
 $PY - "$OUT" "$t0" "$t1" "$t2" <<'EOF'

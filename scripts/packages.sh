@@ -15,9 +15,10 @@ RUN_PKGS="$BUILD_PKGS $PY_PKGS"
 export CMAKE_GENERATOR="${CMAKE_GENERATOR:-Ninja}"
 # Only for the test suite and the benchmarks (GoogleTest, Google Benchmark, the function-size lint,
 # pytest, the Dask example's test, the notebooks; /usr/bin/time and column, which bench/ scripts and their
-# smoke tests (ctest -L bench) use, are priority-optional packages a minimal Debian lacks):
+# smoke tests (ctest -L bench) use, are priority-optional packages a minimal Debian lacks; LAMMPS, binary
+# lmp, for the bench/ scripts that compare agglo's DEM with it and their smoke tests):
 TEST_PKGS="libgtest-dev libbenchmark-dev clang-tidy python3-pytest python3-distributed jupyter-nbconvert
-  python3-ipykernel time bsdextrautils"
+  python3-ipykernel time bsdextrautils lammps"
 
 # install_missing PKG...: apt-get installs the packages that dpkg does not know as installed (a package
 # removed but not purged is known to `dpkg -s` with the status "deinstall ok config-files": not installed).

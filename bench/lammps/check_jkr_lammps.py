@@ -25,8 +25,10 @@ dC = a0 * a0 / (2 * 6 ** (1 / 3) * R)
 dt = 2e-8
 
 
-def run(workdir, name, delta_start, speed, nsteps):
-    inp = f"""units si
+def lammps_input(name, delta_start, speed, nsteps):
+    """One pull or push run; it logs to log.NAME (several runs share one lmp process, separated by `clear`)."""
+    return f"""log log.{name}
+units si
 atom_style sphere
 atom_modify map array
 boundary m m m
@@ -52,13 +54,20 @@ thermo_modify format float %.15g
 thermo 1
 run {nsteps}
 """
-    path = os.path.join(workdir, f"in.{name}")
-    with open(path, "w") as f:
-        f.write(inp)
-    subprocess.run([LMP, "-in", f"in.{name}", "-log", f"log.{name}", "-screen", "none", "-nocite"], cwd=workdir,
+
+
+def run(workdir, runs):
+    """Runs {name: (delta_start, speed, nsteps)} in one lmp process (one start-up: ~0.15 s of CPU each)."""
+    with open(os.path.join(workdir, "in.jkr_check"), "w") as f:
+        f.write("clear\n".join(lammps_input(name, *args) for name, args in runs.items()))
+    subprocess.run([LMP, "-in", "in.jkr_check", "-log", "none", "-screen", "none", "-nocite"], cwd=workdir,
                    check=True)
+    return {name: read_log(os.path.join(workdir, f"log.{name}")) for name in runs}
+
+
+def read_log(path):
     rows, on = [], False
-    for line in open(os.path.join(workdir, f"log.{name}")):
+    for line in open(path):
         s = line.split()
         if s[:1] == ["Step"]:
             on = True
@@ -76,7 +85,9 @@ def main():
     wd = sys.argv[1] if len(sys.argv) > 1 else "lmp_jkr_check"
     os.makedirs(wd, exist_ok=True)
     print(f"F_C = {Fc:.6e} N, delta_C = {dC:.6e} m, delta0 = {a0 * a0 / (3 * R):.6e} m")
-    pull = run(wd, "pull", 2.0 * dC, 1e-4, int(2.7 * dC / (1e-4 * dt)))
+    logs = run(wd, {"pull": (2.0 * dC, 1e-4, int(2.7 * dC / (1e-4 * dt))),
+                    "push": (-0.67 * dC, -1e-4, int(1.0 * dC / (1e-4 * dt)))})
+    pull, push = logs["pull"], logs["push"]
     zero = next(k for k in range(1, len(pull)) if pull[k - 1][1] > 0 >= pull[k][1])
     d1, f1 = pull[zero - 1]
     d2, f2 = pull[zero]
@@ -87,7 +98,6 @@ def main():
     print(f"          min F = {pull[kmin][1] / Fc:.5f} F_C at delta = {pull[kmin][0] / dC:.5f} delta_C "
           f"(docs/model.md: -1 at -0.48075)")
     print(f"          force vanishes between delta = {pull[brk - 1][0] / dC:.5f} and {pull[brk][0] / dC:.5f} delta_C")
-    push = run(wd, "push", -0.67 * dC, -1e-4, int(1.0 * dC / (1e-4 * dt)))
     first = next(k for k in range(len(push)) if push[k][1] != 0.0)
     print(f"approach: first force at delta = {push[first][0] / dC:.5f} delta_C (previous step "
           f"{push[first - 1][0] / dC:.5f}), F = {push[first][1] / Fc:.5f} F_C (docs/model.md: delta >= 0, -8/9 = -0.88889 "

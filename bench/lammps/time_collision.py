@@ -2,6 +2,7 @@
 """Wall time of one collision run (approach + 2 ms after first contact, 5 particles): agglo vs LAMMPS.
 
     time_collision.py AGGLO_EXE CASE.toml --speed 0.18 [--set key=value ...] [--reps 10] [--json OUT]
+                      [--format csv]   (agglo's output format; default: agglo's default, results.nc)
 
 Each repetition runs, alternately, one `lmp` process on the input written by lmp_case.py and one
 `agglo collide` process (-j 1, output.snapshot_interval = 0 so that it, like LAMMPS, writes only the
@@ -33,6 +34,7 @@ def main():
     ap.add_argument("--set", action="append", default=[], dest="sets")
     ap.add_argument("--reps", type=int, default=10)
     ap.add_argument("--json", default="")
+    ap.add_argument("--format", default="")
     a = ap.parse_args()
 
     setup = lmp_case.Setup(lmp_case.load_case(a.case, a.sets))
@@ -46,6 +48,8 @@ def main():
                  "--overwrite"]  # every repetition writes into the same folder
     for s in a.sets:
         agglo_cmd += ["--set", s]
+    if a.format:
+        agglo_cmd += ["--format", a.format]
     lmp_cmd = [lmp_case.LMP, "-in", "in.collision", "-log", "log.lammps", "-screen", "none", "-nocite"]
     env = dict(os.environ, OMP_NUM_THREADS="1")
 
