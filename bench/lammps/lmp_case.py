@@ -234,36 +234,69 @@ def classify(atoms, n_agg, delta_break):
             "fragments": frags, "ambiguous_pairs": ambiguous}
 
 
-def run_lammps(setup, speed, workdir, thermo_every=0, extra_time=0.0):
-    """One LAMMPS collision run; returns the classification plus run info."""
+def write_run(setup, speed, workdir, thermo_every=0, extra_time=0.0, dump="end.dump"):
+    """Writes workdir/in.collision of one run; returns (contact step, steps)."""
     os.makedirs(workdir, exist_ok=True)
     n_contact = setup.contact_steps(speed)
     n_after = math.ceil((setup.after_contact + extra_time) / setup.dt - 1e-9)
-    nsteps = n_contact + n_after
-    dump = os.path.join(workdir, "end.dump")
-    inp = os.path.join(workdir, "in.collision")
-    with open(inp, "w") as f:
-        f.write(setup.lammps_input(speed, nsteps, "end.dump", thermo_every))
-    proc = subprocess.run([LMP, "-in", "in.collision", "-log", "log.lammps", "-screen", "none", "-nocite"],
-                          cwd=workdir, capture_output=True, text=True)
-    if proc.returncode != 0 or not os.path.exists(dump):
-        tail = open(os.path.join(workdir, "log.lammps")).read()[-2000:] if os.path.exists(
-            os.path.join(workdir, "log.lammps")) else proc.stderr
-        raise RuntimeError(f"lmp failed (rc {proc.returncode}) in {workdir}:\n{tail}")
+    with open(os.path.join(workdir, "in.collision"), "w") as f:
+        f.write(setup.lammps_input(speed, n_contact + n_after, dump, thermo_every))
+    return n_contact, n_contact + n_after
+
+
+def lammps_failed(proc, workdir):
+    log = os.path.join(workdir, "log.lammps")
+    tail = open(log).read()[-2000:] if os.path.exists(log) else proc.stderr
+    return RuntimeError(f"lmp failed (rc {proc.returncode}) in {workdir}:\n{tail}")
+
+
+def collect(setup, speed, workdir, n_contact, nsteps):
+    """Classification of the end state of one run plus run info (its log.lammps and end.dump in workdir)."""
     loop = None
     for l in open(os.path.join(workdir, "log.lammps")):
         if l.startswith("Loop time of"):
             loop = float(l.split()[3])
-    res = classify(read_dump(dump), len(setup.pos), setup.delta_pulloff)
+    res = classify(read_dump(os.path.join(workdir, "end.dump")), len(setup.pos), setup.delta_pulloff)
     res.update({"speed_m_per_s": speed, "steps": nsteps, "contact_step": n_contact, "dt_s": setup.dt,
                 "lammps_loop_time_s": loop})
     return res
 
 
-def run_decided(setup, speed, workdir, thermo_every=0):
-    """Like agglo: extend the run (by time.extension, up to time.max_extensions) while undecided."""
+def run_lammps(setup, speed, workdir, thermo_every=0, extra_time=0.0):
+    """One LAMMPS collision run; returns the classification plus run info."""
+    n_contact, nsteps = write_run(setup, speed, workdir, thermo_every, extra_time)
+    proc = subprocess.run([LMP, "-in", "in.collision", "-log", "log.lammps", "-screen", "none", "-nocite"],
+                          cwd=workdir, capture_output=True, text=True)
+    if proc.returncode != 0 or not os.path.exists(os.path.join(workdir, "end.dump")):
+        raise lammps_failed(proc, workdir)
+    return collect(setup, speed, workdir, n_contact, nsteps)
+
+
+def run_lammps_many(setup, speeds, workdirs):
+    """Runs of several speeds in one lmp process (one start-up, ~0.15 s of CPU, instead of one per speed):
+    a batch input in workdirs[0] that, per run, logs to its workdir's log.lammps, includes its in.collision
+    (end.dump written there) and clears LAMMPS. Each result equals run_lammps' for that speed and workdir."""
+    runs, batch = [], []
+    for v, wd in zip(speeds, workdirs):
+        wd = os.path.abspath(wd)
+        runs.append((v, wd) + write_run(setup, v, wd, dump=os.path.join(wd, "end.dump")))
+        batch += [f"log {os.path.join(wd, 'log.lammps')}", f"include {os.path.join(wd, 'in.collision')}", "clear"]
+    with open(os.path.join(runs[0][1], "in.batch"), "w") as f:
+        f.write("\n".join(batch) + "\n")
+    proc = subprocess.run([LMP, "-in", "in.batch", "-log", "none", "-screen", "none", "-nocite"],
+                          cwd=runs[0][1], capture_output=True, text=True)
+    for v, wd, n_contact, nsteps in runs:
+        if proc.returncode != 0 or not os.path.exists(os.path.join(wd, "end.dump")):
+            raise lammps_failed(proc, wd)
+    return [collect(setup, v, wd, n_contact, nsteps) for v, wd, n_contact, nsteps in runs]
+
+
+def run_decided(setup, speed, workdir, thermo_every=0, first=None):
+    """Like agglo: extend the run (by time.extension, up to time.max_extensions) while undecided. first: the
+    result of the run without extension when already made (run_lammps_many)."""
     for ext in range(setup.max_extensions + 1):
-        res = run_lammps(setup, speed, workdir, thermo_every, ext * setup.extension)
+        res = first if ext == 0 and first is not None else run_lammps(setup, speed, workdir, thermo_every,
+                                                                       ext * setup.extension)
         res["extensions"] = ext
         if not res["undecided"]:
             break

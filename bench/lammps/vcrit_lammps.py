@@ -26,8 +26,15 @@ def find_vcrit(setup, workdir, parallel=2, log=print):
         for v in speeds:
             dirs.append(os.path.join(workdir, f"run{counter[0]:03d}"))
             counter[0] += 1
+        # the speeds in `parallel` batches, each one lmp process (lmp_case.run_lammps_many), then the
+        # undecided ones extended one by one
+        chunks = [(speeds[k::parallel], dirs[k::parallel]) for k in range(min(parallel, len(speeds)))]
         with ThreadPoolExecutor(max_workers=parallel) as ex:
-            res = list(ex.map(lambda a: lmp_case.run_decided(setup, a[0], a[1]), zip(speeds, dirs)))
+            firsts = list(ex.map(lambda c: lmp_case.run_lammps_many(setup, *c), chunks))
+        by_dir = {d: r for c, rs in zip(chunks, firsts) for d, r in zip(c[1], rs)}
+        with ThreadPoolExecutor(max_workers=parallel) as ex:
+            res = list(ex.map(lambda a: lmp_case.run_decided(setup, a[0], a[1], first=by_dir[a[1]]),
+                              zip(speeds, dirs)))
         for r in res:
             log(f"  LAMMPS v = {r['speed_m_per_s']:.6f} m/s -> "
                 f"{'broken' if r['broken'] else ('undecided' if r['undecided'] else 'not broken')}")
