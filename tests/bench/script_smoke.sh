@@ -19,7 +19,7 @@ expect() {  # a regular expression (grep -E) the output must match
   grep -Eq -- "$1" "$log" || { cat "$log"; echo "FAIL: bench/$name.sh printed no line matching: $1"; exit 1; }
 }
 # LAMMPS (bench/lammps/), one process without mpirun each: OpenMPI starts it without its orted daemon and
-# with the self transport only (0.15 instead of 0.21 s of CPU per lmp process; the scripts start 5 to 7).
+# with the self transport only (0.15 instead of 0.21 s of CPU per lmp process; the scripts start 1 to 3).
 # Not for mpirun, whose ranks need the shared-memory transport.
 lammps_singleton() { export OMPI_MCA_ess_singleton_isolated=1 OMPI_MCA_btl=self OMPI_MCA_pml=ob1; }
 expect_file() {
