@@ -54,6 +54,10 @@ case $name in
     BUILD=$BUILD run "$T/out"
     expect '^ +1000 +[0-9]+ +[0-9]+ +[0-9]+ +[0-9.]+x +[0-9.]+x$'
     expect '^threads, N = 1000: wall [0-9.]+ s on 1, [0-9.]+ s on 2 -> speed-up [0-9.]+x$' ;;
+  charged_aggregate_wall)
+    run "$AGGLO" "$T/out"
+    expect '^held-force error at the [0-9]+ measured solves: largest [0-9.e+-]+, mean [0-9.e+-]+'
+    expect '^extrapolated to 1 ms after contact' ;;
   dsmc_migration)
     run "$AGGLO" "$T/out"
     for ax in x y z; do expect "^  $ax-slabs, K = 256 \(width [0-9.e+-]+ mm\): [0-9]+ of [0-9]+ samples change slab"; done ;;
