@@ -1,6 +1,5 @@
 #include "agglo/impact/intact.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -83,33 +82,70 @@ IntactBody agglomerate_body(const dem::Particles& p, std::size_t n_agg, const st
   return b;
 }
 
-// Condition 4: the tensions G_c (> 0 pulling the pair together) whose pair forces give the electrostatic
-// forces on the primaries, by least squares; false when the residual is too large.
-bool intact_pair_loads(const dem::Particles& p, std::size_t n_agg, const std::vector<const dem::Pair*>& contacts,
-                       const std::vector<Vec3>& force, std::vector<double>& loads) {
-  const auto rows = static_cast<Eigen::Index>(3 * n_agg), cols = static_cast<Eigen::Index>(contacts.size());
-  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(rows, cols);
-  Eigen::VectorXd f(rows);
-  double fmax = 0.0;
-  for (std::size_t k = 0; k < n_agg; ++k) {
-    for (int d = 0; d < 3; ++d) f(static_cast<Eigen::Index>(3 * k + d)) = force[k][d];
-    fmax = std::max(fmax, norm(force[k]));
-  }
-  loads.assign(contacts.size(), 0.0);
-  if (!(fmax > 0.0)) return true;
-  for (Eigen::Index c = 0; c < cols; ++c) {
-    const auto& pr = *contacts[static_cast<std::size_t>(c)];
-    const Vec3 e = (p.x[pr.j] - p.x[pr.i]) / norm(p.x[pr.j] - p.x[pr.i]);  // i -> j: the pull on i
-    for (int d = 0; d < 3; ++d) {
-      a(3 * pr.i + d, c) = e[d];
-      a(3 * pr.j + d, c) = -e[d];
+// Solves M x = b in place for a symmetric matrix M (n x n, row-major) by Cholesky, M = L L^T; false when
+// M is not positive definite (a pivot <= 1e-12 of the largest diagonal entry: a rank-deficient system).
+bool cholesky_solve(std::vector<double>& m, std::vector<double>& b, std::size_t n) {
+  double dmax = 0.0;
+  for (std::size_t i = 0; i < n; ++i) dmax = std::max(dmax, m[i * n + i]);
+  for (std::size_t j = 0; j < n; ++j) {
+    double d = m[j * n + j];
+    for (std::size_t k = 0; k < j; ++k) d -= m[j * n + k] * m[j * n + k];
+    if (!(d > 1e-12 * dmax)) return false;
+    m[j * n + j] = std::sqrt(d);
+    for (std::size_t i = j + 1; i < n; ++i) {
+      double v = m[i * n + j];
+      for (std::size_t k = 0; k < j; ++k) v -= m[i * n + k] * m[j * n + k];
+      m[i * n + j] = v / m[j * n + j];
     }
   }
-  const Eigen::VectorXd g = a.completeOrthogonalDecomposition().solve(f);
-  const Eigen::VectorXd res = a * g - f;
+  for (std::size_t i = 0; i < n; ++i) {  // L y = b
+    for (std::size_t k = 0; k < i; ++k) b[i] -= m[i * n + k] * b[k];
+    b[i] /= m[i * n + i];
+  }
+  for (std::size_t i = n; i-- > 0;) {  // L^T x = y
+    for (std::size_t k = i + 1; k < n; ++k) b[i] -= m[k * n + i] * b[k];
+    b[i] /= m[i * n + i];
+  }
+  return true;
+}
+
+// Condition 4: the tensions G_c (> 0 pulling the pair together) whose pair forces F_k = sum_c G_c e_c give
+// the electrostatic forces on the primaries, by least squares through the normal equations
+// (E^T E) G = E^T F (E the 3 n_agg x n_c matrix of the contact directions, +e_c on i and -e_c on j, so
+// (E^T E)_cd = s_cd e_c . e_d over the shared sphere, s_cd = +-1); false when the residual is too large or
+// the contact lines are linearly dependent (not decided; a clique's are independent unless degenerate).
+bool intact_pair_loads(const dem::Particles& p, std::size_t n_agg, const std::vector<const dem::Pair*>& contacts,
+                       const std::vector<Vec3>& force, std::vector<double>& loads) {
+  double fmax = 0.0;
+  for (std::size_t k = 0; k < n_agg; ++k) fmax = std::max(fmax, norm(force[k]));
+  const std::size_t nc = contacts.size();
+  loads.assign(nc, 0.0);
+  if (!(fmax > 0.0)) return true;
+  std::vector<Vec3> e(nc);
+  for (std::size_t c = 0; c < nc; ++c) {
+    const auto& pr = *contacts[c];
+    e[c] = (p.x[pr.j] - p.x[pr.i]) / norm(p.x[pr.j] - p.x[pr.i]);  // i -> j: the pull on i
+  }
+  // column c of E: +e_c at sphere i, -e_c at sphere j
+  const auto entry = [&](std::size_t c, std::size_t k) {
+    return k == contacts[c]->i ? 1.0 : k == contacts[c]->j ? -1.0 : 0.0;
+  };
+  std::vector<double> m(nc * nc, 0.0);
+  for (std::size_t c = 0; c < nc; ++c) {
+    loads[c] = dot(e[c], force[contacts[c]->i]) - dot(e[c], force[contacts[c]->j]);
+    for (std::size_t d = 0; d < nc; ++d) {
+      const std::size_t i = contacts[d]->i, j = contacts[d]->j;  // the spheres column d is nonzero on
+      m[c * nc + d] = (entry(c, i) * entry(d, i) + entry(c, j) * entry(d, j)) * dot(e[c], e[d]);
+    }
+  }
+  if (!cholesky_solve(m, loads, nc)) return false;
+  std::vector<Vec3> fit(n_agg);
+  for (std::size_t c = 0; c < nc; ++c) {
+    fit[contacts[c]->i] += loads[c] * e[c];
+    fit[contacts[c]->j] -= loads[c] * e[c];
+  }
   for (std::size_t k = 0; k < n_agg; ++k)
-    if (res.segment(static_cast<Eigen::Index>(3 * k), 3).norm() > kPairResidual * fmax) return false;
-  for (Eigen::Index c = 0; c < cols; ++c) loads[static_cast<std::size_t>(c)] = g(c);
+    if (norm(fit[k] - force[k]) > kPairResidual * fmax) return false;
   return true;
 }
 
@@ -171,21 +207,21 @@ IntactBound contact_count_bound(const dem::DemSystem& sys, const std::vector<std
 // angular momentum L about the centre of mass (spins included) and the inertia tensor I of the clique as
 // a rigid body; eps bounds the growth of I by the contact deformations (extent margin `grow`) [J].
 double locked_rotation(const dem::Particles& p, std::size_t n_agg, const IntactBody& agg, double grow) {
-  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d l = Eigen::Vector3d::Zero();
+  std::vector<double> inertia(9, 0.0), l(3, 0.0);
   double rho = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < n_agg; ++k) {
     const Vec3 r = p.x[k] - agg.x, h = p.m[k] * cross(r, p.v[k] - agg.v) + p.I[k] * p.w[k];
-    const Eigen::Vector3d re(r.x, r.y, r.z);
-    inertia += p.m[k] * (re.squaredNorm() * Eigen::Matrix3d::Identity() - re * re.transpose()) +
-               p.I[k] * Eigen::Matrix3d::Identity();
-    l += Eigen::Vector3d(h.x, h.y, h.z);
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) inertia[3 * a + b] -= p.m[k] * r[a] * r[b];
+      inertia[4 * a] += p.m[k] * norm2(r) + p.I[k];
+      l[a] += h[a];
+    }
     rho = std::min(rho, norm(r));
   }
   const double keep = rho / (rho + grow);
-  const auto lu = inertia.fullPivLu();
-  if (n_agg < 2 || !lu.isInvertible()) return 0.0;
-  return 0.5 * keep * keep * l.dot(lu.solve(l));
+  std::vector<double> x = l;  // I^-1 L
+  if (n_agg < 2 || !cholesky_solve(inertia, x, 3)) return 0.0;
+  return 0.5 * keep * keep * (l[0] * x[0] + l[1] * x[1] + l[2] * x[2]);
 }
 
 // With electrostatics (intact.hpp, bound B): a clique under constant pair loads.

@@ -26,7 +26,8 @@
 //     up to the contact deformations, the shape is rigid, no contact can form among the primaries and a
 //     fragment needs some contact stretched to x_b;
 //  3. the electrostatic forces on the primaries are internal pair forces: the least-squares tensions G_c
-//     along the contact lines (F_k = sum_c G_c e_c) reproduce them within 1e-3 of the largest. Over the
+//     along the contact lines (F_k = sum_c G_c e_c; normal equations, unique since a clique's contact
+//     lines are independent, else not decided) reproduce them within 1e-3 of the largest. Over the
 //     few delta_C a contact moves before it breaks they act as constant loads L_c (first order; the
 //     gap of the electrostatic regularisation, g_min r, is an order of magnitude larger);
 // then with psi_c, the loaded potential and B_c its barrier (contact_barrier.hpp),
