@@ -359,7 +359,7 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
       break;
     }
   }
-  checkpoints.at_step(true);  // the state at the interruption or at the end
+  if (hooks.checkpoint_at_end || !obs.interrupted.empty()) checkpoints.at_step(true);  // where the run stops
   obs.final = count(eng.particles(), eng.settings().motion.domain.volume());
   obs.samples = eng.particles().size();
   if (obs.interrupted.empty()) obs.steps = nsteps;

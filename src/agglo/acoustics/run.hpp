@@ -71,6 +71,9 @@ struct RunHooks {
   // run is cancelled (before it returns) and at its end. None when empty or the interval is 0.
   double checkpoint_interval = 0.0;
   std::function<void(std::uint64_t step, double t, const std::string& payload)> checkpoint;
+  // false: no payload at the end of a run that was not cancelled (the caller would discard it; its
+  // serialisation doubled the peak memory of a large run, docs/scaling.md).
+  bool checkpoint_at_end = true;
   // Continue from this payload (io::read_checkpoint) instead of t = 0; null = from the start.
   io::CheckpointReader* resume = nullptr;
 };

@@ -16,6 +16,7 @@ CheckpointIO checkpoint_io(const Command& cmd, const Config& cfg, const OutputDi
   // stops), and the forced write at the end of a run that was not cancelled is skipped.
   const bool periodic = ctx.checkpoint_interval > 0.0;
   res.interval = periodic ? ctx.checkpoint_interval : std::numeric_limits<double>::infinity();
+  res.periodic = periodic;
   const CancelToken* cancel = ctx.cancel;
   res.write = [header, &out, periodic, cancel](std::uint64_t step, double t, const std::string& payload) {
     if (!periodic && !(cancel && cancel->cancelled())) return;

@@ -20,6 +20,7 @@ struct CheckpointIO {
   // once the run is cancelled (the forced write where it stops).
   std::function<void(std::uint64_t step, double t, const std::string& payload)> write;
   double interval = 0.0;                        // [s] (--checkpoint; infinity without)
+  bool periodic = false;                        // --checkpoint given: the state at the end is written too
   std::optional<io::CheckpointReader> resume;   // the payload to continue from; empty: from the start
 };
 

@@ -50,6 +50,7 @@ class Acoustic final : public Command {
     auto ck = checkpoint_io(*this, cfg, out, ctx);  // --checkpoint, --resume (docs/restart.md)
     hooks.checkpoint_interval = ck.interval;
     hooks.checkpoint = ck.write;
+    hooks.checkpoint_at_end = ck.periodic;
     hooks.resume = ck.resume ? &*ck.resume : nullptr;
     const auto obs = acoustics::run_acoustic(c, hooks);
     writers::write_acoustic(out, obs, ctx.formats.csv);
