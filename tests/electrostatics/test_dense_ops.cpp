@@ -1,4 +1,4 @@
-// The spectral solver's dense kernels (spectral/dense_ops.hpp): gemv2, gemv2x2 and gemv2t, on AVX2 where the
+// The spectral solver's dense kernels (spectral/dense_ops.hpp): gemv2 and gemv2x2, on AVX2 where the
 // processor has it, give the two-lane reference kernels' results bit for bit, for every shape the
 // rotations and translations use (rows and columns from 0, columns not a multiple of four, leading
 // dimension above the columns, inputs with signed zeros and values of very different size).
@@ -44,12 +44,6 @@ TEST(DenseOps, KernelsAreBitwiseTheReference) {
       EXPECT_TRUE(dense_ops_same_bits(y, y_ref)) << rows << " x " << cols;
       EXPECT_TRUE(dense_ops_same_bits(y2, y2_ref)) << rows << " x " << cols;
       EXPECT_TRUE(dense_ops_same_bits(y, z)) << rows << " x " << cols;  // gemv2x2's first pair is gemv2's
-      // gemv2t: y (cols pairs) += A^T v (rows pairs), onto a y that is not zero
-      const auto v = dense_ops_random(2 * std::size_t(rows), rng);
-      std::vector<double> t = dense_ops_random(2 * std::size_t(cols), rng), t_ref = t;
-      sh::kern::gemv2t(A.data(), lda, rows, cols, v.data(), t.data());
-      sh::kern::gemv2t_reference(A.data(), lda, rows, cols, v.data(), t_ref.data());
-      EXPECT_TRUE(dense_ops_same_bits(t, t_ref)) << rows << " x " << cols;
       for (double v : z) nonzero += (v != 0.0 && v != 9.0);
       ++shapes;
     }

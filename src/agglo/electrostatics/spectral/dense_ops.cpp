@@ -88,48 +88,6 @@ __attribute__((noinline)) void gemv2x2_avx2(const double* A, int lda, int rows, 
   }
 }
 
-// y_k += a_k v over four columns from k: (a_k, a_k, a_k+1, a_k+1) and (a_k+2, ..) against v twice.
-inline __attribute__((always_inline)) __m256d dense_ops_axpy(__m256d y, __m256d a, __m256d v) {
-  return _mm256_add_pd(y, _mm256_mul_pd(a, v));
-}
-
-__attribute__((noinline)) void gemv2t_avx2(const double* A, int lda, int rows, int cols, const double* v, double* y) {
-  const int k4 = cols & ~3;
-  int r = 0;
-  for (; r + 2 <= rows; r += 2) {  // two rows per pass over y: each y_k still gets row r, then row r + 1
-    const double *a = A + static_cast<long>(r) * lda, *b = a + lda;
-    const __m128d wa = _mm_loadu_pd(v + 2 * r), wb = _mm_loadu_pd(v + 2 * r + 2);
-    const __m256d va = _mm256_set_m128d(wa, wa), vb = _mm256_set_m128d(wb, wb);
-    for (int k = 0; k < k4; k += 4) {
-      const __m256d ra = _mm256_loadu_pd(a + k), rb = _mm256_loadu_pd(b + k);
-      __m256d y01 = _mm256_loadu_pd(y + 2 * k), y23 = _mm256_loadu_pd(y + 2 * k + 4);
-      y01 = dense_ops_axpy(y01, _mm256_permute4x64_pd(ra, 0x50), va);  // row r, then row r + 1
-      y01 = dense_ops_axpy(y01, _mm256_permute4x64_pd(rb, 0x50), vb);
-      y23 = dense_ops_axpy(y23, _mm256_permute4x64_pd(ra, 0xFA), va);
-      y23 = dense_ops_axpy(y23, _mm256_permute4x64_pd(rb, 0xFA), vb);
-      _mm256_storeu_pd(y + 2 * k, y01);
-      _mm256_storeu_pd(y + 2 * k + 4, y23);
-    }
-    for (int k = k4; k < cols; ++k) {
-      const __m128d t = _mm_add_pd(_mm_loadu_pd(y + 2 * k), _mm_mul_pd(_mm_set1_pd(a[k]), wa));
-      _mm_storeu_pd(y + 2 * k, _mm_add_pd(t, _mm_mul_pd(_mm_set1_pd(b[k]), wb)));
-    }
-  }
-  for (; r < rows; ++r) {
-    const double* a = A + static_cast<long>(r) * lda;
-    const __m128d wa = _mm_loadu_pd(v + 2 * r);
-    const __m256d va = _mm256_set_m128d(wa, wa);
-    for (int k = 0; k < k4; k += 4) {
-      const __m256d ra = _mm256_loadu_pd(a + k);
-      _mm256_storeu_pd(y + 2 * k, dense_ops_axpy(_mm256_loadu_pd(y + 2 * k), _mm256_permute4x64_pd(ra, 0x50), va));
-      _mm256_storeu_pd(y + 2 * k + 4,
-                       dense_ops_axpy(_mm256_loadu_pd(y + 2 * k + 4), _mm256_permute4x64_pd(ra, 0xFA), va));
-    }
-    for (int k = k4; k < cols; ++k)
-      _mm_storeu_pd(y + 2 * k, _mm_add_pd(_mm_loadu_pd(y + 2 * k), _mm_mul_pd(_mm_set1_pd(a[k]), wa)));
-  }
-}
-
 const bool dense_ops_avx2 = __builtin_cpu_supports("avx2");
 
 }  // namespace
@@ -156,13 +114,6 @@ void gemv2x2(const double* A, int lda, int rows, int cols, const double* x, cons
   if (dense_ops_avx2 && cols <= kDenseOpsMaxCols) return gemv2x2_avx2(A, lda, rows, cols, x, x2, y, y2);
 #endif
   gemv2x2_reference(A, lda, rows, cols, x, x2, y, y2);
-}
-
-void gemv2t(const double* A, int lda, int rows, int cols, const double* v, double* y) {
-#if defined(AGGLO_DENSE_OPS_AVX2)
-  if (dense_ops_avx2) return gemv2t_avx2(A, lda, rows, cols, v, y);
-#endif
-  gemv2t_reference(A, lda, rows, cols, v, y);
 }
 
 }  // namespace agglo::es::sh::kern
