@@ -152,7 +152,7 @@ BENCHMARK_CAPTURE(product, fmm_stored_k2.5, std::string("fmm_stored"), 2.5)
     ->ArgNames({"N", "products"})->ArgsProduct({{10, 100, 200, 400, 1000}, {1, 6}})
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, dense_k2.5, std::string("dense"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)->Arg(2000)->Arg(3000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, fmm_k2.5, std::string("fmm"), 2.5)
     ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)->Arg(2000)->Arg(3000)

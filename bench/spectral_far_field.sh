@@ -17,7 +17,9 @@
 # between the smallest and the largest N of each far field.
 #   bench/spectral_far_field.sh [BUILD_DIR]     NS="100 200 400 1000", THREADS=1, REPS=3, ONLY=regex
 # ONLY selects benchmarks by name (e.g. ONLY='solve/fmm' for the fast far field alone; N = 2000 and 3000
-# are registered for fmm only).
+# are registered for the fmm solves and products and the dense kappa_p = 2.5 solve, so that
+# ONLY='solve/(dense|fmm)_k2.5' NS="100 200 400 1000 2000 3000" measures both growth exponents to N = 3000
+# in one run).
 #   SMOKE=1: the smoke test (ctest -L bench): NS=10 (registered for this), REPS=1, ONLY the solves and
 #   products of the dense and the fast far field at kappa_p = 2.5 (the others cost 0.3-3 s each even
 #   there); the same parsing, table and ratios (no growth exponent: one N).

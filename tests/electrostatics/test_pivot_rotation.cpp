@@ -62,7 +62,8 @@ TEST(PivotRotation, MatchesStoredBlocks) {
   EXPECT_LE(worst, 1e-12);
 }
 
-// Both directions of a pair in one pass: the same bits as two AxialTranslation::apply calls.
+// Both directions of a pair in one pass: the same bits as two AxialTranslation::apply calls, with the
+// source scalings computed in the call or kept from AxialTranslation::source_powers.
 TEST(PivotRotation, PairTranslationIsBitwiseTheTwoSingleOnes) {
   const int L = 47;
   sh::AxialTranslation T;
@@ -71,14 +72,19 @@ TEST(PivotRotation, PairTranslationIsBitwiseTheTwoSingleOnes) {
   const auto a = pivot_test_vector(L, rng), b = pivot_test_vector(L, rng);
   const int n = sh::ncoef(L);
   for (int M : {L, 25}) {
-    std::vector<double> x1(n, 0.25), x2(n, 0.25), y1(n, 0.25), y2(n, 0.25);
+    std::vector<double> x1(n, 0.25), x2(n, 0.25), y1(n, 0.25), y2(n, 0.25), z1(n, 0.25), z2(n, 0.25), powers;
     T.apply(L, M, 0.49, 0.3, +1, b.data(), x1.data());
     T.apply(L, M, 0.3, 0.49, -1, a.data(), x2.data());
     T.apply_pair(L, M, 0.49, 0.3, b.data(), a.data(), y1.data(), y2.data());
+    sh::AxialTranslation::source_powers(std::min(L, M), 0.49, 0.3, powers);
+    T.apply_pair(L, M, 0.49, 0.3, b.data(), a.data(), z1.data(), z2.data(), powers.data());
     for (int k = 0; k < n; ++k) {
       ASSERT_EQ(x1[k], y1[k]) << "M " << M << " coefficient " << k;
       ASSERT_EQ(x2[k], y2[k]) << "M " << M << " coefficient " << k;
+      ASSERT_EQ(x1[k], z1[k]) << "M " << M << " coefficient " << k;
+      ASSERT_EQ(x2[k], z2[k]) << "M " << M << " coefficient " << k;
     }
+    EXPECT_NE(x1[sh::idx(3, 2)], 0.25);  // the translation reached the output
   }
 }
 

@@ -4,12 +4,21 @@
 //   y = A x     for a row-major A (rows x cols) and two interleaved vectors x = (x1[k], x2[k]);
 //   y += A^T v  likewise (interleaved v and y).
 //   gemv2x2: two y = A x at once.
+// gemv2 and gemv2x2 (dense_ops.cpp) run four-lane AVX2 code where the processor has it (chosen at run
+// time), the same products and sums in the same order as the two-lane reference kernels below
+// (gemv2_reference, gemv2x2_reference; no FMA is enabled, so nothing is contracted): every result is the
+// reference's bit for bit (tests/electrostatics/test_dense_ops.cpp). The AVX2 code takes the columns
+// four at a time as the reference does (partial sums s0..s3 of columns k = 0, 1, 2, 3 mod 4), with the
+// duplicated matrix entries (a_k, a_k, a_k+2, a_k+2) and (a_k+1, a_k+1, a_k+3, a_k+3) loaded by vmovddup
+// against the vector pairs (x_k, x_k+2) and (x_k+1, x_k+3) reordered once per call: no shuffle in the
+// inner loop, half the floating-point instructions of the two-lane code, and two rows (gemv2) or two
+// vectors (gemv2x2) at a time for four independent sums.
 namespace agglo::es::sh::kern {
 
 typedef double v2d __attribute__((vector_size(16)));
 
 // y[2r], y[2r+1] = sum_k A[r*lda + k] * (x[2k], x[2k+1]),  r < rows
-inline void gemv2(const double* A, int lda, int rows, int cols, const double* x, double* y) {
+inline void gemv2_reference(const double* A, int lda, int rows, int cols, const double* x, double* y) {
   const v2d* X = reinterpret_cast<const v2d*>(x);
   for (int r = 0; r < rows; ++r) {
     const double* a = A + static_cast<long>(r) * lda;
@@ -28,9 +37,9 @@ inline void gemv2(const double* A, int lda, int rows, int cols, const double* x,
   }
 }
 
-// gemv2 for two pairs of vectors (x, y) and (x2, y2) sharing A: one pass over A, and each result the
+// gemv2_reference for two pairs of vectors (x, y) and (x2, y2) sharing A: one pass over A, and each result the
 // same bits as gemv2 gives it (the same four partial sums, added in the same order).
-inline void gemv2x2(const double* A, int lda, int rows, int cols, const double* x, const double* x2, double* y,
+inline void gemv2x2_reference(const double* A, int lda, int rows, int cols, const double* x, const double* x2, double* y,
                     double* y2) {
   const v2d* X = reinterpret_cast<const v2d*>(x);
   const v2d* Z = reinterpret_cast<const v2d*>(x2);
@@ -60,6 +69,12 @@ inline void gemv2x2(const double* A, int lda, int rows, int cols, const double* 
     y2[2 * r + 1] = t[1];
   }
 }
+
+// The reference kernels above, on AVX2 where the processor has it (same bits); has_avx2_kernels():
+// whether it does (and AGGLO_NO_AVX2 was not defined at build time).
+void gemv2(const double* A, int lda, int rows, int cols, const double* x, double* y);
+void gemv2x2(const double* A, int lda, int rows, int cols, const double* x, const double* x2, double* y, double* y2);
+bool has_avx2_kernels();
 
 // y[2k], y[2k+1] += sum_r A[r*lda + k] * (v[2r], v[2r+1]),  k < cols
 inline void gemv2t(const double* A, int lda, int rows, int cols, const double* v, double* y) {

@@ -61,15 +61,20 @@ void pivot_store(int l, int mc, const double* c, const double* s, bool add, doub
 
 // z rotation of orders 1..mc in place: forward (FrameRotation::to_frame: c' = c cos + s sin,
 // s' = -c sin + s cos) or its inverse (from_frame: c = c' cos - s' sin, s = c' sin + s' cos).
+// Orders of one parity q are contiguous in c and s (pivot_cpos, pivot_spos), so each parity is one run
+// from its first order m0 = 2 - q (the same arithmetic per order as one loop over m = 1..mc).
 void pivot_turn(int l, int mc, const double* cs, const double* sn, bool inverse, double* c, double* s) {
   const double sg = inverse ? -1.0 : 1.0;
-  for (int m = 1; m <= mc; ++m) {
-    const int pc = 2 * pivot_cpos(l, m), ps = 2 * pivot_spos(l, m);
-    for (int v = 0; v < 2; ++v) {
-      const double x = c[pc + v], y = s[ps + v];
-      c[pc + v] = x * cs[m] + sg * y * sn[m];
-      s[ps + v] = -sg * x * sn[m] + y * cs[m];
-    }
+  for (int q = 0; q < 2; ++q) {
+    const int m0 = 2 - q;
+    double* cp = c + 2 * pivot_cpos(l, m0);
+    double* sp = s + 2 * pivot_spos(l, m0);
+    for (int m = m0; m <= mc; m += 2, cp += 2, sp += 2)
+      for (int v = 0; v < 2; ++v) {
+        const double x = cp[v], y = sp[v];
+        cp[v] = x * cs[m] + sg * y * sn[m];
+        sp[v] = -sg * x * sn[m] + y * cs[m];
+      }
   }
 }
 

@@ -86,6 +86,9 @@ class SpectralSolver final : public Solver {
     bool pivot = false;  // rotate with P and the solver's pivot tables, else with R
     sh::FrameRotation R;
     sh::PivotRotation P;
+    // far_field = "fmm" (the near pairs only): the translation's source scalings
+    // (AxialTranslation::source_powers), kept instead of 2 (M + 1) std::pow calls per pair and product
+    std::vector<double> powers;
   };
   // alpha = M beta (sphere-sphere part)
   void matvec_M(const double* beta, double* alpha);
@@ -179,7 +182,7 @@ void SpectralSolver::pair_product(const Pair& pr, const double* beta, double* ou
   std::fill(out_i, out_i + np, 0.0);
   std::fill(out_k, out_k + np, 0.0);
   // source k seen from i sits at +t z; source i seen from k at -t z.
-  T_.apply_pair(pr.L, pr.M, pr.ui, pr.uk, bk, bi, ai, ak);
+  T_.apply_pair(pr.L, pr.M, pr.ui, pr.uk, bk, bi, ai, ak, pr.powers.empty() ? nullptr : pr.powers.data());
   if (pr.pivot)
     pr.P.from_frame2(pivot_, pr.L, pr.M, ai, ak, out_i, out_k);
   else
@@ -316,6 +319,7 @@ void SpectralSolver::build_pairs(const Problem& p) {
         pr.P.build(d, pr.L, pr.M);
       else
         pr.R.build(d, pr.L, pr.M);
+      if (far_) sh::AxialTranslation::source_powers(std::min(pr.L, pr.M), pr.ui, pr.uk, pr.powers);
     }
   }
 }

@@ -32,8 +32,9 @@ void AxialTranslation::prepare(int L) {
 namespace {
 // Scaled source of one order m (AxialTranslation::apply): x[2(n-m)], x[2(n-m)+1] = s_n v^(n+1) (beta_nm,
 // beta_n,-m), s_n = -1 for odd n when the source is at -t z.
-void translation_source(int Lmax, int m, double v, int sign, const double* in, double* x) {
-  double vp = std::pow(v, m + 1);
+// vp0 = v^(m+1) (std::pow).
+void translation_source(int Lmax, int m, double v, double vp0, int sign, const double* in, double* x) {
+  double vp = vp0;
   for (int n = m; n <= Lmax; ++n) {
     double s = (sign < 0 && (n & 1)) ? -vp : vp;
     x[2 * (n - m)] = s * in[idx(n, m)];
@@ -61,14 +62,22 @@ void AxialTranslation::apply(int Lmax, int Mmax, double u, double v, int sign, c
   alignas(16) double x[2 * 1024], y[2 * 1024];
   for (int m = 0; m <= std::min(Lmax, Mmax); ++m) {
     const int nn = Lmax - m + 1;
-    translation_source(Lmax, m, v, sign, in, x);
+    translation_source(Lmax, m, v, std::pow(v, m + 1), sign, in, x);
     kern::gemv2(&f_[off_[m]], L_ - m + 1, nn, nn, x, y);
     translation_target(Lmax, m, up, sign, y, out);
   }
 }
 
+void AxialTranslation::source_powers(int Mmax, double u, double v, std::vector<double>& powers) {
+  powers.resize(2 * std::size_t(Mmax + 1));
+  for (int m = 0; m <= Mmax; ++m) {
+    powers[2 * m] = std::pow(v, m + 1);
+    powers[2 * m + 1] = std::pow(u, m + 1);
+  }
+}
+
 void AxialTranslation::apply_pair(int Lmax, int Mmax, double u, double v, const double* in_b, const double* in_a,
-                                  double* out_a, double* out_b) const {
+                                  double* out_a, double* out_b, const double* powers) const {
   double pu[1024], pv[1024];
   double p = 1.0, q = 1.0;
   for (int j = 0; j <= Lmax; ++j) {
@@ -80,8 +89,8 @@ void AxialTranslation::apply_pair(int Lmax, int Mmax, double u, double v, const 
   alignas(16) double x[2 * 1024], y[2 * 1024], x2[2 * 1024], y2[2 * 1024];
   for (int m = 0; m <= std::min(Lmax, Mmax); ++m) {
     const int nn = Lmax - m + 1;
-    translation_source(Lmax, m, v, +1, in_b, x);
-    translation_source(Lmax, m, u, -1, in_a, x2);
+    translation_source(Lmax, m, v, powers ? powers[2 * m] : std::pow(v, m + 1), +1, in_b, x);
+    translation_source(Lmax, m, u, powers ? powers[2 * m + 1] : std::pow(u, m + 1), -1, in_a, x2);
     kern::gemv2x2(&f_[off_[m]], L_ - m + 1, nn, nn, x, x2, y, y2);
     translation_target(Lmax, m, pu, +1, y, out_a);
     translation_target(Lmax, m, pv, -1, y2, out_b);

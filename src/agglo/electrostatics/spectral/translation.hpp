@@ -22,9 +22,14 @@ class AxialTranslation {
   // Only frame orders |m| <= Mmax are translated.
   void apply(int Lmax, int Mmax, double u, double v, int sign, const double* in, double* out) const;
   // Both directions of a pair in one pass over the factors: out_a += apply(u, v, +1, in_b) and
-  // out_b += apply(v, u, -1, in_a), each the same bits as the two apply calls.
+  // out_b += apply(v, u, -1, in_a), each the same bits as the two apply calls. `powers` (optional): the
+  // source scalings v^(m+1), u^(m+1) of source_powers for orders m <= min(Lmax, Mmax), else computed here
+  // (std::pow, both ways: the same numbers).
   void apply_pair(int Lmax, int Mmax, double u, double v, const double* in_b, const double* in_a, double* out_a,
-                  double* out_b) const;
+                  double* out_b, const double* powers = nullptr) const;
+  // powers[2m] = v^(m+1), powers[2m+1] = u^(m+1) (std::pow), m = 0..Mmax: apply_pair's per-order
+  // source scalings, kept by a caller that translates the same pair many times.
+  static void source_powers(int Mmax, double u, double v, std::vector<double>& powers);
   // Smallest order M such that every m-block with m > M has operator-norm bound
   // (block size x largest entry, both directions) below tol: orders above M can be dropped.
   // Near contact the pair coupling is concentrated at small |m| around the pair axis.
