@@ -10,6 +10,12 @@
 
 #include "agglo/core/error.hpp"
 
+#if defined(__GNUC__) && !defined(__clang__)
+#define AGGLO_SORT_UNROLL4 _Pragma("GCC unroll 4")
+#else
+#define AGGLO_SORT_UNROLL4
+#endif
+
 namespace agglo::acoustics {
 
 namespace {
@@ -113,9 +119,12 @@ void Engine::sort_cells() {
   const std::size_t n = p_.size();
   const std::size_t nc = static_cast<std::size_t>(s_.motion.domain.num_cells());
   start_.assign(nc + 1, 0);
+  // (Unrolled: the loop overhead is a third of these loops' instructions; the same order of updates.)
+  AGGLO_SORT_UNROLL4
   for (std::size_t i = 0; i < n; ++i) ++start_[cell_of_[i] + 1];
   for (std::size_t c = 0; c < nc; ++c) start_[c + 1] += start_[c];
   fill_.assign(start_.begin(), start_.end() - 1);
+  AGGLO_SORT_UNROLL4
   for (std::size_t i = 0; i < n; ++i) order_[fill_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
 }
 
@@ -305,3 +314,4 @@ void Engine::collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::ve
 }  // namespace agglo::acoustics
 
 #undef AGGLO_AVX2_CLONES
+#undef AGGLO_SORT_UNROLL4
