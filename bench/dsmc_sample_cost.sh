@@ -16,6 +16,7 @@
 #   `git worktree remove OUT/before_src` when done), printed before/after.
 #   BEFORE_AGGLO=PATH: an agglo already built from REV (no rebuild). SCALES= (empty): parts 1-3 skipped.
 #   N_SOLID=8243, N_LIQUID=160: samples of the two populations at scale 1 (the case's).
+#   SELECTION=binned: every run with --set time.selection=binned (default: the case's, nanbu).
 #   SMOKE=1: the smoke test (ctest -L bench): SCALES="1 4", T1=1e-4, T2=2e-4 (2 and 4 steps), N_SOLID=824,
 #   N_LIQUID=16 without clones (sampling.min_samples_per_cell = 0); part 4 skipped
 #   unless CALLGRIND=1 (a callgrind run costs ~3 s even at 10 steps), BEFORE and BEFORE_AGGLO ignored (no
@@ -56,7 +57,8 @@ opts() {
  --set output.psd_times=[0.0] --set output.snapshot_times=[] --set output.efficiency_interval=$T1 \
  --set domain.length_y=$len --set domain.length_z=$len \
  --set domain.cells_y=$k --set domain.cells_z=$k \
- --set population.0.samples=$((N_SOLID * s)) --set population.1.samples=$((N_LIQUID * s)) ${smoke:-}"
+ --set population.0.samples=$((N_SOLID * s)) --set population.1.samples=$((N_LIQUID * s)) ${smoke:-} \
+ ${SELECTION:+--set time.selection=$SELECTION}"
 }
 
 if [ -n "$SCALES" ]; then

@@ -8,8 +8,10 @@
 #   j2_fixed  --threads 2 with AGGLO_THREAD_PROBE=off: two threads at every step (agglo before the probes)
 #   j2_spin   --threads 2 with GOMP_SPINCOUNT=300000, libgomp's own default (agglo before passive waits)
 # under /usr/bin/time (wall and user CPU of the whole process), the variants' order rotated each round.
-# Prints every run, then per case the median wall and user CPU of each variant and the ratios to j1
-# (> 1: slower than one thread).
+# Prints `uptime` before and after, every run (with the 1-min load average), then per case the median
+# wall and user CPU of each variant, the ratios to j1 (> 1: slower than one thread) and, for the two-thread
+# variants, the parallel efficiency wall(j1) / (2 wall(j2)) (1: perfect; 0.5: no gain; it means an
+# efficiency only on two otherwise idle cores, so the load average is printed with it).
 #   bench/dsmc_threads.sh [AGGLO] [OUT_DIR]     ROUNDS=3, T=0.1, VARIANTS="j1 j2 j2_fixed j2_spin",
 #   FLYASH_SAMPLES=8000
 # Timing only (never a test); on a shared machine only the ratios of one invocation mean anything.
@@ -32,6 +34,7 @@ ROUNDS=${ROUNDS:-3}
 T=${T:-0.1}
 VARIANTS=${VARIANTS:-"j1 j2 j2_fixed j2_spin"}
 mkdir -p "$OUT"
+echo "before: $(uptime)"
 table="$OUT/threads.tsv"
 printf 'case\tvariant\tround\twall_s\tuser_s\tload\n' > "$table"
 common=(--no-plots --quiet --format csv --overwrite --set time.end="$T" --set "output.psd_times=[0.0]"
@@ -59,6 +62,7 @@ for r in $(seq 1 "$ROUNDS"); do
     run seed002_baseline "$SRC/cases/seed002_baseline.toml" "$v" "$r" "${base_smoke[@]}"
   done
 done
+echo "after: $(uptime)"
 /usr/bin/python3 - "$table" <<'PY'
 import csv, statistics, sys
 rows = list(csv.DictReader(open(sys.argv[1]), delimiter="\t"))
@@ -73,5 +77,6 @@ for case in dict.fromkeys(r["case"] for r in rows):
     for v, (w, u) in med.items():
         div = lambda a, b: f"{a / b:.2f}x" if b > 0 else "-"  # - : j1 under 0.01 s
         ratio = f"  wall {div(w, base[0])}, user {div(u, base[1])} of j1" if base else ""
-        print(f"  {v:8s} wall {w:6.2f} s  user {u:6.2f} s{ratio}")
+        eff = f"; parallel efficiency {base[0] / (2 * w):.2f}" if base and v != "j1" and w > 0 else ""
+        print(f"  {v:8s} wall {w:6.2f} s  user {u:6.2f} s{ratio}{eff}")
 PY

@@ -11,10 +11,13 @@
 //  - Negative control: binned with its pair rate doubled (kernel coefficient x 2) against Nanbu FAILS the same
 //    comparison, so the comparison can see a rate error of that size.
 //  - Thread count does not change a binned run (counter-based random streams per cell and step).
+//  - Groups that follow moving samples hold the samples a full rebuild (their reference twin) puts in each class.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -22,6 +25,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include "agglo/acoustics/binned.hpp"
 #include "agglo/acoustics/diagnostics.hpp"
 #include "helpers.hpp"
 
@@ -304,4 +308,72 @@ TEST(Binned, BrownianWith1e5SamplesMatchesTheSectionalSolution) {
   std::printf("N(4 h): binned 1e5 samples %.6g, PartMC sectional %.6g, rel. diff %.3g %%\n", n, ref, 100 * (n / ref - 1));
   EXPECT_NEAR(n / ref, 1.0, 0.01);
   EXPECT_EQ(e.stats().violations, 0u);
+}
+
+// The groups that follow moving samples (GroupReuse::follow) against a full rebuild, their reference twin.
+// A moved population is split into two cells at x = L/2 and stepped once (groups built), then the split is
+// moved to x = 0.6 L (a tenth of the samples change cells) and stepped with follow, with collisions (a long
+// step). After it, each cell's groups must hold, class by class, the same samples as the groups a rebuild
+// of the end state makes; and some group must list its members out of index order (a rebuild lists them
+// in order: the follow path ran, appending the arrivals).
+TEST(Binned, FollowedGroupsAreThoseOfARebuild) {
+  Engine e = test::make_engine(acoustic_case("binned", 11));
+  while (e.time() < 0.002 - 1e-12) e.step();
+  SampleSet p = e.particles();
+  const double L = e.settings().motion.domain.L[0];
+  CollisionContext ctx;
+  ctx.kernel = &e.kernel();
+  ctx.outcomes = &e.settings().outcomes;
+  ctx.gas = &e.settings().motion.gas;
+  ctx.sound = &e.settings().motion.sound;
+  ctx.domain = e.settings().motion.domain;
+  ctx.dt = 2e-3;
+  ctx.seed = 11;
+  std::vector<std::uint32_t> cell_of(p.size()), local(p.size()), idx[2];
+  auto split = [&](double cut) {
+    idx[0].clear();
+    idx[1].clear();
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+      cell_of[i] = p.x[i] < cut ? 0 : 1;
+      idx[cell_of[i]].push_back(i);
+    }
+  };
+  BinnedGroups follow[2], rebuilt[2];
+  CollisionStats st;
+  split(0.5 * L);
+  for (std::uint32_t c = 0; c < 2; ++c)
+    binned_collide_cell(p, idx[c].data(), idx[c].size(), c, 1, ctx, st, local.data(), follow[c], GroupReuse::rebuild,
+                        cell_of.data());
+  const std::vector<std::uint32_t> before = cell_of;
+  split(0.6 * L);
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) changed += before[i] != cell_of[i] ? 1 : 0;
+  const std::uint64_t collisions = st.collisions;
+  for (std::uint32_t c = 0; c < 2; ++c)
+    binned_collide_cell(p, idx[c].data(), idx[c].size(), c, 2, ctx, st, local.data(), follow[c], GroupReuse::follow,
+                        cell_of.data());
+  std::printf("samples that changed cells: %zu of %zu; collisions in the followed step: %llu\n", changed, p.size(),
+              static_cast<unsigned long long>(st.collisions - collisions));
+  EXPECT_GT(changed, p.size() / 20);
+  EXPECT_GT(st.collisions, collisions);
+  ctx.dt = 0.0;  // the reference: a rebuild of the end state, without collisions
+  bool out_of_order = false;
+  for (std::uint32_t c = 0; c < 2; ++c) {
+    binned_collide_cell(p, idx[c].data(), idx[c].size(), c, 3, ctx, st, local.data(), rebuilt[c], GroupReuse::rebuild,
+                        cell_of.data());
+    auto by_class = [&](const BinnedGroups& g) {
+      std::map<std::uint32_t, std::vector<std::uint32_t>> m;
+      for (std::size_t k = 0; k < g.count; ++k) {
+        std::vector<std::uint32_t> ids = g.groups[k].ids;
+        out_of_order = out_of_order || !std::is_sorted(ids.begin(), ids.end());
+        std::sort(ids.begin(), ids.end());
+        if (!ids.empty()) m[g.groups[k].key] = ids;
+      }
+      return m;
+    };
+    const auto f = by_class(follow[c]);
+    EXPECT_EQ(f, by_class(rebuilt[c])) << "cell " << c;
+    EXPECT_GT(f.size(), 3u);
+  }
+  EXPECT_TRUE(out_of_order);
 }

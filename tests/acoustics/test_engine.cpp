@@ -118,6 +118,19 @@ TEST(Engine, BitwiseTheSameWhileTheThreadCountSwitches) {
   expect_same_samples(a, b);
 }
 
+// The binned selection's groups follow the moving samples (binned.hpp); each cell reads the cell index of
+// the samples it held and only its own samples' states, so two threads give every bit of one (above the
+// parallel threshold: the first 32 steps are the probe at two threads).
+TEST(Engine, BinnedGroupsThatFollowTheSamplesAreTheSameWithTwoThreads) {
+  const std::string toml = mini_baseline(0.001, "selection = \"binned\"", 4000);
+  const Engine a = run_with_threads(toml, 1, 40);
+  const Engine b = run_with_threads(toml, 2, 40);
+  EXPECT_GE(a.particles().size(), 4096u);
+  EXPECT_GE(b.thread_choice().steps_at_max(), ThreadChoice::kProbeSteps);
+  EXPECT_GT(a.stats().collisions, 0u);
+  expect_same_samples(a, b);
+}
+
 TEST(Engine, ElasticReboundsConserveEnergyWithCompensation) {
   // Dry solids with e = 1, f_p = 0 rebound at every collision (v_cr,dry = 0). Unequal weights force
   // split-merge; kinetic energy + outstanding debts must stay equal to the initial energy.

@@ -1,6 +1,9 @@
 // Kernel values (docs/model.md §C.3, C.7.5) and the majorant property the Nanbu guard relies on.
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -165,4 +168,23 @@ TEST(Kernels, KeysReadNamesAndFormerSpellings) {
   EXPECT_TRUE(cfg.take_warnings().empty());
   cfg = agglo::Config::from_string("[kernels]\nmodel = \"orthokinetic\"\n", "case.toml");  // not standalone
   EXPECT_THROW(read(cfg), agglo::ConfigError);
+}
+
+// The minimum image's rounding (pair_distance) without libm: the value of std::nearbyint for halves (ties to
+// even), near-halves, both signs, large |q| (the libm branch) and random quotients; and the square of the
+// image d - L n (what pair_distance uses; -0 may become +0) the same bits as with std::nearbyint.
+TEST(Kernels, NearestIntegerIsNearbyint) {
+  std::vector<double> qs = {0.0, -0.0, 0.5, 1.5, 2.5, -0.5, -1.5, -2.5, 0.49999999999999994, -0.49999999999999994,
+                            0.5000000000000001, 3.4999999999999996, 1e15 + 0.5, -1e15 - 0.5, 0x1p51 + 1.0, 0x1p53,
+                            -0x1p60, 1e300};
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> u(-3.0, 3.0);
+  for (int k = 0; k < 10000; ++k) qs.push_back(u(gen));
+  for (const double q : qs) {
+    const double a = nearest_integer(q), b = std::nearbyint(q);
+    EXPECT_EQ(a, b) << q;
+    const double L = 0.0123, d = q * L, da = d - L * a, db = d - L * b;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(da * da), std::bit_cast<std::uint64_t>(db * db)) << q;
+  }
+  EXPECT_TRUE(std::isnan(nearest_integer(std::nan(""))));
 }

@@ -74,7 +74,7 @@ case $name in
     expect '^  break +dry collisions [0-9]+: stuck [0-9]+, bounced [0-9]+, broke [1-9][0-9]*$' ;;
   dsmc_threads)
     run "$AGGLO" "$T/out"
-    [ "$(grep -Ec '^  j2       wall +[0-9.]+ s  user +[0-9.]+ s  wall ([0-9.]+x|-), user ([0-9.]+x|-) of j1$' "$log")" = 2 ] ||
+    [ "$(grep -Ec '^  j2       wall +[0-9.]+ s  user +[0-9.]+ s  wall ([0-9.]+x|-), user ([0-9.]+x|-) of j1(; parallel efficiency [0-9.]+)?$' "$log")" = 2 ] ||
       { cat "$log"; echo "FAIL: bench/$name.sh: no j2 line for each case"; exit 1; } ;;
   lammps_compare)
     lammps_singleton

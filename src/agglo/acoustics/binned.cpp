@@ -34,7 +34,8 @@ bool same_bounds(const CellBounds& x, const CellBounds& y) {
 class BinnedCell {
  public:
   BinnedCell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell, std::uint64_t step,
-             const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of, BinnedGroups& g);
+             const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of, BinnedGroups& g,
+             const std::uint32_t* cell_of);
   void run(GroupReuse mode);
 
  private:
@@ -43,6 +44,8 @@ class BinnedCell {
   void insert(std::uint32_t a);
   void remove(std::uint32_t a);
   void build();
+  void follow();
+  void store_ids();
   void retighten();
   void set_bounds(std::size_t k);
   void moved(std::size_t i);
@@ -59,6 +62,8 @@ class BinnedCell {
   SampleSet& p;
   const std::uint32_t* idx;
   const std::size_t n;
+  const std::uint64_t cell_;
+  const std::uint32_t* cell_of_;  // cell of every sample (moving runs), else nullptr
   const CollisionContext& ctx;
   CollisionStats& st;
   std::uint32_t* local_of;
@@ -82,8 +87,8 @@ class BinnedCell {
 
 BinnedCell::BinnedCell(SampleSet& p_, const std::uint32_t* idx_, std::size_t n_, std::uint64_t cell,
                        std::uint64_t step, const CollisionContext& ctx_, CollisionStats& st_, std::uint32_t* local_of_,
-                       BinnedGroups& g)
-    : p(p_), idx(idx_), n(n_), ctx(ctx_), st(st_), local_of(local_of_), K(*ctx_.kernel),
+                       BinnedGroups& g, const std::uint32_t* cell_of)
+    : p(p_), idx(idx_), n(n_), cell_(cell), cell_of_(cell_of), ctx(ctx_), st(st_), local_of(local_of_), K(*ctx_.kernel),
       Vc(ctx_.domain.cell_volume()),
       rng(ctx_.seed, 0x200000000ULL + cell, step), events(p_, idx_, n_, ctx_, st_, rng), need_r(K.needs_distance()),
       excl(K.settings().exclude_same_population), nm(K.mechanism_count()), G(g), groups(g.groups), group_of(g.group_of),
@@ -161,6 +166,43 @@ void BinnedCell::build() {
     if (p.w[idx[a]] > 0.0) insert(a);
   }
   for (std::size_t k = 0; k < G.count; ++k) set_bounds(k);
+}
+
+// The groups of the previous step carried over to this step's list: members still in this cell (by their
+// stored sample indices) at their new local positions, the live samples that arrived in the group of their
+// class (opened if the cell has none), bounds from the members. Classes change only in collisions, which
+// regroup the samples they change, so every group holds the samples of its class, as after build().
+void BinnedCell::follow() {
+  group_of.assign(n, 0);
+  pos_of.assign(n, 0);
+  grouped.assign(n, 0);
+  for (std::uint32_t a = 0; a < n; ++a) local_of[idx[a]] = a;
+  for (std::uint32_t g = 0; g < G.count; ++g) {
+    BinnedGroup& b = groups[g];
+    b.members.clear();
+    for (const std::uint32_t i : b.ids) {
+      if (cell_of_[i] != cell_ || !(p.w[i] > 0.0)) continue;  // left the cell
+      const std::uint32_t a = local_of[i];
+      group_of[a] = g;
+      pos_of[a] = static_cast<std::uint32_t>(b.members.size());
+      b.members.push_back(a);
+      grouped[a] = 1;
+    }
+    G.size[g] = static_cast<double>(b.members.size());
+  }
+  for (std::uint32_t a = 0; a < n; ++a)
+    if (!grouped[a] && p.w[idx[a]] > 0.0) insert(a);
+  retighten();
+}
+
+// The members' sample indices at the end of a step (the next step's follow()).
+void BinnedCell::store_ids() {
+  for (std::size_t g = 0; g < G.count; ++g) {
+    BinnedGroup& b = groups[g];
+    b.ids.resize(b.members.size());
+    for (std::size_t k = 0; k < b.members.size(); ++k) b.ids[k] = idx[b.members[k]];
+  }
+  G.ids_valid = true;
 }
 
 // The bounds of the kept groups from their present members only (those of former members are dropped).
@@ -337,6 +379,7 @@ double BinnedCell::first_step_candidates() {
 // live samples per sub-step (the group pairs are processed one after the other in each sub-step).
 void BinnedCell::run(GroupReuse mode) {
   if (mode == GroupReuse::rebuild) build();
+  if (mode == GroupReuse::follow) follow();
   if (mode == GroupReuse::retighten) retighten();
   std::uint64_t live = 0;
   for (std::size_t g = 0; g < G.count; ++g) live += groups[g].members.size();
@@ -353,6 +396,7 @@ void BinnedCell::run(GroupReuse mode) {
   }
   G.last_collisions = st.collisions - before;
   G.has_history = true;
+  if (cell_of_) store_ids();
   st.subcycled += nsub > 1 ? 1 : 0;
   st.max_subcycles = std::max(st.max_subcycles, nsub);
 }
@@ -361,9 +405,10 @@ void BinnedCell::run(GroupReuse mode) {
 
 void binned_collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell,
                          std::uint64_t step, const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of,
-                         BinnedGroups& groups, GroupReuse mode) {
-  if (groups.group_of.size() != n) mode = GroupReuse::rebuild;
-  const bool reuse = mode != GroupReuse::rebuild;
+                         BinnedGroups& groups, GroupReuse mode, const std::uint32_t* cell_of) {
+  if (mode == GroupReuse::follow ? !cell_of || !groups.ids_valid : groups.group_of.size() != n)
+    mode = GroupReuse::rebuild;
+  const bool reuse = mode == GroupReuse::keep || mode == GroupReuse::retighten;
   std::size_t live = 0;
   if (reuse)
     for (std::size_t g = 0; g < groups.count; ++g) live += groups.groups[g].members.size();
@@ -371,9 +416,10 @@ void binned_collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, 
     for (std::size_t a = 0; a < n; ++a) live += p.w[idx[a]] > 0.0 ? 1 : 0;
   if (live < 2) {
     groups.group_of.clear();  // not reusable
+    groups.ids_valid = false;
     return;
   }
-  BinnedCell(p, idx, n, cell, step, ctx, st, local_of, groups).run(mode);
+  BinnedCell(p, idx, n, cell, step, ctx, st, local_of, groups, cell_of).run(mode);
 }
 
 }  // namespace agglo::acoustics

@@ -20,7 +20,10 @@
 // update and draw), so the majorant stays valid after rebounds and energy compensation; a candidate
 // whose ratio exceeds 1 is counted in CollisionStats::violations (must stay 0). Groups persist between
 // steps when the samples do not move (the engine's choice, GroupReuse), their bounds recomputed from the
-// present members every kRegroupEvery steps; they are rebuilt otherwise. Pairs of groups are processed
+// present members every kRegroupEvery steps. When the samples move, a cell's groups follow them: the
+// members that left the cell are dropped, the samples that arrived join the group of their class, and the
+// bounds are recomputed from the members (velocities change every step); the groups are then, as sets,
+// those a rebuild would make (classes change only in collisions), in another order. Pairs of groups are processed
 // one after the other (operator splitting, as PartMC's): a sample that changes group meets the groups
 // after its new one for the whole interval, so the error grows with the fraction of samples that
 // collide per interval (constant kernel, 1e5 samples: N(T) -2.8 % at 18 % per step). The step is
@@ -44,6 +47,7 @@ inline constexpr std::uint64_t kMaxFirstSubsteps = 64;  // first step: from the 
 
 struct BinnedGroup {
   std::vector<std::uint32_t> members;  // local positions in the cell's sample list
+  std::vector<std::uint32_t> ids;      // the members' sample indices at the end of the last step (follow)
   CellBounds cb;                       // bounds over the members (and former members: they only grow)
   std::uint32_t key = 0;               // size and weight class
 };
@@ -60,6 +64,7 @@ struct BinnedGroups {
   std::vector<std::uint64_t> slots;                // open addressing: (key + 1) << 32 | group, 0 = empty
   std::uint64_t last_collisions = 0;               // collisions of the cell's previous step (sub-step count)
   bool has_history = false;                        // last_collisions is known
+  bool ids_valid = false;                          // groups[].ids hold the last step's members (follow)
   // Majorants of group pairs (a <= b at e = a * cache_cap + b: their sum over the mechanisms at cache_sum[e],
   // each mechanism's at cache_m[e * mechanisms + m]), valid while both groups keep the versions stored with
   // them. Versions come from one counter that never repeats.
@@ -69,17 +74,22 @@ struct BinnedGroups {
   std::vector<std::uint64_t> cache_va, cache_vb;
 };
 
-// How a step treats the groups of the previous step: rebuild them (motion or a new sample order), keep
-// them, or keep them with bounds recomputed from their present members (every kRegroupEvery steps: the
-// bounds of samples that left a group would loosen it).
-enum class GroupReuse { rebuild, keep, retighten };
+// How a step treats the groups of the previous step: rebuild them (a new sample order, and every
+// kRegroupEvery steps of a moving run: empty groups are dropped), keep them (no motion), keep them with
+// bounds recomputed from their present members (no motion, every kRegroupEvery steps: the bounds of
+// samples that left a group would loosen it), or follow the moving samples (drop the members that left
+// the cell, add the samples that arrived, bounds from the members).
+enum class GroupReuse { rebuild, keep, retighten, follow };
 
-// Processes the samples listed in idx (all in one cell) for one collision step. With reuse, `groups` must
-// hold this cell's groups of the previous step over the same list; otherwise they are rebuilt. local_of
+// Processes the samples listed in idx (all in one cell) for one collision step. With keep or retighten,
+// `groups` must hold this cell's groups of the previous step over the same list; with follow, the groups
+// of the previous step whose ids were stored (cell_of given then); otherwise they are rebuilt. local_of
 // is scratch indexed by sample (at least p.size() entries; a cell writes only its own samples' entries,
-// and they must be left alone between steps that reuse the groups).
+// and they must be left alone between steps that reuse the groups). cell_of: the cell of every sample this
+// step (moving runs; nullptr without motion): with it the members' sample indices are stored at the end of
+// the step for the next step's follow, and follow drops the members whose cell is no longer this one.
 void binned_collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::uint64_t cell,
                          std::uint64_t step, const CollisionContext& ctx, CollisionStats& st, std::uint32_t* local_of,
-                         BinnedGroups& groups, GroupReuse mode);
+                         BinnedGroups& groups, GroupReuse mode, const std::uint32_t* cell_of = nullptr);
 
 }  // namespace agglo::acoustics

@@ -11,7 +11,7 @@ namespace {
 // The layouts below list every field; a field added to one of these types must be added here too.
 static_assert(sizeof(SampleSet) == 32 * sizeof(std::vector<double>), "SampleSet changed: update each_array");
 static_assert(sizeof(CellBounds) == 17 * sizeof(double), "CellBounds changed: update save_bounds");
-static_assert(sizeof(BinnedGroup) == sizeof(std::vector<std::uint32_t>) + sizeof(CellBounds) + 8,
+static_assert(sizeof(BinnedGroup) == 2 * sizeof(std::vector<std::uint32_t>) + sizeof(CellBounds) + 8,
               "BinnedGroup changed: update save_groups");
 static_assert(sizeof(BinnedGroups) == 11 * sizeof(std::vector<double>) + 5 * 8, "BinnedGroups changed: update save_groups");
 // Written as raw bytes: these hold 8-byte numbers only (no padding).
@@ -48,6 +48,7 @@ void save_groups(const BinnedGroups& g, io::CheckpointWriter& w) {
   w.u64(g.groups.size());
   for (const BinnedGroup& b : g.groups) {
     w.pod_vector(b.members);
+    w.pod_vector(b.ids);
     each_bound(b.cb, [&](double x) { w.f64(x); });
     w.boolean(b.cb.need_cbar);
     w.u64(b.key);
@@ -61,6 +62,7 @@ void save_groups(const BinnedGroups& g, io::CheckpointWriter& w) {
   w.pod_vector(g.slots);
   w.u64(g.last_collisions);
   w.boolean(g.has_history);
+  w.boolean(g.ids_valid);
   w.u64(g.clock);
   w.u64(g.cache_cap);
   w.pod_vector(g.cache_sum);
@@ -73,6 +75,7 @@ void load_groups(BinnedGroups& g, io::CheckpointReader& r) {
   g.groups.resize(r.u64());
   for (BinnedGroup& b : g.groups) {
     get(r, b.members);
+    get(r, b.ids);
     each_bound(b.cb, [&](double& x) { x = r.f64(); });
     b.cb.need_cbar = r.boolean();
     b.key = static_cast<std::uint32_t>(r.u64());
@@ -86,6 +89,7 @@ void load_groups(BinnedGroups& g, io::CheckpointReader& r) {
   get(r, g.slots);
   g.last_collisions = r.u64();
   g.has_history = r.boolean();
+  g.ids_valid = r.boolean();
   g.clock = r.u64();
   g.cache_cap = r.u64();
   get(r, g.cache_sum);

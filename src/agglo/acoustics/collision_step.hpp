@@ -56,9 +56,18 @@ struct CollisionContext {
 // sum, so it runs in SIMD lanes (AVX2 gathers where the processor has them, with GCC on x86-64).
 std::size_t count_positive(const double* v, const std::uint32_t* idx, std::size_t begin, std::size_t end);
 
+// std::nearbyint(q) in the default rounding mode (ties to even) without a call into libm: for |q| < 2^51,
+// q + 1.5 2^52 lies in [2^52, 2^53), where doubles are the integers, so the addition rounds q to the
+// nearest integer as nearbyint does and the subtraction is exact. (One difference: -0.3 gives +0, not -0;
+// d - L n is then the same number, d.) Larger |q| and NaN take std::nearbyint.
+inline double nearest_integer(double q) {
+  if (!(std::abs(q) < 0x1p51)) return std::nearbyint(q);
+  return (q + 0x1.8p52) - 0x1.8p52;
+}
+
 // Centre distance of samples i and j under the minimum-image convention of the periodic box [m].
 inline double pair_distance(const SampleSet& p, std::size_t i, std::size_t j, const Domain& D) {
-  const auto image = [](double d, double L) { return d - L * std::nearbyint(d / L); };
+  const auto image = [](double d, double L) { return d - L * nearest_integer(d / L); };
   const double dx = image(p.x[i] - p.x[j], D.L[0]), dy = image(p.y[i] - p.y[j], D.L[1]);
   const double dz = image(p.z[i] - p.z[j], D.L[2]);
   return std::sqrt(dx * dx + dy * dy + dz * dz);

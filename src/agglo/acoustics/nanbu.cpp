@@ -11,6 +11,12 @@
 #include "agglo/core/settings_acoustic.hpp"
 #include "agglo/core/rng.hpp"
 
+#if defined(__GNUC__) && !defined(__clang__)
+#define AGGLO_UNROLL4 _Pragma("GCC unroll 4")
+#else
+#define AGGLO_UNROLL4
+#endif
+
 namespace agglo::acoustics {
 
 CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t n, const Kernel& k,
@@ -31,6 +37,9 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
   double m_min = std::numeric_limits<double>::infinity();
   const double *vx = p.vx.data(), *vy = p.vy.data(), *vz = p.vz.data(), *w = p.w.data(), *d = p.d.data();
   const double *dl = p.dl.data(), *ccd = p.ccd.data(), *mass = p.mass.data();
+  // (Unrolled: the loop's own increment, compare and branch are a sixth of its instructions per sample;
+  // the operations and their order stay those of the plain loop.)
+  AGGLO_UNROLL4
   for (std::size_t a = 0; a < n; ++a) {
     const std::size_t i = idx[a];
     if (w[i] <= 0.0) continue;
@@ -51,6 +60,7 @@ CellBounds cell_bounds(const SampleSet& p, const std::uint32_t* idx, std::size_t
     cb.vref[2] = mz / sw;
   }
   const double rx = cb.vref[0], ry = cb.vref[1], rz = cb.vref[2];
+  AGGLO_UNROLL4
   for (std::size_t a = 0; a < n; ++a) {
     const std::size_t i = idx[a];
     if (w[i] <= 0.0) continue;
@@ -278,3 +288,5 @@ void collide_cell(SampleSet& p, const std::uint32_t* idx, std::size_t n, std::ui
 }
 
 }  // namespace agglo::acoustics
+
+#undef AGGLO_UNROLL4
