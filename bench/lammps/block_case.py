@@ -68,6 +68,25 @@ def lammps_input(data, dt, warm, steps):
         f"run {warm}", f"run {steps}", ""])
 
 
+def run_measured(lmp, work, infile):
+    """Runs LAMMPS on one core in `work`; the loop time of its last `run`: a dict of the JSON line."""
+    env = dict(os.environ, OMP_NUM_THREADS="1")
+    out = subprocess.run([lmp, "-in", infile, "-log", "none"], cwd=work, env=env, check=True,
+                         capture_output=True, text=True).stdout
+    loops = re.findall(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms", out)
+    cpu = re.findall(r"([0-9.]+)% CPU use", out)
+    if len(loops) < 2 or len(cpu) < 2:
+        sys.exit(f"{os.path.basename(sys.argv[0])}: no loop time in the LAMMPS output (see {work})")
+    wall, nsteps, natoms = float(loops[-1][0]), int(loops[-1][1]), int(loops[-1][2])
+    cpu_s = wall * float(cpu[-1]) / 100.0
+    neigh = re.findall(r"Total # of neighbors = (\d+)", out)
+    ke = re.findall(r"Step KinEng *\n *\d+ +\S+ *\n *\d+ +(\S+)", out)  # thermo_style custom step ke
+    extra = {"ke_end": float(ke[-1])} if ke else {}
+    return extra | {"code": "lammps", "n": natoms, "steps": nsteps, "loop_wall_s": wall, "loop_cpu_s": cpu_s,
+            "neighbors": int(neigh[-1]) if neigh else None,
+            "ns_per_particle_step": cpu_s / (natoms * nsteps) * 1e9}
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("n", type=int)
@@ -82,19 +101,7 @@ def main():
     write_data(os.path.join(work, "block.data"), a.n, spacing)
     with open(os.path.join(work, "in.block"), "w") as f:
         f.write(lammps_input("block.data", dt, a.warm, a.steps))
-    env = dict(os.environ, OMP_NUM_THREADS="1")
-    out = subprocess.run([a.lmp, "-in", "in.block", "-log", "none"], cwd=work, env=env, check=True,
-                         capture_output=True, text=True).stdout
-    loops = re.findall(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms", out)
-    cpu = re.findall(r"([0-9.]+)% CPU use", out)
-    if len(loops) < 2 or len(cpu) < 2:
-        sys.exit(f"block_case.py: no loop time in the LAMMPS output (see {work})")
-    wall, nsteps, natoms = float(loops[-1][0]), int(loops[-1][1]), int(loops[-1][2])
-    cpu_s = wall * float(cpu[-1]) / 100.0
-    neigh = re.findall(r"Total # of neighbors = (\d+)", out)
-    print(json.dumps({"code": "lammps", "n": natoms, "steps": nsteps, "loop_wall_s": wall, "loop_cpu_s": cpu_s,
-                      "neighbors": int(neigh[-1]) if neigh else None,
-                      "ns_per_particle_step": cpu_s / (natoms * nsteps) * 1e9}))
+    print(json.dumps(dict(run_measured(a.lmp, work, "in.block"), system="block")))
 
 
 if __name__ == "__main__":
