@@ -130,8 +130,10 @@ for system, n in sorted({(r["system"], r["n"]) for r in rows if r["code"] == "la
     med = statistics.median
     print(f"{system:>14} {n:>7} {rng(l):>11} {rng(f):>11} {rng(rf):>11} {med(l) / med(f):>11.2f}x "
           f"{med(rf) / med(f):>8.2f}x")
-for r in rows:  # the same system in both codes: translational kinetic energy after the last step
-    if r.get("system") == "aggregate_wall" and "ke_end" in r:
+seen = set()
+for r in rows:  # the same system in both codes: translational kinetic energy after the last step (first round)
+    if r.get("system") == "aggregate_wall" and "ke_end" in r and (r["code"], r.get("kernel")) not in seen:
+        seen.add((r["code"], r.get("kernel")))
         print(f"aggregate on the wall, {r['code']} {r.get('kernel', '')}: KE after the last step {r['ke_end']:.6e} J"
               + (f", {r['wall_contacts']:.0f} wall contacts, {r['contacts']:.0f} contacts" if r["code"] == "agglo" else ""))
 th = [r for r in rows if r["code"] == "agglo_threads"]
