@@ -108,17 +108,23 @@ long env_steps(const char* name, long fallback) {
 // The timed steps of BM_DemBlock (a function of its own: callgrind counts its instructions alone).
 [[gnu::noinline]] void block_steps(dem::DemSystem& sys, long steps) { sys.run(steps); }
 
-void BM_DemBlock(benchmark::State& state) {
-  const std::int64_t n = state.range(0);
+// AGGLO_BLOCK_WARM untimed steps, then AGGLO_BLOCK_STEPS timed steps of sys (kernel: state.range(1));
+// counters contacts, steps and ns_per_particle_step (CPU time / (particles x steps)).
+void time_block_steps(benchmark::State& state, dem::DemSystem& sys) {
   const long warm = env_steps("AGGLO_BLOCK_WARM", 200), steps = env_steps("AGGLO_BLOCK_STEPS", 1000);
-  auto sys = make_block(n);
   sys.set_reference_kernel(state.range(1) != 0);
   sys.run(warm);
   for (auto _ : state) block_steps(sys, steps);
   state.counters["contacts"] = sys.active_contacts();
   state.counters["steps"] = static_cast<double>(steps);
-  state.counters["ns_per_particle_step"] = benchmark::Counter(
-      static_cast<double>(n * steps) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_particle_step"] =
+      benchmark::Counter(static_cast<double>(sys.particles().size()) * static_cast<double>(steps) * 1e-9,
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void BM_DemBlock(benchmark::State& state) {
+  auto sys = make_block(state.range(0));
+  time_block_steps(state, sys);
 }
 BENCHMARK(BM_DemBlock)
     ->ArgsProduct({{1000, 10000, 100000}, {0, 1}})
@@ -179,21 +185,13 @@ dem::DemSystem make_aggregate_wall(std::int64_t primaries) {
 
 void BM_DemAggregateWall(benchmark::State& state) {
   const std::int64_t n = state.range(0);
-  const long warm = env_steps("AGGLO_BLOCK_WARM", 200), steps = env_steps("AGGLO_BLOCK_STEPS", 1000);
   auto sys = make_aggregate_wall(n);
-  sys.set_reference_kernel(state.range(1) != 0);
-  sys.run(warm);
-  for (auto _ : state) block_steps(sys, steps);
-  state.counters["contacts"] = sys.active_contacts();
+  time_block_steps(state, sys);
   int wall_contacts = 0;  // contacts of a primary with a wall sphere
   for (const auto& pr : sys.pairs()) wall_contacts += pr.state.active && (pr.i >= n) != (pr.j >= n);
-  const auto all = static_cast<double>(sys.particles().size());
-  state.counters["particles"] = all;
+  state.counters["particles"] = static_cast<double>(sys.particles().size());
   state.counters["wall_contacts"] = wall_contacts;
   state.counters["ke_end"] = sys.translational_kinetic_energy();  // [J], LAMMPS' ke after the same steps
-  state.counters["steps"] = static_cast<double>(steps);
-  state.counters["ns_per_particle_step"] = benchmark::Counter(
-      all * static_cast<double>(steps) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_DemAggregateWall)
     ->ArgsProduct({{100, 1000}, {0, 1}})
