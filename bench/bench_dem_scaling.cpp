@@ -108,9 +108,10 @@ long env_steps(const char* name, long fallback) {
 // The timed steps of BM_DemBlock (a function of its own: callgrind counts its instructions alone).
 [[gnu::noinline]] void block_steps(dem::DemSystem& sys, long steps) { sys.run(steps); }
 
-// AGGLO_BLOCK_WARM untimed steps, then AGGLO_BLOCK_STEPS timed steps of sys (kernel: state.range(1));
+// AGGLO_BLOCK_WARM untimed steps, then AGGLO_BLOCK_STEPS timed steps of sys (kernel: state.range(1)); its
+// name must not match callgrind's --toggle-collect='*block_steps*' (a nested match toggles collection off);
 // counters contacts, steps and ns_per_particle_step (CPU time / (particles x steps)).
-void time_block_steps(benchmark::State& state, dem::DemSystem& sys) {
+void timed_steps_of(benchmark::State& state, dem::DemSystem& sys) {
   const long warm = env_steps("AGGLO_BLOCK_WARM", 200), steps = env_steps("AGGLO_BLOCK_STEPS", 1000);
   sys.set_reference_kernel(state.range(1) != 0);
   sys.run(warm);
@@ -124,7 +125,7 @@ void time_block_steps(benchmark::State& state, dem::DemSystem& sys) {
 
 void BM_DemBlock(benchmark::State& state) {
   auto sys = make_block(state.range(0));
-  time_block_steps(state, sys);
+  timed_steps_of(state, sys);
 }
 BENCHMARK(BM_DemBlock)
     ->ArgsProduct({{1000, 10000, 100000}, {0, 1}})
@@ -186,7 +187,7 @@ dem::DemSystem make_aggregate_wall(std::int64_t primaries) {
 void BM_DemAggregateWall(benchmark::State& state) {
   const std::int64_t n = state.range(0);
   auto sys = make_aggregate_wall(n);
-  time_block_steps(state, sys);
+  timed_steps_of(state, sys);
   int wall_contacts = 0;  // contacts of a primary with a wall sphere
   for (const auto& pr : sys.pairs()) wall_contacts += pr.state.active && (pr.i >= n) != (pr.j >= n);
   state.counters["particles"] = static_cast<double>(sys.particles().size());

@@ -6,7 +6,8 @@
 #   - agglo: bench_dem_scaling's BM_DemBlock (the same WARM + STEPS), process CPU time, the fast path and
 #     the reference twin (DemSystem::set_reference_kernel), rounds interleaved with LAMMPS;
 #   - threads: agglo's fast path on OMP_NUM_THREADS=1 and 2 (OMP_WAIT_POLICY=passive), wall time, speed-up;
-#   - instructions (callgrind, block_steps() only) per particle-step of the fast path and the reference.
+#   - instructions (callgrind, block_steps() only) per particle-step of the fast path and the reference, of
+#     the block at CG_SIZE and of the aggregate on the wall.
 # The second system, a fractal aggregate of AGG_N primaries hitting a wall (BM_DemAggregateWall, built by
 # agglo's structure builder; its start state goes to bench/lammps/aggregate_wall_case.py, LAMMPS' wall is
 # fix wall/gran with the same jkr law), is run the same way, rounds interleaved.
@@ -107,12 +108,19 @@ if [ -n "$AGG_N" ]; then
   done
 fi
 if [ -n "$CG_SIZE" ]; then
-  for ref in 0 1; do
-    AGGLO_BLOCK_STEPS=$CG_STEPS AGGLO_BLOCK_WARM=$WARM OMP_NUM_THREADS=1 valgrind --tool=callgrind \
-        --callgrind-out-file="$OUT/callgrind.$ref" --collect-atstart=no --toggle-collect='*block_steps*' \
-        "$BUILD/bench_dem_scaling" --benchmark_filter="^BM_DemBlock/$CG_SIZE/$ref/" >/dev/null 2>"$OUT/callgrind.$ref.log"
-    ir=$(sed -n 's/.*Collected : \([0-9]*\).*/\1/p' "$OUT/callgrind.$ref.log")
-    echo "{\"code\": \"callgrind\", \"n\": $CG_SIZE, \"kernel\": \"$([ $ref = 1 ] && echo reference || echo fast)\", \"steps\": $CG_STEPS, \"instructions\": $ir}" | tee -a "$RES"
+  # the block at CG_SIZE, and the aggregate on its wall layer (AGG_N primaries) when it ran
+  for cg in "block BM_DemBlock/$CG_SIZE $CG_SIZE" ${AGG_N:+"aggregate_wall BM_DemAggregateWall/$AGG_N"}; do
+    set -- $cg
+    for ref in 0 1; do
+      log=$OUT/callgrind.$1.$ref.log
+      AGGLO_BLOCK_STEPS=$CG_STEPS AGGLO_BLOCK_WARM=$WARM OMP_NUM_THREADS=1 valgrind --tool=callgrind \
+          --callgrind-out-file="$OUT/callgrind.$1.$ref" --collect-atstart=no --toggle-collect='*block_steps*' \
+          "$BUILD/bench_dem_scaling" --benchmark_filter="^$2/$ref/" >/dev/null 2>"$log"
+      ir=$(sed -n 's/.*Collected : \([0-9]*\).*/\1/p' "$log")
+      # particles: the block's N; the aggregate's from its LAMMPS row (primaries + wall spheres)
+      np=${3:-$(grep -m1 '"system": "aggregate_wall"' "$RES" | sed -n 's/.*"n": \([0-9]*\).*/\1/p')}
+      echo "{\"code\": \"callgrind\", \"system\": \"$1\", \"n\": $np, \"kernel\": \"$([ $ref = 1 ] && echo reference || echo fast)\", \"steps\": $CG_STEPS, \"instructions\": $ir}" | tee -a "$RES"
+    done
   done
 fi
 
@@ -141,9 +149,10 @@ for n in sorted({r["n"] for r in th}):
     w = {r["threads"]: r["wall_s"] for r in th if r["n"] == n}
     if 1 in w and 2 in w:
         print(f"threads, N = {n}: wall {w[1]:.3f} s on 1, {w[2]:.3f} s on 2 -> speed-up {w[1] / w[2]:.2f}x")
-cg = {r["kernel"]: r for r in rows if r["code"] == "callgrind"}
-if "fast" in cg and "reference" in cg:
-    per = {k: v["instructions"] / (v["n"] * v["steps"]) for k, v in cg.items()}
-    print(f"callgrind, N = {cg['fast']['n']}, {cg['fast']['steps']} steps: instructions per particle-step "
-          f"fast {per['fast']:.0f}, reference {per['reference']:.0f} -> {per['reference'] / per['fast']:.3f}x")
+for system in ("block", "aggregate_wall"):
+    cg = {r["kernel"]: r for r in rows if r["code"] == "callgrind" and r.get("system", "block") == system}
+    if "fast" in cg and "reference" in cg:
+        per = {k: v["instructions"] / (v["n"] * v["steps"]) for k, v in cg.items()}
+        print(f"callgrind, {system}, N = {cg['fast']['n']}, {cg['fast']['steps']} steps: instructions per particle-step "
+              f"fast {per['fast']:.0f}, reference {per['reference']:.0f} -> {per['reference'] / per['fast']:.3f}x")
 EOF
