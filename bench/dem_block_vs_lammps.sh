@@ -14,7 +14,7 @@
 # Prints ns per particle-step of each code, LAMMPS / agglo and fast / reference ratios, per system.
 #
 #   bench/dem_block_vs_lammps.sh [OUT_DIR]            (default OUT_DIR: results/dem_block_vs_lammps)
-# Environment: BUILD (build folder with AGGLO_BUILD_BENCH=ON, default build-bench), SIZES (default
+# Environment: BUILD (build folder with AGGLO_BUILD_BENCH=ON, default build-bench), SIZES ("" skips the block; default
 # "10000 100000"; BM_DemBlock has 1000, 10000, 100000), ROUNDS (3), STEPS (1000), WARM (200),
 # THREADS ("1 2"; "" skips the thread comparison), CG_SIZE (10000; "" skips callgrind), CG_STEPS (20),
 # AGG_N (primaries of the aggregate on the wall, 1000 or 100; default 1000, "" skips that system),
@@ -30,7 +30,7 @@ if [ "${SMOKE:-0}" = 1 ]; then
   SIZES=${SIZES:-1000} ROUNDS=${ROUNDS:-1} STEPS=${STEPS:-20} WARM=${WARM:-10} CG_SIZE=${CG_SIZE-} AGG_N=${AGG_N-100}
   [ -n "$CG_SIZE" ] || echo "smoke: callgrind skipped (no instruction counts)"
 fi
-SIZES=${SIZES:-10000 100000}
+SIZES=${SIZES-10000 100000}
 ROUNDS=${ROUNDS:-3}
 STEPS=${STEPS:-1000}
 WARM=${WARM:-200}
