@@ -17,15 +17,34 @@
 //   bench/dem_block_vs_lammps.sh also counts instructions of (callgrind --toggle-collect). reference = 1
 //   runs the reference twin of the DEM step (DemSystem::set_reference_kernel), 0 the fast path.
 //   Counter "ns_per_particle_step" uses the process CPU time (all threads).
+// BM_DemAggregateWall/N/reference: the second system of bench/dem_block_vs_lammps.sh, an N-primary fractal
+//   aggregate hitting a wall, run like BM_DemBlock (AGGLO_BLOCK_WARM untimed + AGGLO_BLOCK_STEPS timed
+//   steps in block_steps()). The aggregate is cases/breakage_wall_fractal.toml's (D_f = 1.8, k_f = 1.3,
+//   seed 1, r = 10 um, e = 0.7) with agglomerate.primaries = N, built and scaled to the JKR equilibrium
+//   overlap by agglo's structure builder (impact::build_agglomerate), with the LAMMPS cross-check's
+//   contact settings (break_rule = lammps, tangential = marshall); every primary moves at 0.5 m/s along +x.
+//   The wall is a frozen layer of spheres of the same radius and material (density kWallDensity, so
+//   they do not move and m* of a contact is the primary's mass) on a square grid of spacing 2.6 r
+//   (no wall-wall pair is listed, in agglo or LAMMPS) in the plane one tenth of a radius plus r beyond
+//   the farthest primary surface, at every grid site within 2 r + 2.6 r of a primary's (y, z): LAMMPS'
+//   fix wall/gran with jkr (29 Sep 2021) turns a sphere touching the wall into NaN, so both codes use
+//   this layer. The first primary touches it after about 90 steps. Counter ns_per_particle_step divides
+//   by every particle, primaries and wall spheres (LAMMPS' atom count). With AGGLO_AGGWALL_DUMP=path the
+//   start state is written to that file for its LAMMPS twin (bench/lammps/aggregate_wall_case.py): a
+//   header line "# dt primaries", then one line "x y z r density vx vy vz" per particle.
 //
 // Run single-threaded for per-core cost: OMP_NUM_THREADS=1 build-bench/bench_dem_scaling
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <random>
+#include <string>
 
+#include "agglo/impact/agglomerate.hpp"
 #include "agglo/impact/impact_case.hpp"
 #include "agglo/impact/experiment.hpp"
 #include "agglo/core/config.hpp"
@@ -89,20 +108,94 @@ long env_steps(const char* name, long fallback) {
 // The timed steps of BM_DemBlock (a function of its own: callgrind counts its instructions alone).
 [[gnu::noinline]] void block_steps(dem::DemSystem& sys, long steps) { sys.run(steps); }
 
-void BM_DemBlock(benchmark::State& state) {
-  const std::int64_t n = state.range(0);
+// AGGLO_BLOCK_WARM untimed steps, then AGGLO_BLOCK_STEPS timed steps of sys (kernel: state.range(1)); its
+// name must not match callgrind's --toggle-collect='*block_steps*' (a nested match toggles collection off);
+// counters contacts, steps and ns_per_particle_step (CPU time / (particles x steps)).
+void timed_steps_of(benchmark::State& state, dem::DemSystem& sys) {
   const long warm = env_steps("AGGLO_BLOCK_WARM", 200), steps = env_steps("AGGLO_BLOCK_STEPS", 1000);
-  auto sys = make_block(n);
   sys.set_reference_kernel(state.range(1) != 0);
   sys.run(warm);
   for (auto _ : state) block_steps(sys, steps);
   state.counters["contacts"] = sys.active_contacts();
   state.counters["steps"] = static_cast<double>(steps);
-  state.counters["ns_per_particle_step"] = benchmark::Counter(
-      static_cast<double>(n * steps) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_particle_step"] =
+      benchmark::Counter(static_cast<double>(sys.particles().size()) * static_cast<double>(steps) * 1e-9,
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void BM_DemBlock(benchmark::State& state) {
+  auto sys = make_block(state.range(0));
+  timed_steps_of(state, sys);
 }
 BENCHMARK(BM_DemBlock)
     ->ArgsProduct({{1000, 10000, 100000}, {0, 1}})
+    ->Iterations(1)
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kMillisecond);
+
+constexpr double kWallDensity = 1e30;  // kg/m^3: a frozen wall sphere (BM_DemAggregateWall)
+
+// The frozen wall layer of BM_DemAggregateWall in front of the primaries of p (appended to p).
+void add_wall_layer(dem::Particles& p, double rho) {
+  const double r = p.r[0], s = 2.6 * r, reach = 2.0 * r + s;
+  const std::size_t n = p.size();
+  double xmax = -1e300, ylo = 1e300, yhi = -1e300, zlo = 1e300, zhi = -1e300;
+  for (std::size_t k = 0; k < n; ++k) {
+    xmax = std::max(xmax, p.x[k].x + p.r[k]);
+    ylo = std::min(ylo, p.x[k].y), yhi = std::max(yhi, p.x[k].y);
+    zlo = std::min(zlo, p.x[k].z), zhi = std::max(zhi, p.x[k].z);
+  }
+  const auto lo = [&](double v) { return static_cast<long>(std::floor((v - reach) / s)); };
+  const auto hi = [&](double v) { return static_cast<long>(std::ceil((v + reach) / s)); };
+  for (long j = lo(ylo); j <= hi(yhi); ++j)
+    for (long k = lo(zlo); k <= hi(zhi); ++k) {
+      const double y = j * s, z = k * s;
+      bool near = false;
+      for (std::size_t q = 0; q < n && !near; ++q)
+        near = (p.x[q].y - y) * (p.x[q].y - y) + (p.x[q].z - z) * (p.x[q].z - z) < reach * reach;
+      if (near) p.add(Vec3{xmax + 0.1 * r + r, y, z}, r, rho);
+    }
+}
+
+// The aggregate of BM_DemAggregateWall and its wall layer (written to AGGLO_AGGWALL_DUMP if set).
+dem::DemSystem make_aggregate_wall(std::int64_t primaries) {
+  const std::filesystem::path src = AGGLO_SOURCE_DIR;
+  auto cfg = agglo::Config::load(src / "cases" / "breakage_wall_fractal.toml");
+  const std::string n = "agglomerate.primaries=" + std::to_string(primaries);
+  for (const char* s : {n.c_str(), "contact.break_rule=lammps", "contact.tangential=marshall",
+                        "wall.position=[5e-3, 0.0, 0.0]"})  // the wall is the layer of add_wall_layer
+    cfg.apply_override(s);
+  auto c = agglo::impact::parse_impact_case(cfg);
+  c.dem.walls.clear();
+  dem::Particles p = agglo::impact::build_agglomerate(c);
+  const double speed = 0.5, rho = agglo::impact::material_density(c, 0);
+  for (auto& v : p.v) v = Vec3{speed, 0.0, 0.0};
+  add_wall_layer(p, kWallDensity);
+  dem::DemSystem sys(p, c.dem);
+  if (const char* dump = std::getenv("AGGLO_AGGWALL_DUMP")) {
+    std::ofstream out(dump);
+    out.precision(17);
+    out << "# " << sys.dt() << ' ' << primaries << '\n';
+    for (std::size_t k = 0; k < p.size(); ++k)
+      out << p.x[k].x << ' ' << p.x[k].y << ' ' << p.x[k].z << ' ' << p.r[k] << ' '
+          << (k < static_cast<std::size_t>(primaries) ? rho : kWallDensity) << ' ' << p.v[k].x << ' ' << p.v[k].y
+          << ' ' << p.v[k].z << '\n';
+  }
+  return sys;
+}
+
+void BM_DemAggregateWall(benchmark::State& state) {
+  const std::int64_t n = state.range(0);
+  auto sys = make_aggregate_wall(n);
+  timed_steps_of(state, sys);
+  int wall_contacts = 0;  // contacts of a primary with a wall sphere
+  for (const auto& pr : sys.pairs()) wall_contacts += pr.state.active && (pr.i >= n) != (pr.j >= n);
+  state.counters["particles"] = static_cast<double>(sys.particles().size());
+  state.counters["wall_contacts"] = wall_contacts;
+  state.counters["ke_end"] = sys.translational_kinetic_energy();  // [J], LAMMPS' ke after the same steps
+}
+BENCHMARK(BM_DemAggregateWall)
+    ->ArgsProduct({{100, 1000}, {0, 1}})
     ->Iterations(1)
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kMillisecond);

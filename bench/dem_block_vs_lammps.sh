@@ -6,15 +6,20 @@
 #   - agglo: bench_dem_scaling's BM_DemBlock (the same WARM + STEPS), process CPU time, the fast path and
 #     the reference twin (DemSystem::set_reference_kernel), rounds interleaved with LAMMPS;
 #   - threads: agglo's fast path on OMP_NUM_THREADS=1 and 2 (OMP_WAIT_POLICY=passive), wall time, speed-up;
-#   - instructions (callgrind, block_steps() only) per particle-step of the fast path and the reference.
-# Prints ns per particle-step of each code, LAMMPS / agglo and fast / reference ratios.
+#   - instructions (callgrind, block_steps() only) per particle-step of the fast path and the reference, of
+#     the block at CG_SIZE and of the aggregate on the wall.
+# The second system, a fractal aggregate of AGG_N primaries hitting a wall (BM_DemAggregateWall, built by
+# agglo's structure builder; its start state goes to bench/lammps/aggregate_wall_case.py, LAMMPS' wall is
+# fix wall/gran with the same jkr law), is run the same way, rounds interleaved.
+# Prints ns per particle-step of each code, LAMMPS / agglo and fast / reference ratios, per system.
 #
 #   bench/dem_block_vs_lammps.sh [OUT_DIR]            (default OUT_DIR: results/dem_block_vs_lammps)
-# Environment: BUILD (build folder with AGGLO_BUILD_BENCH=ON, default build-bench), SIZES (default
+# Environment: BUILD (build folder with AGGLO_BUILD_BENCH=ON, default build-bench), SIZES ("" skips the block; default
 # "10000 100000"; BM_DemBlock has 1000, 10000, 100000), ROUNDS (3), STEPS (1000), WARM (200),
 # THREADS ("1 2"; "" skips the thread comparison), CG_SIZE (10000; "" skips callgrind), CG_STEPS (20),
+# AGG_N (primaries of the aggregate on the wall, 1000 or 100; default 1000, "" skips that system),
 # LMP (default lmp). LAMMPS is installed (Debian's `lammps`) and bench_dem_scaling built in BUILD if missing.
-#   SMOKE=1: the smoke test (ctest -L bench): SIZES=1000 ROUNDS=1 STEPS=20 WARM=10 unless set, no callgrind
+#   SMOKE=1: the smoke test (ctest -L bench): SIZES=1000 ROUNDS=1 STEPS=20 WARM=10 AGG_N=100 unless set, no callgrind
 #   unless CG_SIZE is set (valgrind is not a test package; a callgrind run costs seconds), LAMMPS and
 #   BUILD/bench_dem_scaling must exist (no apt-get, no build); the same runs, table and ratios.
 set -euo pipefail
@@ -22,16 +27,17 @@ SRC=$(cd "$(dirname "$0")/.." && pwd)
 OUT=${1:-$SRC/results/dem_block_vs_lammps}
 BUILD=${BUILD:-$SRC/build-bench}
 if [ "${SMOKE:-0}" = 1 ]; then
-  SIZES=${SIZES:-1000} ROUNDS=${ROUNDS:-1} STEPS=${STEPS:-20} WARM=${WARM:-10} CG_SIZE=${CG_SIZE-}
+  SIZES=${SIZES:-1000} ROUNDS=${ROUNDS:-1} STEPS=${STEPS:-20} WARM=${WARM:-10} CG_SIZE=${CG_SIZE-} AGG_N=${AGG_N-100}
   [ -n "$CG_SIZE" ] || echo "smoke: callgrind skipped (no instruction counts)"
 fi
-SIZES=${SIZES:-10000 100000}
+SIZES=${SIZES-10000 100000}
 ROUNDS=${ROUNDS:-3}
 STEPS=${STEPS:-1000}
 WARM=${WARM:-200}
 THREADS=${THREADS-1 2}
 CG_SIZE=${CG_SIZE-10000}
 CG_STEPS=${CG_STEPS:-20}
+AGG_N=${AGG_N-1000}
 PY=/usr/bin/python3
 export LMP=${LMP:-lmp}
 
@@ -52,19 +58,25 @@ RES=$OUT/results.jsonl
 : > "$RES"
 export AGGLO_BLOCK_STEPS=$STEPS AGGLO_BLOCK_WARM=$WARM
 
-# One BM_DemBlock run -> a JSON line {code, n, kernel, threads, cpu_s, wall_s, ns_per_particle_step}.
-agglo_block() {  # n reference(0|1) threads
-  local js=$OUT/bm.json
-  OMP_NUM_THREADS=$3 "$BUILD/bench_dem_scaling" --benchmark_filter="^BM_DemBlock/$1/$2/" \
+# One BM_DemBlock (system block) or BM_DemAggregateWall (system aggregate_wall) run -> a JSON line
+# {code, system, n, kernel, threads, cpu_s, wall_s, ns_per_particle_step, ...}.
+agglo_block() {  # n reference(0|1) threads [system]
+  local js=$OUT/bm.json sys=${4:-block} bm=BM_DemBlock
+  [ "$sys" = aggregate_wall ] && bm=BM_DemAggregateWall
+  OMP_NUM_THREADS=$3 "$BUILD/bench_dem_scaling" --benchmark_filter="^$bm/$1/$2/" \
       --benchmark_out="$js" --benchmark_out_format=json >/dev/null 2>&1
-  $PY - "$js" "$1" "$2" "$3" "$STEPS" <<'EOF'
+  $PY - "$js" "$1" "$2" "$3" "$STEPS" "$sys" <<'EOF'
 import json, sys
 b = json.load(open(sys.argv[1]))["benchmarks"][0]
 n, ref, th, steps = int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5])
 unit = {"ms": 1e-3, "us": 1e-6, "ns": 1e-9, "s": 1.0}[b["time_unit"]]
 cpu, wall = b["cpu_time"] * unit, b["real_time"] * unit
-print(json.dumps({"code": "agglo", "n": n, "kernel": "reference" if ref else "fast", "threads": th, "cpu_s": cpu,
-                  "wall_s": wall, "contacts": b.get("contacts"), "ns_per_particle_step": cpu / (n * steps) * 1e9}))
+extra = {k: b[k] for k in ("wall_contacts", "ke_end") if k in b}
+if "particles" in b:  # the aggregate: n primaries, and the wall spheres; per particle = per atom as LAMMPS
+    extra["primaries"], n = n, int(b["particles"])
+print(json.dumps({"code": "agglo", "system": sys.argv[6], "n": n, "kernel": "reference" if ref else "fast",
+                  "threads": th, "cpu_s": cpu, "wall_s": wall, "contacts": b.get("contacts"),
+                  "ns_per_particle_step": cpu / (n * steps) * 1e9} | extra))
 EOF
 }
 
@@ -83,37 +95,64 @@ for n in $SIZES; do
     for th in $THREADS; do OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive} agglo_block "$n" 0 "$th" | sed 's/"code": "agglo"/"code": "agglo_threads"/' | tee -a "$RES"; done
   fi
 done
+if [ -n "$AGG_N" ]; then
+  # the start state of BM_DemAggregateWall (agglo's structure builder) for its LAMMPS twin
+  AGGLO_AGGWALL_DUMP=$OUT/aggregate_wall.state AGGLO_BLOCK_STEPS=0 AGGLO_BLOCK_WARM=0 OMP_NUM_THREADS=1 \
+      "$BUILD/bench_dem_scaling" --benchmark_filter="^BM_DemAggregateWall/$AGG_N/0/" >/dev/null
+  for r in $(seq 1 "$ROUNDS"); do
+    echo "-- fractal aggregate of $AGG_N primaries on a wall, round $r"
+    $PY "$SRC/bench/lammps/aggregate_wall_case.py" "$OUT/aggregate_wall.state" --steps "$STEPS" --warm "$WARM" \
+        --workdir "$OUT/lammps_aggregate_wall" | tee -a "$RES"
+    agglo_block "$AGG_N" 0 1 aggregate_wall | tee -a "$RES"
+    agglo_block "$AGG_N" 1 1 aggregate_wall | tee -a "$RES"
+  done
+fi
 if [ -n "$CG_SIZE" ]; then
-  for ref in 0 1; do
-    AGGLO_BLOCK_STEPS=$CG_STEPS AGGLO_BLOCK_WARM=$WARM OMP_NUM_THREADS=1 valgrind --tool=callgrind \
-        --callgrind-out-file="$OUT/callgrind.$ref" --collect-atstart=no --toggle-collect='*block_steps*' \
-        "$BUILD/bench_dem_scaling" --benchmark_filter="^BM_DemBlock/$CG_SIZE/$ref/" >/dev/null 2>"$OUT/callgrind.$ref.log"
-    ir=$(sed -n 's/.*Collected : \([0-9]*\).*/\1/p' "$OUT/callgrind.$ref.log")
-    echo "{\"code\": \"callgrind\", \"n\": $CG_SIZE, \"kernel\": \"$([ $ref = 1 ] && echo reference || echo fast)\", \"steps\": $CG_STEPS, \"instructions\": $ir}" | tee -a "$RES"
+  # the block at CG_SIZE, and the aggregate on its wall layer (AGG_N primaries) when it ran
+  for cg in "block BM_DemBlock/$CG_SIZE $CG_SIZE" ${AGG_N:+"aggregate_wall BM_DemAggregateWall/$AGG_N"}; do
+    set -- $cg
+    for ref in 0 1; do
+      log=$OUT/callgrind.$1.$ref.log
+      AGGLO_BLOCK_STEPS=$CG_STEPS AGGLO_BLOCK_WARM=$WARM OMP_NUM_THREADS=1 valgrind --tool=callgrind \
+          --callgrind-out-file="$OUT/callgrind.$1.$ref" --collect-atstart=no --toggle-collect='*block_steps*' \
+          "$BUILD/bench_dem_scaling" --benchmark_filter="^$2/$ref/" >/dev/null 2>"$log"
+      ir=$(sed -n 's/.*Collected : \([0-9]*\).*/\1/p' "$log")
+      # particles: the block's N; the aggregate's from its LAMMPS row (primaries + wall spheres)
+      np=${3:-$(grep -m1 '"system": "aggregate_wall"' "$RES" | sed -n 's/.*"n": \([0-9]*\).*/\1/p')}
+      echo "{\"code\": \"callgrind\", \"system\": \"$1\", \"n\": $np, \"kernel\": \"$([ $ref = 1 ] && echo reference || echo fast)\", \"steps\": $CG_STEPS, \"instructions\": $ir}" | tee -a "$RES"
+    done
   done
 fi
 
 $PY - "$RES" <<'EOF'
 import json, statistics, sys
 rows = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
-def ns(code, n, kernel=None):
+def ns(code, system, n, kernel=None):
     return [r["ns_per_particle_step"] for r in rows if r["code"] == code and r["n"] == n and
-            (kernel is None or r.get("kernel") == kernel)]
+            r.get("system") == system and (kernel is None or r.get("kernel") == kernel)]
 rng = lambda v: f"{min(v):.0f}-{max(v):.0f}" if len(v) > 1 else f"{v[0]:.0f}"
 print("\nns per particle-step (CPU time, one core; min-max over the rounds) and ratios of the medians:")
-print(f"{'N':>7} {'LAMMPS':>11} {'agglo fast':>11} {'agglo ref':>11} {'LAMMPS/fast':>12} {'ref/fast':>9}")
-for n in sorted({r["n"] for r in rows if r["code"] == "lammps"}):
-    l, f, rf = ns("lammps", n), ns("agglo", n, "fast"), ns("agglo", n, "reference")
+print(f"{'system':>14} {'N':>7} {'LAMMPS':>11} {'agglo fast':>11} {'agglo ref':>11} {'LAMMPS/fast':>12} {'ref/fast':>9}")
+for system, n in sorted({(r["system"], r["n"]) for r in rows if r["code"] == "lammps"}):
+    l, f, rf = ns("lammps", system, n), ns("agglo", system, n, "fast"), ns("agglo", system, n, "reference")
     med = statistics.median
-    print(f"{n:>7} {rng(l):>11} {rng(f):>11} {rng(rf):>11} {med(l) / med(f):>11.2f}x {med(rf) / med(f):>8.2f}x")
+    print(f"{system:>14} {n:>7} {rng(l):>11} {rng(f):>11} {rng(rf):>11} {med(l) / med(f):>11.2f}x "
+          f"{med(rf) / med(f):>8.2f}x")
+seen = set()
+for r in rows:  # the same system in both codes: translational kinetic energy after the last step (first round)
+    if r.get("system") == "aggregate_wall" and "ke_end" in r and (r["code"], r.get("kernel")) not in seen:
+        seen.add((r["code"], r.get("kernel")))
+        print(f"aggregate on the wall, {r['code']} {r.get('kernel', '')}: KE after the last step {r['ke_end']:.6e} J"
+              + (f", {r['wall_contacts']:.0f} wall contacts, {r['contacts']:.0f} contacts" if r["code"] == "agglo" else ""))
 th = [r for r in rows if r["code"] == "agglo_threads"]
 for n in sorted({r["n"] for r in th}):
     w = {r["threads"]: r["wall_s"] for r in th if r["n"] == n}
     if 1 in w and 2 in w:
         print(f"threads, N = {n}: wall {w[1]:.3f} s on 1, {w[2]:.3f} s on 2 -> speed-up {w[1] / w[2]:.2f}x")
-cg = {r["kernel"]: r for r in rows if r["code"] == "callgrind"}
-if "fast" in cg and "reference" in cg:
-    per = {k: v["instructions"] / (v["n"] * v["steps"]) for k, v in cg.items()}
-    print(f"callgrind, N = {cg['fast']['n']}, {cg['fast']['steps']} steps: instructions per particle-step "
-          f"fast {per['fast']:.0f}, reference {per['reference']:.0f} -> {per['reference'] / per['fast']:.3f}x")
+for system in ("block", "aggregate_wall"):
+    cg = {r["kernel"]: r for r in rows if r["code"] == "callgrind" and r.get("system", "block") == system}
+    if "fast" in cg and "reference" in cg:
+        per = {k: v["instructions"] / (v["n"] * v["steps"]) for k, v in cg.items()}
+        print(f"callgrind, {system}, N = {cg['fast']['n']}, {cg['fast']['steps']} steps: instructions per particle-step "
+              f"fast {per['fast']:.0f}, reference {per['reference']:.0f} -> {per['reference'] / per['fast']:.3f}x")
 EOF

@@ -121,3 +121,35 @@ TEST(DemReferenceTwin, ImpactOnWallBitIdentical) {
   EXPECT_GT(wall_max, 0);        // the block was pushed onto the wall
   omp_set_num_threads(saved);
 }
+
+// The half-kick factors (dt/2)/m and (dt/2)/I are computed once per particle (DemSystem::attach): a
+// particle added later gets its own, and restore() recomputes them from the restored masses and dt.
+// Both must continue bit for bit like a system that had the particles and dt from the start.
+TEST(DemReferenceTwin, KickFactorsOfAddedAndRestoredParticles) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const Vec3 x_new{-3.0 * kTwinR, 0.3 * kTwinR, 0.2 * kTwinR}, v_new{2.0, 0.0, 0.0};
+  Particles all = twin_block(3, 1e-3);
+  all.add(x_new, kTwinR, 2.0 * kTwinRho, v_new);  // heavier than the block's spheres
+  DemSystem whole(all, twin_params(true));
+  DemSystem grown(twin_block(3, 1e-3), twin_params(true));
+  grown.add_particle(x_new, kTwinR, 2.0 * kTwinRho, v_new, 0.0, 1.0);
+  ASSERT_EQ(grown.dt(), whole.dt());  // the lighter block spheres set dt in both
+  // A system of other masses and another dt, then given whole's state after 300 steps.
+  Particles light = twin_block(3, 0.0);
+  light.add(x_new, 0.5 * kTwinR, kTwinRho, {});
+  auto prm = twin_params(true);
+  prm.dt = 0.5 * whole.dt();
+  DemSystem restored(light, prm);
+  whole.run(300);
+  grown.run(300);
+  EXPECT_EQ(twin_differences(whole, grown), 0);
+  restored.restore(whole.state());
+  whole.run(700);
+  grown.run(700);
+  restored.run(700);
+  EXPECT_EQ(twin_differences(whole, grown), 0);
+  EXPECT_EQ(twin_differences(whole, restored), 0);
+  EXPECT_LT(whole.particles().v.back().x, 1.5);  // the added sphere hit the block (launched at 2 m/s)
+  omp_set_num_threads(saved);
+}

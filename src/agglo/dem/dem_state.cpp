@@ -32,6 +32,8 @@ void DemSystem::restore(const DemState& s) {
   for (auto& wc : walls_) wc.kind.clear();  // recomputed by attach() from the particles' materials
   decay_.clear();
   lag_.clear();
+  kick_v_.clear();  // the restored masses and dt
+  kick_w_.clear();
   attach();
 }
 

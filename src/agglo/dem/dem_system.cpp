@@ -89,6 +89,11 @@ JkrPair DemSystem::wall_jkr(std::uint32_t i, const Wall& w) const { return dem::
 
 void DemSystem::attach() {
   const std::size_t n = p_.size();
+  const double h = 0.5 * dt_;
+  for (std::size_t i = kick_v_.size(); i < n; ++i) {
+    kick_v_.push_back(h / p_.m[i]);
+    kick_w_.push_back(h / p_.I[i]);
+  }
   walls_.resize(params_.walls.size());
   for (std::size_t k = 0; k < walls_.size(); ++k) {
     auto& wc = walls_[k];
@@ -119,15 +124,16 @@ void DemSystem::add_wall_and_body_forces() {
   if (norm2(g) > 0.0) parallel_for(n, [&](std::int64_t q) { p_.f[q] += p_.m[q] * g; });
 }
 
-// Half kick of velocity Verlet over h = dt/2; with gas drag its exact exponential form (gas_drag.hpp).
-[[gnu::always_inline]] inline void DemSystem::kick(std::int64_t q, double h) {
+// Half kick of velocity Verlet over h = dt/2 (kick_v_ = h/m, kick_w_ = h/I); with gas drag its exact
+// exponential form (gas_drag.hpp).
+[[gnu::always_inline]] inline void DemSystem::kick(std::int64_t q) {
   if (params_.gas.enabled) {
     const Vec3 u = params_.gas.flow;
     p_.v[q] = u + decay_[q] * (p_.v[q] - u) + (lag_[q] / p_.m[q]) * p_.f[q];
   } else {
-    p_.v[q] += (h / p_.m[q]) * p_.f[q];
+    p_.v[q] += kick_v_[q] * p_.f[q];
   }
-  p_.w[q] += (h / p_.I[q]) * p_.t[q];
+  p_.w[q] += kick_w_[q] * p_.t[q];
 }
 
 JkrPair DemSystem::jkr_for(std::uint32_t i, std::uint32_t j) const {
@@ -176,16 +182,15 @@ void DemSystem::gather_pair_forces() {
 void DemSystem::step() {
   if (!forces_ready_) compute_forces();
   const std::int64_t n = static_cast<std::int64_t>(p_.size());
-  const double h = 0.5 * dt_;
   auto kick_drift = [&](std::int64_t q) {
-    kick(q, h);
+    kick(q);
     p_.x[q] += dt_ * p_.v[q];
   };
   parallel_for(n, kick_drift);
   time_ += dt_;
   ++step_;
   compute_forces();
-  parallel_for(n, [&](std::int64_t q) { kick(q, h); });
+  parallel_for(n, [&](std::int64_t q) { kick(q); });
   if (step_ % 256 == 0) check_state();
 }
 

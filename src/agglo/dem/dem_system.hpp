@@ -109,9 +109,9 @@ class DemSystem {
   void restore(const DemState& s);
 
  private:
-  void attach();  // wall contact slots and drag constants of particles added since the last call
+  void attach();  // wall contact slots, drag constants and kick factors of particles added since the last call
   void add_wall_and_body_forces();
-  void kick(std::int64_t q, double h);
+  void kick(std::int64_t q);
   void gather_pair_forces();  // the reference path: per-pair buffer, then a gather per particle
 
   Particles p_;
@@ -124,6 +124,9 @@ class DemSystem {
   std::vector<WallContacts> walls_;     // one per params_.walls
   std::vector<PairForce> wall_forces_;  // per particle, of the wall being evaluated
   std::vector<double> decay_, lag_;     // gas drag per particle: E = exp(-dt/(2 tau)), tau (1 - E)
+  // Half-kick factors per particle, (dt/2)/m and (dt/2)/I: the same doubles as the division in the kick,
+  // computed once (attach(); the masses and dt do not change between steps).
+  std::vector<double> kick_v_, kick_w_;
   double dt_ = 0.0, skin_ = 0.0, time_ = 0.0;
   long step_ = 0;
   bool forces_ready_ = false;

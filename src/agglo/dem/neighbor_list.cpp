@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 namespace agglo::dem {
 
@@ -31,29 +30,34 @@ void NeighborList::build(const std::vector<Vec3>& x, const std::vector<double>& 
     const double cell = 2.0 * rmax + skin;
     std::int64_t dims[3];
     for (int c = 0; c < 3; ++c) dims[c] = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi[c] - lo[c]) / cell) + 1);
-    // Sparse grid: hash of occupied cells keeps memory O(N) for far-flung particles.
+    // Sparse grid: the (cell key, particle) pairs sorted by key keep memory O(N) for far-flung particles
+    // (one allocation); the cells (a, b, c - 1 .. c + 1) of one row have consecutive keys, one range.
     auto key = [&](std::int64_t a, std::int64_t b, std::int64_t c) { return (a * dims[1] + b) * dims[2] + c; };
-    std::unordered_map<std::int64_t, std::vector<std::uint32_t>> cells;
-    cells.reserve(n);
     std::vector<std::int64_t> ci(n * 3);
+    std::vector<std::pair<std::int64_t, std::uint32_t>> bins(n);
     for (std::size_t p = 0; p < n; ++p) {
       for (int c = 0; c < 3; ++c) ci[3 * p + c] = static_cast<std::int64_t>((x[p][c] - lo[c]) / cell);
-      cells[key(ci[3 * p], ci[3 * p + 1], ci[3 * p + 2])].push_back(static_cast<std::uint32_t>(p));
+      bins[p] = {key(ci[3 * p], ci[3 * p + 1], ci[3 * p + 2]), static_cast<std::uint32_t>(p)};
     }
+    std::sort(bins.begin(), bins.end());
+    const auto first_at = [&](std::int64_t k) {
+      return std::lower_bound(bins.begin(), bins.end(), std::make_pair(k, std::uint32_t{0}));
+    };
     for (std::size_t p = 0; p < n; ++p) {
+      const std::int64_t c_lo = std::max<std::int64_t>(ci[3 * p + 2] - 1, 0);
+      const std::int64_t c_hi = std::min<std::int64_t>(ci[3 * p + 2] + 1, dims[2] - 1);
       for (std::int64_t da = -1; da <= 1; ++da)
-        for (std::int64_t db = -1; db <= 1; ++db)
-          for (std::int64_t dc = -1; dc <= 1; ++dc) {
-            std::int64_t a = ci[3 * p] + da, b = ci[3 * p + 1] + db, c = ci[3 * p + 2] + dc;
-            if (a < 0 || b < 0 || c < 0 || a >= dims[0] || b >= dims[1] || c >= dims[2]) continue;
-            auto it = cells.find(key(a, b, c));
-            if (it == cells.end()) continue;
-            for (std::uint32_t q : it->second) {
-              if (q <= p) continue;
-              double lim = r[p] + r[q] + skin;
-              if (norm2(x[q] - x[p]) < lim * lim) found.emplace_back(static_cast<std::uint32_t>(p), q);
-            }
+        for (std::int64_t db = -1; db <= 1; ++db) {
+          std::int64_t a = ci[3 * p] + da, b = ci[3 * p + 1] + db;
+          if (a < 0 || b < 0 || a >= dims[0] || b >= dims[1]) continue;
+          const std::int64_t k_hi = key(a, b, c_hi);
+          for (auto it = first_at(key(a, b, c_lo)); it != bins.end() && it->first <= k_hi; ++it) {
+            const std::uint32_t q = it->second;
+            if (q <= p) continue;
+            double lim = r[p] + r[q] + skin;
+            if (norm2(x[q] - x[p]) < lim * lim) found.emplace_back(static_cast<std::uint32_t>(p), q);
           }
+        }
     }
   }
   // Keep active contacts that drifted out of range (they are still bonded).
