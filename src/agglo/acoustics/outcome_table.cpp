@@ -23,24 +23,27 @@ struct AxisPos {
 // reach a node only up to rounding): clamped to it, but not counted as outside.
 constexpr double kOnNode = 1e-9;
 
-bool off_node(double x, double node) { return !(std::abs(x - node) <= kOnNode * node); }
+bool off_node(double x, double node, double scale) { return !(std::abs(x - node) <= kOnNode * scale); }
 
-AxisPos locate_log(const std::vector<double>& a, double x, bool& clamped) {
+// Position of x on axis a, in ln (log) or linearly; `clamped` is set when x lies off the axis.
+AxisPos locate(const std::vector<double>& a, double x, bool log, bool& clamped) {
+  const double span = a.back() - a.front();
+  const auto scale = [&](double node) { return log ? node : std::max(std::abs(node), span); };
   if (a.size() == 1) {
-    if (off_node(x, a[0])) clamped = true;
+    if (off_node(x, a[0], scale(a[0]))) clamped = true;
     return {};
   }
-  if (!(x > a.front())) {  // also x <= 0 and NaN
-    if (off_node(x, a.front())) clamped = true;
+  if (!(x > a.front())) {  // also NaN (and x <= 0 on a log axis)
+    if (off_node(x, a.front(), scale(a.front()))) clamped = true;
     return {};
   }
   if (x >= a.back()) {
-    if (off_node(x, a.back())) clamped = true;
+    if (off_node(x, a.back(), scale(a.back()))) clamped = true;
     return {a.size() - 2, 1.0};
   }
   const std::size_t hi = static_cast<std::size_t>(std::upper_bound(a.begin(), a.end(), x) - a.begin());
   const std::size_t lo = hi - 1;
-  return {lo, std::log(x / a[lo]) / std::log(a[hi] / a[lo])};
+  return {lo, log ? std::log(x / a[lo]) / std::log(a[hi] / a[lo]) : (x - a[lo]) / (a[hi] - a[lo])};
 }
 
 const io::Variable& variable(const io::Dataset& d, const char* name, const std::vector<std::string>& dims,
@@ -60,11 +63,13 @@ std::vector<double> values_of(const io::Variable& v) {
   return {v.ints.begin(), v.ints.end()};
 }
 
-void check_axis(const char* name, const std::vector<double>& a) {
+void check_axis(std::size_t axis, const std::vector<double>& a) {
+  const char* name = kOutcomeAxes[axis];
   if (a.empty()) throw std::invalid_argument(fmt::format("axis '{}' is empty", name));
   for (std::size_t k = 0; k < a.size(); ++k) {
-    if (!(a[k] > 0.0) || !std::isfinite(a[k]))
-      throw std::invalid_argument(fmt::format("axis '{}' value {} = {} is not a positive number", name, k, a[k]));
+    if (!std::isfinite(a[k]) || (kOutcomeAxisLog[axis] && !(a[k] > 0.0)))
+      throw std::invalid_argument(fmt::format("axis '{}' value {} = {} is not a {}number", name, k, a[k],
+                                              kOutcomeAxisLog[axis] ? "positive " : "finite "));
     if (k > 0 && !(a[k] > a[k - 1]))
       throw std::invalid_argument(fmt::format("axis '{}' is not strictly increasing at value {} ({} after {})", name,
                                               k, a[k], a[k - 1]));
@@ -86,25 +91,52 @@ void check_probabilities(const OutcomeTable& t) {
 }
 
 // The corners of the cell enclosing a query with a non-zero weight (prod_k w_k), in the order of the
-// interpolation sum.
+// interpolation sum (bit k of the corner number: upper node along the k-th present axis).
 struct Corners {
-  std::array<std::size_t, 8> i{};
-  std::array<double, 8> w{};
+  static constexpr std::size_t kMax = std::size_t{1} << kOutcomeAxisCount;
+  std::array<std::size_t, kMax> i{};
+  std::array<double, kMax> w{};
   std::size_t count = 0;
   bool clamped = false;
 };
 
-Corners corners_of(const OutcomeTable& t, double v, double di, double dj) {
+// The query's coordinates on the axes, the pair ordered by diameter (partner 1 the smaller).
+std::array<double, kOutcomeAxisCount> coordinates(const OutcomeQuery& q) {
+  const bool swap = q.d_j < q.d_i;
+  return {q.speed,
+          swap ? q.d_j : q.d_i,
+          swap ? q.d_i : q.d_j,
+          swap ? q.sigma_j : q.sigma_i,
+          swap ? q.sigma_i : q.sigma_j,
+          q.permittivity};
+}
+
+Corners corners_of(const OutcomeTable& t, const OutcomeQuery& q) {
   Corners r;
-  const AxisPos pv = locate_log(t.axes[0], v, r.clamped);
-  const AxisPos p1 = locate_log(t.axes[1], std::min(di, dj), r.clamped);
-  const AxisPos p2 = locate_log(t.axes[2], std::max(di, dj), r.clamped);
-  for (int c = 0; c < 8; ++c) {
-    const int bv = c & 1, b1 = (c >> 1) & 1, b2 = (c >> 2) & 1;
-    const double w = (bv ? pv.w : 1.0 - pv.w) * (b1 ? p1.w : 1.0 - p1.w) * (b2 ? p2.w : 1.0 - p2.w);
+  const auto x = coordinates(q);
+  std::array<AxisPos, kOutcomeAxisCount> pos{};
+  std::array<std::size_t, kOutcomeAxisCount> present{}, stride{};
+  std::size_t m = 0;
+  for (std::size_t k = 0; k < kOutcomeAxisCount; ++k) {
+    if (!t.has_axis(k)) continue;
+    pos[m] = locate(t.axes[k], x[k], kOutcomeAxisLog[k], r.clamped);
+    present[m++] = k;
+  }
+  std::size_t s = 1;  // row-major strides of the present axes
+  for (std::size_t a = m; a-- > 0;) {
+    stride[a] = s;
+    s *= t.axes[present[a]].size();
+  }
+  for (std::size_t c = 0; c < (std::size_t{1} << m); ++c) {
+    double w = 1.0;
+    std::size_t i = 0;
+    for (std::size_t a = 0; a < m; ++a) {
+      const bool up = (c >> a) & 1U;
+      w = a == 0 ? (up ? pos[a].w : 1.0 - pos[a].w) : w * (up ? pos[a].w : 1.0 - pos[a].w);
+      i += (pos[a].lo + static_cast<std::size_t>(up)) * stride[a];
+    }
     if (w == 0.0) continue;
-    r.i[r.count] = t.index(pv.lo + static_cast<std::size_t>(bv), p1.lo + static_cast<std::size_t>(b1),
-                           p2.lo + static_cast<std::size_t>(b2));
+    r.i[r.count] = i;
     r.w[r.count++] = w;
   }
   return r;
@@ -130,9 +162,9 @@ void check_fragments(const OutcomeTable& t) {
 
 }  // namespace
 
-OutcomeProbabilities OutcomeTable::at(double v, double di, double dj) const {
+OutcomeProbabilities OutcomeTable::at(const OutcomeQuery& q) const {
   OutcomeProbabilities r;
-  const Corners c = corners_of(*this, v, di, dj);
+  const Corners c = corners_of(*this, q);
   r.clamped = c.clamped;
   for (std::size_t k = 0; k < c.count; ++k) {
     r.stick += c.w[k] * p_stick[c.i[k]];
@@ -142,9 +174,9 @@ OutcomeProbabilities OutcomeTable::at(double v, double di, double dj) const {
   return r;
 }
 
-FragmentStats OutcomeTable::fragments_at(double v, double di, double dj) const {
+FragmentStats OutcomeTable::fragments_at(const OutcomeQuery& q) const {
   if (fragments.empty()) return {};
-  const Corners c = corners_of(*this, v, di, dj);
+  const Corners c = corners_of(*this, q);
   double sw = 0.0, sn = 0.0, sf = 0.0;
   for (std::size_t k = 0; k < c.count; ++k) {
     const double a = c.w[k] * p_break[c.i[k]];
@@ -157,13 +189,25 @@ FragmentStats OutcomeTable::fragments_at(double v, double di, double dj) const {
   return {sn / sw, sf / sw};
 }
 
+std::vector<std::string> OutcomeTable::dimensions() const {
+  std::vector<std::string> dims;
+  for (std::size_t k = 0; k < kOutcomeAxisCount; ++k)
+    if (has_axis(k)) dims.emplace_back(kOutcomeAxes[k]);
+  return dims;
+}
+
 OutcomeTable outcome_table_from_dataset(const io::Dataset& d) {
   OutcomeTable t;
-  for (std::size_t k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < kOutcomeAxisCount; ++k) {
+    if (k >= kRequiredOutcomeAxes && !d.find(kOutcomeAxes[k])) continue;  // an absent optional axis
     t.axes[k] = values_of(variable(d, kOutcomeAxes[k], {kOutcomeAxes[k]}, kOutcomeAxisUnits[k]));
-    check_axis(kOutcomeAxes[k], t.axes[k]);
+    check_axis(k, t.axes[k]);
   }
-  const std::vector<std::string> dims(kOutcomeAxes.begin(), kOutcomeAxes.end());
+  if (t.has_axis(kCharge1Axis) != t.has_axis(kCharge2Axis))
+    throw std::invalid_argument(fmt::format("axis '{}' without axis '{}': a charged table has both",
+                                            kOutcomeAxes[t.has_axis(kCharge1Axis) ? kCharge1Axis : kCharge2Axis],
+                                            kOutcomeAxes[t.has_axis(kCharge1Axis) ? kCharge2Axis : kCharge1Axis]));
+  const std::vector<std::string> dims = t.dimensions();
   t.p_stick = values_of(variable(d, kOutcomeProbabilities[0], dims, "1"));
   t.p_bounce = values_of(variable(d, kOutcomeProbabilities[1], dims, "1"));
   t.p_break = values_of(variable(d, kOutcomeProbabilities[2], dims, "1"));
@@ -180,13 +224,12 @@ OutcomeTable outcome_table_from_dataset(const io::Dataset& d) {
 
 io::Dataset outcome_table_dataset(const OutcomeTable& t) {
   io::Dataset d;
-  static constexpr std::array<const char*, 3> axis_meaning = {
-      "normal relative speed at contact", "diameter of the smaller partner", "diameter of the larger partner"};
-  for (std::size_t k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < kOutcomeAxisCount; ++k) {
+    if (!t.has_axis(k)) continue;
     d.add_dim(kOutcomeAxes[k], t.axes[k].size());
-    d.add(kOutcomeAxes[k], {kOutcomeAxes[k]}, kOutcomeAxisUnits[k], axis_meaning[k], t.axes[k]);
+    d.add(kOutcomeAxes[k], {kOutcomeAxes[k]}, kOutcomeAxisUnits[k], kOutcomeAxisMeanings[k], t.axes[k]);
   }
-  const std::vector<std::string> dims(kOutcomeAxes.begin(), kOutcomeAxes.end());
+  const std::vector<std::string> dims = t.dimensions();
   d.add(kOutcomeProbabilities[0], dims, "1", "probability that the pair sticks", t.p_stick);
   d.add(kOutcomeProbabilities[1], dims, "1", "probability that the pair bounces", t.p_bounce);
   d.add(kOutcomeProbabilities[2], dims, "1", "probability that the pair breaks", t.p_break);
