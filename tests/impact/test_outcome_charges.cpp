@@ -14,6 +14,7 @@
 #include "agglo/impact/outcome_grid.hpp"
 #include "agglo/io/dataset.hpp"
 #include "agglo/writers/outcomes.hpp"
+#include "sphere_grid_helpers.hpp"
 
 using namespace agglo;
 using namespace agglo::impact;
@@ -47,25 +48,9 @@ impacts = 1
 )" + grid;
 }
 
-struct ChargedGrid {
-  ImpactCase dem;
-  OutcomeGridSpec grid;
-};
-ChargedGrid parse_charged(const std::string& grid) {
-  Config cfg = Config::from_string(charged_pair_case(grid), "charged.toml");
-  ChargedGrid p{parse_impact_case(cfg, true), {}};
-  check_sphere_sphere(cfg.root(), p.dem);
-  p.grid = parse_outcome_grid(cfg.root());
-  cfg.check_unknown_keys();
-  return p;
-}
-
-OutcomeGridResult run_charged(const ChargedGrid& p) {
-  std::vector<PairOutcome> out;
-  for (const auto& j : outcome_impacts(p.grid))
-    out.push_back(classify_pair(run_impact(outcome_case(p.dem, p.grid, j), outcome_launch_speed(p.grid, j))));
-  return tabulate_outcomes(p.grid, out);
-}
+using ChargedGrid = test::SphereGrid;
+ChargedGrid parse_charged(const std::string& grid) { return test::parse_sphere_grid(charged_pair_case(grid)); }
+OutcomeGridResult run_charged(const ChargedGrid& p) { return test::run_sphere_grid(p); }
 
 }  // namespace
 
