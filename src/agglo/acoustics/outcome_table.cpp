@@ -25,15 +25,34 @@ constexpr double kOnNode = 1e-9;
 
 bool off_node(double x, double node, double scale) { return !(std::abs(x - node) <= kOnNode * scale); }
 
-// Position of x on axis a, in ln (log) or linearly; `clamped` is set when x lies off the axis.
-AxisPos locate(const std::vector<double>& a, double x, bool log, bool& clamped) {
+// Position of x on a log axis (speed, diameters, permittivity); `clamped` is set when x lies off it.
+AxisPos locate_log(const std::vector<double>& a, double x, bool& clamped) {
+  if (a.size() == 1) {
+    if (off_node(x, a[0], a[0])) clamped = true;
+    return {};
+  }
+  if (!(x > a.front())) {  // also x <= 0 and NaN
+    if (off_node(x, a.front(), a.front())) clamped = true;
+    return {};
+  }
+  if (x >= a.back()) {
+    if (off_node(x, a.back(), a.back())) clamped = true;
+    return {a.size() - 2, 1.0};
+  }
+  const std::size_t hi = static_cast<std::size_t>(std::upper_bound(a.begin(), a.end(), x) - a.begin());
+  const std::size_t lo = hi - 1;
+  return {lo, std::log(x / a[lo]) / std::log(a[hi] / a[lo])};
+}
+
+// Position of x on a linear axis (the signed charges): on a node within 1e-9 of max(|node|, the span).
+AxisPos locate_linear(const std::vector<double>& a, double x, bool& clamped) {
   const double span = a.back() - a.front();
-  const auto scale = [&](double node) { return log ? node : std::max(std::abs(node), span); };
+  const auto scale = [span](double node) { return std::max(std::abs(node), span); };
   if (a.size() == 1) {
     if (off_node(x, a[0], scale(a[0]))) clamped = true;
     return {};
   }
-  if (!(x > a.front())) {  // also NaN (and x <= 0 on a log axis)
+  if (!(x > a.front())) {  // also NaN
     if (off_node(x, a.front(), scale(a.front()))) clamped = true;
     return {};
   }
@@ -43,7 +62,7 @@ AxisPos locate(const std::vector<double>& a, double x, bool log, bool& clamped) 
   }
   const std::size_t hi = static_cast<std::size_t>(std::upper_bound(a.begin(), a.end(), x) - a.begin());
   const std::size_t lo = hi - 1;
-  return {lo, log ? std::log(x / a[lo]) / std::log(a[hi] / a[lo]) : (x - a[lo]) / (a[hi] - a[lo])};
+  return {lo, (x - a[lo]) / (a[hi] - a[lo])};
 }
 
 const io::Variable& variable(const io::Dataset& d, const char* name, const std::vector<std::string>& dims,
@@ -94,34 +113,30 @@ void check_probabilities(const OutcomeTable& t) {
 // interpolation sum (bit k of the corner number: upper node along the k-th present axis).
 struct Corners {
   static constexpr std::size_t kMax = std::size_t{1} << kOutcomeAxisCount;
-  std::array<std::size_t, kMax> i{};
-  std::array<double, kMax> w{};
+  std::array<std::size_t, kMax> i;  // the first `count` are set (not zeroed: 1 KB per query)
+  std::array<double, kMax> w;
   std::size_t count = 0;
   bool clamped = false;
 };
 
-// The query's coordinates on the axes, the pair ordered by diameter (partner 1 the smaller).
-std::array<double, kOutcomeAxisCount> coordinates(const OutcomeQuery& q) {
-  const bool swap = q.d_j < q.d_i;
-  return {q.speed,
-          swap ? q.d_j : q.d_i,
-          swap ? q.d_i : q.d_j,
-          swap ? q.sigma_j : q.sigma_i,
-          swap ? q.sigma_i : q.sigma_j,
-          q.permittivity};
+// The 8 corners of a table of the three required axes (the lookup of before the optional axes, unchanged).
+void corners3(const OutcomeTable& t, const std::array<AxisPos, kOutcomeAxisCount>& pos, Corners& r) {
+  const AxisPos &pv = pos[0], &p1 = pos[1], &p2 = pos[2];
+  const std::size_t n1 = t.axes[1].size(), n2 = t.axes[2].size();
+  for (int c = 0; c < 8; ++c) {
+    const int bv = c & 1, b1 = (c >> 1) & 1, b2 = (c >> 2) & 1;
+    const double w = (bv ? pv.w : 1.0 - pv.w) * (b1 ? p1.w : 1.0 - p1.w) * (b2 ? p2.w : 1.0 - p2.w);
+    if (w == 0.0) continue;
+    r.i[r.count] = ((pv.lo + static_cast<std::size_t>(bv)) * n1 + p1.lo + static_cast<std::size_t>(b1)) * n2 + p2.lo +
+                   static_cast<std::size_t>(b2);
+    r.w[r.count++] = w;
+  }
 }
 
-Corners corners_of(const OutcomeTable& t, const OutcomeQuery& q) {
-  Corners r;
-  const auto x = coordinates(q);
-  std::array<AxisPos, kOutcomeAxisCount> pos{};
-  std::array<std::size_t, kOutcomeAxisCount> present{}, stride{};
-  std::size_t m = 0;
-  for (std::size_t k = 0; k < kOutcomeAxisCount; ++k) {
-    if (!t.has_axis(k)) continue;
-    pos[m] = locate(t.axes[k], x[k], kOutcomeAxisLog[k], r.clamped);
-    present[m++] = k;
-  }
+// The 2^m corners over the m present axes `present` (in order), weights multiplied axis by axis.
+void corners_n(const OutcomeTable& t, const std::array<AxisPos, kOutcomeAxisCount>& pos,
+               const std::array<std::size_t, kOutcomeAxisCount>& present, std::size_t m, Corners& r) {
+  std::array<std::size_t, kOutcomeAxisCount> stride{};
   std::size_t s = 1;  // row-major strides of the present axes
   for (std::size_t a = m; a-- > 0;) {
     stride[a] = s;
@@ -139,6 +154,32 @@ Corners corners_of(const OutcomeTable& t, const OutcomeQuery& q) {
     r.i[r.count] = i;
     r.w[r.count++] = w;
   }
+}
+
+// The pair is ordered by diameter (partner 1 the smaller), its charge with it.
+Corners corners_of(const OutcomeTable& t, const OutcomeQuery& q) {
+  Corners r;
+  const bool swap = q.d_j < q.d_i;
+  std::array<AxisPos, kOutcomeAxisCount> pos{};
+  std::array<std::size_t, kOutcomeAxisCount> present = {kSpeedAxis, kDiameter1Axis, kDiameter2Axis, 0, 0, 0};
+  pos[0] = locate_log(t.axes[kSpeedAxis], q.speed, r.clamped);
+  pos[1] = locate_log(t.axes[kDiameter1Axis], swap ? q.d_j : q.d_i, r.clamped);
+  pos[2] = locate_log(t.axes[kDiameter2Axis], swap ? q.d_i : q.d_j, r.clamped);
+  std::size_t m = kRequiredOutcomeAxes;
+  if (t.has_axis(kCharge1Axis)) {
+    pos[m] = locate_linear(t.axes[kCharge1Axis], swap ? q.sigma_j : q.sigma_i, r.clamped);
+    present[m++] = kCharge1Axis;
+    pos[m] = locate_linear(t.axes[kCharge2Axis], swap ? q.sigma_i : q.sigma_j, r.clamped);
+    present[m++] = kCharge2Axis;
+  }
+  if (t.has_axis(kPermittivityAxis)) {
+    pos[m] = locate_log(t.axes[kPermittivityAxis], q.permittivity, r.clamped);
+    present[m++] = kPermittivityAxis;
+  }
+  if (m == kRequiredOutcomeAxes)
+    corners3(t, pos, r);
+  else
+    corners_n(t, pos, present, m, r);
   return r;
 }
 
