@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "agglo/acoustics/checkpoint.hpp"
+#include "agglo/acoustics/outcome_table.hpp"
 #include "agglo/core/error.hpp"
 #include "helpers.hpp"
+#include "outcome_table_helpers.hpp"
 
 namespace agglo::acoustics {
 namespace {
@@ -143,8 +145,25 @@ std::string fractal_sound_case() {
   return s;
 }
 
+// sound_case with charged fines (sigma = 1e-5 C/m^2) and a dry table whose P_stick depends on the charges
+// (docs/acoustics.md §1.7): the samples' charges are saved too.
+std::string charged_sound_case() {
+  OutcomeTable t;
+  t.axes = {std::vector<double>{1e-4, 100.0}, {1e-9, 1e-3}, {1e-9, 1e-3}, {-1e-3, 1e-3}, {-1e-3, 1e-3}, {}};
+  for (int node = 0; node < 32; ++node) {
+    t.p_stick.push_back((node & 2) ? 0.9 : 0.1);  // bit 1: the upper node of charge_1
+    t.p_bounce.push_back(1.0 - t.p_stick.back());
+    t.p_break.push_back(0.0);
+  }
+  const std::string file = test::write_table_dataset(outcome_table_dataset(t), "checkpoint_charged").string();
+  std::string s = sound_case(fmt::format("[outcomes]\ndry_model = \"table\"\ntable = \"{}\"\n", file));
+  const std::string fines = "samples = 1500\n";
+  s.insert(s.find(fines) + fines.size(), "charge_density = 1e-5\n");
+  return s;
+}
+
 TEST(AcousticCheckpoint, SaveLoadSaveGivesTheSameBytes) {
-  for (const std::string& toml : {sound_case(), binned_case(), fractal_sound_case()}) {
+  for (const std::string& toml : {sound_case(), binned_case(), fractal_sound_case(), charged_sound_case()}) {
     const AcousticCase c = test::parse_case(toml);
     Engine e(c.engine);
     for (int s = 0; s < 37; ++s) e.step();
@@ -157,6 +176,7 @@ TEST(AcousticCheckpoint, SaveLoadSaveGivesTheSameBytes) {
     io::CheckpointWriter w2;
     save_engine(fresh, w2);
     EXPECT_EQ(fresh.step_index(), 37u);
+    EXPECT_EQ(fresh.particles().q, e.particles().q);  // charged case: the charges; else both empty
     EXPECT_TRUE(w1.bytes() == w2.bytes());
     // and the reloaded engine goes on exactly as the original
     e.step();

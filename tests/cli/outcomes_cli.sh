@@ -39,6 +39,24 @@ $A -q --no-plots acoustic "$AC" --set time.end=0.005 --set "output.psd_times=[0.
   --set "output.snapshot_times=[0.0]" --set outcomes.dry_model=table --set "outcomes.table=\"$T/oc/results.nc\"" \
   --seeds 2 --threads 2 --out "$T/ac2" > /dev/null 2> "$T/ac2.err" || fail "acoustic --seeds 2 with the table failed"
 grep -q "HDF5-DIAG" "$T/ac2.err" && fail "HDF5-DIAG lines on stderr: $(head -c 300 "$T/ac2.err")"
+# Charge axes (docs/outcomes.md "Charge and permittivity"): 1 speed x 1 x 1 diameters x 2 x 2 charges, head-on;
+# opposite charges stick at 0.8 m/s, like charges bounce; the DSMC reads the table with a charged population.
+$A -q outcomes "$O" --set "outcome_grid.speeds=[0.8]" --set "outcome_grid.diameters=[1e-6]" --set outcome_grid.impacts=1 \
+  --set outcome_grid.max_offset=0 --set "outcome_grid.charges=[-5e-5, 5e-5]" --set electrostatics.min_gap=0.05 \
+  --out "$T/och" > /dev/null 2>&1 || fail "charged outcomes failed"
+/usr/bin/python3 - "$T/och/outcomes.csv" <<'PY' || fail "charged outcomes.csv"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 4, rows
+stick = {(float(r["charge_1"]), float(r["charge_2"])): float(r["p_stick"]) for r in rows}
+assert stick[(-5e-5, 5e-5)] == 1 and stick[(5e-5, -5e-5)] == 1, stick
+assert stick[(-5e-5, -5e-5)] == 0 and stick[(5e-5, 5e-5)] == 0, stick
+PY
+grep -q "sigma1=-5e-05 sigma2=5e-05" "$T/och/journal.jsonl" || fail "charged journal keys"
+$A -q --no-plots acoustic "$AC" --set time.end=0.002 --set "output.psd_times=[0.0,0.002]" \
+  --set "output.snapshot_times=[0.0]" --set outcomes.dry_model=table --set "outcomes.table=\"$T/och/results.nc\"" \
+  --set population.0.charge_density=2e-5 --out "$T/acq" > /dev/null 2>&1 || fail "acoustic with a charged population failed"
+grep -q "dry outcome table: queries=" "$T/acq/run.log" || fail "charged run.log does not count the table queries"
 # Refusals.
 sed 's/^\[time\]/[[particles]]\nposition = [5e-6, 0.0, 0.0]\nradius = 1e-6\n\n[time]/' "$O" > "$T/bad.toml"
 refused outcomes "needs a one-sphere target" "two-sphere target"

@@ -4,6 +4,7 @@
 // and the table read back by the DSMC's reader.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -156,4 +157,30 @@ TEST(OutcomeAggregates, FragmentMeansOverTheBreaks) {
   EXPECT_EQ(t.largest_fraction[0], 0.2);  // raised by the rounding error
   t = tabulate_outcomes(s, out, {5.0, 9.0, 5.0}, {0.19, 0.9, 0.19});
   EXPECT_EQ(t.largest_fraction[0], 0.19);  // a real violation is kept (and refused by the DSMC's reader)
+}
+
+// Charge axes with aggregate partners (docs/outcomes.md "Charge and permittivity"): each partner's charge
+// sigma pi d^2 (d = 2 a N^(1/3)) spread evenly over its primaries, the permittivity on every primary; the
+// DEM particles carry them (place_structure).
+TEST(OutcomeAggregates, ChargeIsSpreadEvenlyOverThePrimaries) {
+  const AggParsed p = parse_aggregates("speeds = [0.3]\nprimaries = [2, 4]\nimpacts = 1\n"
+                                       "charges = [-5e-5, 2e-5]\npermittivities = [3.0]\n");
+  for (const auto& j : outcome_impacts(p.grid)) {
+    const ImpactCase c = outcome_case(p.dem, p.grid, j);
+    const std::array<const AgglomerateSpec*, 2> partners = {&c.agglomerate, &c.projectile.body};
+    const std::array<std::size_t, 2> sizes = {j.i1, j.i2}, charges = {j.c1, j.c2};
+    for (std::size_t k = 0; k < 2; ++k) {
+      const auto& s = partners[k]->structure;
+      ASSERT_EQ(s.size(), static_cast<std::size_t>(p.grid.primaries[sizes[k]]));
+      const double d = p.grid.diameters[sizes[k]], q = p.grid.charges[charges[k]] * constants::pi * d * d;
+      double sum = 0.0;
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        EXPECT_DOUBLE_EQ(s.charge[i], q / static_cast<double>(s.size()));
+        EXPECT_EQ(s.permittivity[i], 3.0);
+        sum += s.charge[i];
+      }
+      EXPECT_NEAR(sum, q, 1e-15 * std::abs(q));
+    }
+    EXPECT_TRUE(c.electrostatics);
+  }
 }

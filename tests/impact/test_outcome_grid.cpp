@@ -15,6 +15,7 @@
 #include "agglo/core/error.hpp"
 #include "agglo/dem/jkr.hpp"
 #include "agglo/impact/outcome_grid.hpp"
+#include "sphere_grid_helpers.hpp"
 
 using namespace agglo;
 using namespace agglo::impact;
@@ -46,25 +47,12 @@ after_contact = 1e-4
 )" + grid;
 }
 
-struct Parsed {
-  ImpactCase dem;
-  OutcomeGridSpec grid;
-};
+using Parsed = test::SphereGrid;
 Parsed parse_pair(const std::string& grid, const std::string& damping = "damping = \"none\"") {
-  Config cfg = Config::from_string(pair_case(grid, damping), "pair.toml");
-  Parsed p{parse_impact_case(cfg, true), {}};
-  check_sphere_sphere(cfg.root(), p.dem);
-  p.grid = parse_outcome_grid(cfg.root());
-  cfg.check_unknown_keys();
-  return p;
+  return test::parse_sphere_grid(pair_case(grid, damping));
 }
 
-OutcomeGridResult run_grid(const Parsed& p) {
-  std::vector<PairOutcome> out;
-  for (const auto& j : outcome_impacts(p.grid))
-    out.push_back(classify_pair(run_impact(outcome_case(p.dem, p.grid, j), outcome_launch_speed(p.grid, j))));
-  return tabulate_outcomes(p.grid, out);
-}
+OutcomeGridResult run_grid(const Parsed& p) { return test::run_sphere_grid(p); }
 
 // Head-on (max_offset = 0) equal spheres at speeds 0.875-1.125 v in steps of 5 % around the expected
 // sticking speed v (none at v itself, where the discrete outcome is not monotonic within 0.1 %,

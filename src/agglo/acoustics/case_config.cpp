@@ -88,6 +88,9 @@ PopulationSpec parse_population(const ConfigSection& s) {
   p.conserving_rounding = k.weight_rounding.read(s) == "conserving";
   parse_distribution(s, dist, p);
   parse_structure(s, p);
+  p.charged = k.charge_density.present(s);
+  if (p.charged) p.charge_density = k.charge_density.read(s);
+  if (k.permittivity.present(s)) p.permittivity = k.permittivity.read(s);
   return p;
 }
 
@@ -288,6 +291,26 @@ void parse_dry_model(const ConfigSection& o, const std::string& case_file, Outco
   oc.dry_table = std::make_shared<const OutcomeTable>(std::move(t));
 }
 
+// Charge and permittivity enter only the lookup of a dry outcome table with those axes
+// (outcome_table.hpp): a population declaring them without such a table is refused naming its key.
+void check_charged_populations(const ConfigSection& root, EngineSettings& e) {
+  const auto& k = keys().population;
+  const OutcomeTable* t = e.outcomes.dry_model == DryModel::table ? e.outcomes.dry_table.get() : nullptr;
+  for (const ConfigSection& s : k.t.elements(root)) {
+    if (k.charge_density.present(s) && !(t && t->charged()))
+      k.charge_density.reject(s, fmt::format("charge enters only the lookup of a dry outcome table with axes '{}' and "
+                                             "'{}' ({} = \"{}\", docs/acoustics.md §1.7); this run has none",
+                                             kOutcomeAxes[kCharge1Axis], kOutcomeAxes[kCharge2Axis],
+                                             keys().outcomes.dry_model.dotted(), settings::kDryTable));
+    if (k.permittivity.present(s) && !(t && t->has_axis(kPermittivityAxis)))
+      k.permittivity.reject(s, fmt::format("enters only the lookup of a dry outcome table with the axis '{}' "
+                                           "(docs/acoustics.md §1.7); this run has none",
+                                           kOutcomeAxes[kPermittivityAxis]));
+  }
+  if (t && t->has_axis(kPermittivityAxis))
+    for (const PopulationSpec& p : e.populations) e.outcomes.permittivities.push_back(p.permittivity);
+}
+
 void parse_outcomes(const ConfigSection& root, const std::string& case_file, OutcomeParams& oc) {
   const auto& k = keys().outcomes;
   ConfigSection o = k.t.open(root);
@@ -335,6 +358,7 @@ AcousticCase parse_acoustic_case(Config& cfg) {
   parse_sampling(root, c);
   parse_kernels(root, e);
   parse_outcomes(root, c.file, e.outcomes);
+  check_charged_populations(root, e);
   parse_output(root, e.t_end, c.output);
   cfg.check_unknown_keys();
   return c;

@@ -93,12 +93,25 @@ void CellEvents::compensate(std::size_t i, std::size_t j) {
 // Dry pair (i, j) at normal speed gn: sticks below the critical velocity, else bounces; or drawn from the
 // outcome table with one uniform u: sticks if u < P_stick, breaks if u < P_stick + P_break, else bounces.
 // Diameters are volume-equivalent (structure.hpp; the kernels' d in compact runs).
+OutcomeQuery CellEvents::table_query(std::size_t i, std::size_t j, double gn) const {
+  OutcomeQuery q{gn, p.volume_diameter(i), p.volume_diameter(j)};
+  if (p.carries_charge) {
+    q.sigma_i = p.q[i] / (constants::pi * q.d_i * q.d_i);
+    q.sigma_j = p.q[j] / (constants::pi * q.d_j * q.d_j);
+  }
+  if (!oc.permittivities.empty())
+    q.permittivity = 0.5 * (oc.permittivities[static_cast<std::size_t>(p.pop[i])] +
+                            oc.permittivities[static_cast<std::size_t>(p.pop[j])]);
+  return q;
+}
+
 CollisionOutcome CellEvents::dry_outcome(std::size_t i, std::size_t j, double gn) {
-  const double di = p.volume_diameter(i), dj = p.volume_diameter(j);
-  if (oc.dry_model == DryModel::critical_velocity)
+  if (oc.dry_model == DryModel::critical_velocity) {
+    const double di = p.volume_diameter(i), dj = p.volume_diameter(j);
     return gn <= critical_velocity_dry(oc, di, dj, p.rho[i], p.rho[j]) ? CollisionOutcome::stick
                                                                         : CollisionOutcome::bounce;
-  const OutcomeProbabilities pr = oc.dry_table->at(gn, di, dj);
+  }
+  const OutcomeProbabilities pr = oc.dry_table->at(table_query(i, j, gn));
   ++st.table_queries;
   if (pr.clamped) ++st.table_clamped;
   const double u = rng.uniform();
@@ -132,7 +145,7 @@ void CellEvents::collide(std::size_t i, std::size_t j) {
     if (p.w[j] <= 0.0) refill(j);
   } else if (out == CollisionOutcome::brk) {  // only dry pairs with a table (weights stay >= 1: no refill)
     ++st.breakups[static_cast<int>(type)];
-    break_weighted(p, i, j, oc.dry_table->fragments_at(gn, p.volume_diameter(i), p.volume_diameter(j)), rng, *ctx.gas,
+    break_weighted(p, i, j, oc.dry_table->fragments_at(table_query(i, j, gn)), rng, *ctx.gas,
                    *ctx.sound);
   } else {
     ++st.rebounds[static_cast<int>(type)];

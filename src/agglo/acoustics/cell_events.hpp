@@ -32,6 +32,9 @@ class CellEvents {
   void refill(std::size_t dead);
   void compensate(std::size_t i, std::size_t j);
   CollisionOutcome dry_outcome(std::size_t i, std::size_t j, double gn);
+  // The outcome table's query of pair (i, j) at normal speed gn: volume-equivalent diameters, surface
+  // charge densities q / (pi d_v^2) (samples carrying charge), mean kappa_p of the two populations.
+  OutcomeQuery table_query(std::size_t i, std::size_t j, double gn) const;
 
   SampleSet& p;
   const std::uint32_t* idx;

@@ -9,7 +9,9 @@ namespace agglo::acoustics {
 namespace {
 
 // The layouts below list every field; a field added to one of these types must be added here too.
-static_assert(sizeof(SampleSet) == 32 * sizeof(std::vector<double>), "SampleSet changed: update each_array");
+// 33 vectors and the flag carries_charge (padded to the vectors' alignment).
+static_assert(sizeof(SampleSet) == 33 * sizeof(std::vector<double>) + alignof(std::vector<double>),
+              "SampleSet changed: update each_array");
 static_assert(sizeof(CellBounds) == 17 * sizeof(double), "CellBounds changed: update save_bounds");
 static_assert(sizeof(BinnedGroup) == 2 * sizeof(std::vector<std::uint32_t>) + sizeof(CellBounds) + 8,
               "BinnedGroup changed: update save_groups");
@@ -29,6 +31,7 @@ void each_array(S& p, F&& f) {
   f(p.id);
   if (p.structured())  // aggregate structure (structure.hpp): set by the case, so save and load agree
     for (auto* v : {&p.np, &p.rp, &p.dm}) f(*v);
+  if (p.carries_charge) f(p.q);  // charge (samples.hpp): set by the case, so save and load agree
 }
 
 template <class T>

@@ -40,6 +40,8 @@ Engine::Engine(EngineSettings s)
     : s_(std::move(s)), kernel_(s_.kernel, s_.motion.gas, s_.motion.sound) {
   substeps_ = std::max(1, static_cast<int>(std::lround(s_.collision_dt / s_.motion_dt)));
   p_.structure_laws = structure_laws_of(s_.populations);
+  p_.carries_charge = std::any_of(s_.populations.begin(), s_.populations.end(),
+                                  [](const PopulationSpec& pop) { return pop.charged; });
   for (std::size_t k = 0; k < s_.populations.size(); ++k)
     sampled_.push_back(sample_population(s_.populations[k], static_cast<int>(k), s_.motion.domain, s_.seed,
                                          s_.motion.gas, s_.motion.sound, p_, s_.sampling));

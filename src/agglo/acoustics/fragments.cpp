@@ -31,6 +31,7 @@ void set_fragments(SampleSet& p, std::size_t k, const Merged& m, double count, d
     p.np[k] = share * m.primaries.count;
     p.rp[k] = m.primaries.radius;
   }
+  if (p.carries_charge) p.q[k] = share * m.charge;  // charge in proportion to mass
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ Merged merged_state(const SampleSet& p, std::size_t i, std::size_t j) {
              (mi * p.vz[i] + mj * p.vz[j]) / m.mass};
   m.pop = p.volume(i) >= p.volume(j) ? p.pop[i] : p.pop[j];
   if (p.structured()) m.primaries = merged_primaries(p.np[i], p.rp[i], p.np[j], p.rp[j]);
+  if (p.carries_charge) m.charge = p.q[i] + p.q[j];
   return m;
 }
 
@@ -32,6 +33,7 @@ void assign(SampleSet& p, std::size_t k, const Merged& m) {
     p.np[k] = m.primaries.count;
     p.rp[k] = m.primaries.radius;
   }
+  if (p.carries_charge) p.q[k] = m.charge;
 }
 bool is_odd_integer(double w) { return w == std::floor(w) && std::fmod(w, 2.0) == 1.0; }
 }  // namespace

@@ -27,6 +27,7 @@ struct Merged {
   Vec3 v;
   int pop;
   Primaries primaries;  // n_p, r_p of the merged particle (structured runs only; else 0)
+  double charge = 0.0;  // q_i + q_j [C] (samples carrying charge only; else 0)
 };
 Merged merged_state(const SampleSet& p, std::size_t i, std::size_t j);
 

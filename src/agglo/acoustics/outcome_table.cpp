@@ -23,24 +23,46 @@ struct AxisPos {
 // reach a node only up to rounding): clamped to it, but not counted as outside.
 constexpr double kOnNode = 1e-9;
 
-bool off_node(double x, double node) { return !(std::abs(x - node) <= kOnNode * node); }
+bool off_node(double x, double node, double scale) { return !(std::abs(x - node) <= kOnNode * scale); }
 
+// Position of x on a log axis (speed, diameters, permittivity); `clamped` is set when x lies off it.
 AxisPos locate_log(const std::vector<double>& a, double x, bool& clamped) {
   if (a.size() == 1) {
-    if (off_node(x, a[0])) clamped = true;
+    if (off_node(x, a[0], a[0])) clamped = true;
     return {};
   }
   if (!(x > a.front())) {  // also x <= 0 and NaN
-    if (off_node(x, a.front())) clamped = true;
+    if (off_node(x, a.front(), a.front())) clamped = true;
     return {};
   }
   if (x >= a.back()) {
-    if (off_node(x, a.back())) clamped = true;
+    if (off_node(x, a.back(), a.back())) clamped = true;
     return {a.size() - 2, 1.0};
   }
   const std::size_t hi = static_cast<std::size_t>(std::upper_bound(a.begin(), a.end(), x) - a.begin());
   const std::size_t lo = hi - 1;
   return {lo, std::log(x / a[lo]) / std::log(a[hi] / a[lo])};
+}
+
+// Position of x on a linear axis (the signed charges): on a node within 1e-9 of max(|node|, the span).
+AxisPos locate_linear(const std::vector<double>& a, double x, bool& clamped) {
+  const double span = a.back() - a.front();
+  const auto scale = [span](double node) { return std::max(std::abs(node), span); };
+  if (a.size() == 1) {
+    if (off_node(x, a[0], scale(a[0]))) clamped = true;
+    return {};
+  }
+  if (!(x > a.front())) {  // also NaN
+    if (off_node(x, a.front(), scale(a.front()))) clamped = true;
+    return {};
+  }
+  if (x >= a.back()) {
+    if (off_node(x, a.back(), scale(a.back()))) clamped = true;
+    return {a.size() - 2, 1.0};
+  }
+  const std::size_t hi = static_cast<std::size_t>(std::upper_bound(a.begin(), a.end(), x) - a.begin());
+  const std::size_t lo = hi - 1;
+  return {lo, (x - a[lo]) / (a[hi] - a[lo])};
 }
 
 const io::Variable& variable(const io::Dataset& d, const char* name, const std::vector<std::string>& dims,
@@ -60,11 +82,13 @@ std::vector<double> values_of(const io::Variable& v) {
   return {v.ints.begin(), v.ints.end()};
 }
 
-void check_axis(const char* name, const std::vector<double>& a) {
+void check_axis(std::size_t axis, const std::vector<double>& a) {
+  const char* name = kOutcomeAxes[axis];
   if (a.empty()) throw std::invalid_argument(fmt::format("axis '{}' is empty", name));
   for (std::size_t k = 0; k < a.size(); ++k) {
-    if (!(a[k] > 0.0) || !std::isfinite(a[k]))
-      throw std::invalid_argument(fmt::format("axis '{}' value {} = {} is not a positive number", name, k, a[k]));
+    if (!std::isfinite(a[k]) || (kOutcomeAxisLog[axis] && !(a[k] > 0.0)))
+      throw std::invalid_argument(fmt::format("axis '{}' value {} = {} is not a {}number", name, k, a[k],
+                                              kOutcomeAxisLog[axis] ? "positive " : "finite "));
     if (k > 0 && !(a[k] > a[k - 1]))
       throw std::invalid_argument(fmt::format("axis '{}' is not strictly increasing at value {} ({} after {})", name,
                                               k, a[k], a[k - 1]));
@@ -86,27 +110,76 @@ void check_probabilities(const OutcomeTable& t) {
 }
 
 // The corners of the cell enclosing a query with a non-zero weight (prod_k w_k), in the order of the
-// interpolation sum.
+// interpolation sum (bit k of the corner number: upper node along the k-th present axis).
 struct Corners {
-  std::array<std::size_t, 8> i{};
-  std::array<double, 8> w{};
+  static constexpr std::size_t kMax = std::size_t{1} << kOutcomeAxisCount;
+  std::array<std::size_t, kMax> i;  // the first `count` are set (not zeroed: 1 KB per query)
+  std::array<double, kMax> w;
   std::size_t count = 0;
   bool clamped = false;
 };
 
-Corners corners_of(const OutcomeTable& t, double v, double di, double dj) {
-  Corners r;
-  const AxisPos pv = locate_log(t.axes[0], v, r.clamped);
-  const AxisPos p1 = locate_log(t.axes[1], std::min(di, dj), r.clamped);
-  const AxisPos p2 = locate_log(t.axes[2], std::max(di, dj), r.clamped);
+// The 8 corners of a table of the three required axes (the lookup of before the optional axes, unchanged).
+void corners3(const OutcomeTable& t, const std::array<AxisPos, kOutcomeAxisCount>& pos, Corners& r) {
+  const AxisPos &pv = pos[0], &p1 = pos[1], &p2 = pos[2];
+  const std::size_t n1 = t.axes[1].size(), n2 = t.axes[2].size();
   for (int c = 0; c < 8; ++c) {
     const int bv = c & 1, b1 = (c >> 1) & 1, b2 = (c >> 2) & 1;
     const double w = (bv ? pv.w : 1.0 - pv.w) * (b1 ? p1.w : 1.0 - p1.w) * (b2 ? p2.w : 1.0 - p2.w);
     if (w == 0.0) continue;
-    r.i[r.count] = t.index(pv.lo + static_cast<std::size_t>(bv), p1.lo + static_cast<std::size_t>(b1),
-                           p2.lo + static_cast<std::size_t>(b2));
+    r.i[r.count] = ((pv.lo + static_cast<std::size_t>(bv)) * n1 + p1.lo + static_cast<std::size_t>(b1)) * n2 + p2.lo +
+                   static_cast<std::size_t>(b2);
     r.w[r.count++] = w;
   }
+}
+
+// The 2^m corners over the m present axes `present` (in order), weights multiplied axis by axis.
+void corners_n(const OutcomeTable& t, const std::array<AxisPos, kOutcomeAxisCount>& pos,
+               const std::array<std::size_t, kOutcomeAxisCount>& present, std::size_t m, Corners& r) {
+  std::array<std::size_t, kOutcomeAxisCount> stride{};
+  std::size_t s = 1;  // row-major strides of the present axes
+  for (std::size_t a = m; a-- > 0;) {
+    stride[a] = s;
+    s *= t.axes[present[a]].size();
+  }
+  for (std::size_t c = 0; c < (std::size_t{1} << m); ++c) {
+    double w = 1.0;
+    std::size_t i = 0;
+    for (std::size_t a = 0; a < m; ++a) {
+      const bool up = (c >> a) & 1U;
+      w = a == 0 ? (up ? pos[a].w : 1.0 - pos[a].w) : w * (up ? pos[a].w : 1.0 - pos[a].w);
+      i += (pos[a].lo + static_cast<std::size_t>(up)) * stride[a];
+    }
+    if (w == 0.0) continue;
+    r.i[r.count] = i;
+    r.w[r.count++] = w;
+  }
+}
+
+// The pair is ordered by diameter (partner 1 the smaller), its charge with it.
+Corners corners_of(const OutcomeTable& t, const OutcomeQuery& q) {
+  Corners r;
+  const bool swap = q.d_j < q.d_i;
+  std::array<AxisPos, kOutcomeAxisCount> pos{};
+  std::array<std::size_t, kOutcomeAxisCount> present = {kSpeedAxis, kDiameter1Axis, kDiameter2Axis, 0, 0, 0};
+  pos[0] = locate_log(t.axes[kSpeedAxis], q.speed, r.clamped);
+  pos[1] = locate_log(t.axes[kDiameter1Axis], swap ? q.d_j : q.d_i, r.clamped);
+  pos[2] = locate_log(t.axes[kDiameter2Axis], swap ? q.d_i : q.d_j, r.clamped);
+  std::size_t m = kRequiredOutcomeAxes;
+  if (t.has_axis(kCharge1Axis)) {
+    pos[m] = locate_linear(t.axes[kCharge1Axis], swap ? q.sigma_j : q.sigma_i, r.clamped);
+    present[m++] = kCharge1Axis;
+    pos[m] = locate_linear(t.axes[kCharge2Axis], swap ? q.sigma_i : q.sigma_j, r.clamped);
+    present[m++] = kCharge2Axis;
+  }
+  if (t.has_axis(kPermittivityAxis)) {
+    pos[m] = locate_log(t.axes[kPermittivityAxis], q.permittivity, r.clamped);
+    present[m++] = kPermittivityAxis;
+  }
+  if (m == kRequiredOutcomeAxes)
+    corners3(t, pos, r);
+  else
+    corners_n(t, pos, present, m, r);
   return r;
 }
 
@@ -130,9 +203,9 @@ void check_fragments(const OutcomeTable& t) {
 
 }  // namespace
 
-OutcomeProbabilities OutcomeTable::at(double v, double di, double dj) const {
+OutcomeProbabilities OutcomeTable::at(const OutcomeQuery& q) const {
   OutcomeProbabilities r;
-  const Corners c = corners_of(*this, v, di, dj);
+  const Corners c = corners_of(*this, q);
   r.clamped = c.clamped;
   for (std::size_t k = 0; k < c.count; ++k) {
     r.stick += c.w[k] * p_stick[c.i[k]];
@@ -142,9 +215,9 @@ OutcomeProbabilities OutcomeTable::at(double v, double di, double dj) const {
   return r;
 }
 
-FragmentStats OutcomeTable::fragments_at(double v, double di, double dj) const {
+FragmentStats OutcomeTable::fragments_at(const OutcomeQuery& q) const {
   if (fragments.empty()) return {};
-  const Corners c = corners_of(*this, v, di, dj);
+  const Corners c = corners_of(*this, q);
   double sw = 0.0, sn = 0.0, sf = 0.0;
   for (std::size_t k = 0; k < c.count; ++k) {
     const double a = c.w[k] * p_break[c.i[k]];
@@ -157,13 +230,25 @@ FragmentStats OutcomeTable::fragments_at(double v, double di, double dj) const {
   return {sn / sw, sf / sw};
 }
 
+std::vector<std::string> OutcomeTable::dimensions() const {
+  std::vector<std::string> dims;
+  for (std::size_t k = 0; k < kOutcomeAxisCount; ++k)
+    if (has_axis(k)) dims.emplace_back(kOutcomeAxes[k]);
+  return dims;
+}
+
 OutcomeTable outcome_table_from_dataset(const io::Dataset& d) {
   OutcomeTable t;
-  for (std::size_t k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < kOutcomeAxisCount; ++k) {
+    if (k >= kRequiredOutcomeAxes && !d.find(kOutcomeAxes[k])) continue;  // an absent optional axis
     t.axes[k] = values_of(variable(d, kOutcomeAxes[k], {kOutcomeAxes[k]}, kOutcomeAxisUnits[k]));
-    check_axis(kOutcomeAxes[k], t.axes[k]);
+    check_axis(k, t.axes[k]);
   }
-  const std::vector<std::string> dims(kOutcomeAxes.begin(), kOutcomeAxes.end());
+  if (t.has_axis(kCharge1Axis) != t.has_axis(kCharge2Axis))
+    throw std::invalid_argument(fmt::format("axis '{}' without axis '{}': a charged table has both",
+                                            kOutcomeAxes[t.has_axis(kCharge1Axis) ? kCharge1Axis : kCharge2Axis],
+                                            kOutcomeAxes[t.has_axis(kCharge1Axis) ? kCharge2Axis : kCharge1Axis]));
+  const std::vector<std::string> dims = t.dimensions();
   t.p_stick = values_of(variable(d, kOutcomeProbabilities[0], dims, "1"));
   t.p_bounce = values_of(variable(d, kOutcomeProbabilities[1], dims, "1"));
   t.p_break = values_of(variable(d, kOutcomeProbabilities[2], dims, "1"));
@@ -180,13 +265,12 @@ OutcomeTable outcome_table_from_dataset(const io::Dataset& d) {
 
 io::Dataset outcome_table_dataset(const OutcomeTable& t) {
   io::Dataset d;
-  static constexpr std::array<const char*, 3> axis_meaning = {
-      "normal relative speed at contact", "diameter of the smaller partner", "diameter of the larger partner"};
-  for (std::size_t k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < kOutcomeAxisCount; ++k) {
+    if (!t.has_axis(k)) continue;
     d.add_dim(kOutcomeAxes[k], t.axes[k].size());
-    d.add(kOutcomeAxes[k], {kOutcomeAxes[k]}, kOutcomeAxisUnits[k], axis_meaning[k], t.axes[k]);
+    d.add(kOutcomeAxes[k], {kOutcomeAxes[k]}, kOutcomeAxisUnits[k], kOutcomeAxisMeanings[k], t.axes[k]);
   }
-  const std::vector<std::string> dims(kOutcomeAxes.begin(), kOutcomeAxes.end());
+  const std::vector<std::string> dims = t.dimensions();
   d.add(kOutcomeProbabilities[0], dims, "1", "probability that the pair sticks", t.p_stick);
   d.add(kOutcomeProbabilities[1], dims, "1", "probability that the pair bounces", t.p_bounce);
   d.add(kOutcomeProbabilities[2], dims, "1", "probability that the pair breaks", t.p_break);

@@ -1,17 +1,27 @@
 #pragma once
 // A tabulated dry collision outcome (docs/acoustics.md §1.7): the probabilities P_stick, P_bounce and
-// P_break of a sphere-sphere collision on a grid of the normal relative speed v_n = |G.n| [m/s] and the
-// two partners' diameters d_1 <= d_2 [m] (the pair is queried with the smaller diameter first).
-// Between the nodes the probabilities are interpolated multilinearly in (ln v_n, ln d_1, ln d_2):
-//   P(x) = sum over the 8 corners c of the enclosing cell of  prod_k w_k(c) P_c,
-//   w_k = (ln x_k - ln a_k) / (ln b_k - ln a_k) towards the upper node b_k of axis k (1 - w_k for a_k),
-// which is exact for data that are linear in each of ln v_n, ln d_1 and ln d_2. A query outside an axis
-// is clamped to its end node and counted (a query within 1e-9 relative of an end node lies on it). An axis of one node holds the table constant along it.
-// File: NetCDF (io/netcdf_reader.hpp), dimensions `speed`, `diameter_1`, `diameter_2`, coordinate
-// variables of the same names in "m s-1", "m", "m" (strictly increasing, positive), and `p_stick`,
-// `p_bounce`, `p_break` (units "1", over (speed, diameter_1, diameter_2), each in [0, 1], their sum 1
-// within 1e-6 at every node); further variables (intervals, counts) and global attributes (provenance)
-// are kept but not used. `agglo outcomes` writes such a file (docs/outcomes.md).
+// P_break of a collision on a grid of the normal relative speed v_n = |G.n| [m/s], the two partners'
+// diameters d_1 <= d_2 [m] (the pair is queried with the smaller diameter first) and, optionally, their
+// surface charge densities sigma_1, sigma_2 [C/m^2] (partner 1 = the one of diameter d_1) and their relative
+// permittivity kappa_p [1] (docs/outcomes.md "Charge and permittivity"). The charge of a partner of
+// (volume-equivalent) diameter d is Q = sigma pi d^2 (sigma = Q / (pi d^2): for a sphere its surface charge
+// density; an aggregate's Q is spread evenly over its primaries), signed.
+// Between the nodes the probabilities are interpolated multilinearly over every axis the table has, in
+// ln v_n, ln d_1, ln d_2, sigma_1, sigma_2 (linear: signed) and ln kappa_p:
+//   P(x) = sum over the 2^m corners c of the enclosing cell of  prod_k w_k(c) P_c,
+//   w_k = (s(x_k) - s(a_k)) / (s(b_k) - s(a_k)) towards the upper node b_k of axis k (1 - w_k for a_k),
+// s = ln or the identity as listed, which is exact for data that are linear in each s(x_k). A query
+// outside an axis is clamped to its end node and counted (a query within 1e-9 relative of an end node
+// lies on it; on a linear axis relative to max(|node|, the axis' span)). An axis of one node holds the
+// table constant along it; an absent optional axis is not read at all (an uncharged table ignores
+// charges: the DSMC refuses charged populations with it, acoustics/case_config.cpp).
+// File: NetCDF (io/netcdf_reader.hpp), dimensions `speed`, `diameter_1`, `diameter_2` [, `charge_1`,
+// `charge_2`] [, `permittivity`] in this order (the charge axes both or neither), coordinate variables of
+// the same names in "m s-1", "m", "m", "C m-2", "C m-2", "1" (strictly increasing; positive except the
+// charges), and `p_stick`, `p_bounce`, `p_break` (units "1", over all the table's dimensions, each in
+// [0, 1], their sum 1 within 1e-6 at every node); further variables (intervals, counts) and global
+// attributes (provenance) are kept but not used. `agglo outcomes` writes such a file (docs/outcomes.md);
+// a 3-axis file (no charge or permittivity) is the format of before those axes, read unchanged.
 // Fragment statistics of a pair that breaks (required when P_break > 0 at some node, optional otherwise),
 // over the same dimensions, units "1": `fragments`, the mean number of fragments N_f of one broken pair,
 // and `largest_fraction`, the mean mass fraction f_L of its largest fragment. At the nodes with
@@ -22,6 +32,7 @@
 //   N_f(x) = sum_c W_c P_break,c N_f,c / sum_c W_c P_break,c   (and f_L alike),
 // W_c the corner weights above (by Jensen's inequality 1/N_f <= f_L still holds between the nodes).
 #include <array>
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -30,9 +41,21 @@
 
 namespace agglo::acoustics {
 
-// Names of the file's dimensions/coordinates and probability variables (written once, here).
-inline constexpr std::array<const char*, 3> kOutcomeAxes = {"speed", "diameter_1", "diameter_2"};
-inline constexpr std::array<const char*, 3> kOutcomeAxisUnits = {"m s-1", "m", "m"};
+// Names, units, meanings and interpolation space of the file's dimensions/coordinates (written once,
+// here), in the order of the file's dimensions; the first kRequiredOutcomeAxes are required.
+inline constexpr std::size_t kOutcomeAxisCount = 6, kRequiredOutcomeAxes = 3;
+enum OutcomeAxis : std::size_t { kSpeedAxis, kDiameter1Axis, kDiameter2Axis, kCharge1Axis, kCharge2Axis, kPermittivityAxis };
+inline constexpr std::array<const char*, kOutcomeAxisCount> kOutcomeAxes = {
+    "speed", "diameter_1", "diameter_2", "charge_1", "charge_2", "permittivity"};
+inline constexpr std::array<const char*, kOutcomeAxisCount> kOutcomeAxisUnits = {"m s-1", "m", "m", "C m-2", "C m-2", "1"};
+inline constexpr std::array<const char*, kOutcomeAxisCount> kOutcomeAxisMeanings = {
+    "normal relative speed at contact",
+    "diameter of the smaller partner",
+    "diameter of the larger partner",
+    "surface charge density Q / (pi d^2) of the partner of diameter_1",
+    "surface charge density Q / (pi d^2) of the partner of diameter_2",
+    "relative permittivity kappa_p of both partners"};
+inline constexpr std::array<bool, kOutcomeAxisCount> kOutcomeAxisLog = {true, true, true, false, false, true};
 inline constexpr std::array<const char*, 3> kOutcomeProbabilities = {"p_stick", "p_bounce", "p_break"};
 inline constexpr std::array<const char*, 2> kOutcomeFragmentStats = {"fragments", "largest_fraction"};
 inline constexpr std::array<const char*, 2> kOutcomeFragmentMeanings = {
@@ -49,26 +72,52 @@ struct FragmentStats {
   double number = 2.0, largest = 0.5;
 };
 
+// One pair's query: normal speed [m/s], both diameters [m] (any order), their surface charge densities
+// [C/m^2] (each with its own diameter) and the pair's relative permittivity.
+struct OutcomeQuery {
+  double speed = 0.0, d_i = 0.0, d_j = 0.0;
+  double sigma_i = 0.0, sigma_j = 0.0, permittivity = 1.0;
+};
+
 struct OutcomeTable {
-  std::array<std::vector<double>, 3> axes;  // speed [m/s], diameter_1 [m], diameter_2 [m], increasing
-  std::vector<double> p_stick, p_bounce, p_break;  // row-major over (speed, diameter_1, diameter_2)
+  // speed [m/s], diameter_1 [m], diameter_2 [m], charge_1, charge_2 [C/m^2], permittivity [1], increasing;
+  // an empty optional axis is absent (not a dimension of the file).
+  std::array<std::vector<double>, kOutcomeAxisCount> axes;
+  std::vector<double> p_stick, p_bounce, p_break;  // row-major over the present axes, in order
   std::vector<double> fragments, largest_fraction; // same layout; empty when the file has none
   std::string source;                              // file it was read from ("" when built in memory)
   std::string provenance;                          // the file's `provenance` attribute, if any
 
-  // Probabilities at normal speed v [m/s] and diameters di, dj [m] (any order: queried as (min, max)).
-  OutcomeProbabilities at(double v, double di, double dj) const;
-  // Fragment statistics given a break at (v, di, dj) (conditional interpolation above). Only for a
-  // query where P_break > 0; tables without fragment statistics give the default FragmentStats.
-  FragmentStats fragments_at(double v, double di, double dj) const;
-  std::size_t index(std::size_t iv, std::size_t i1, std::size_t i2) const {
-    return (iv * axes[1].size() + i1) * axes[2].size() + i2;
+  // Probabilities of query q (the pair ordered by diameter, its charges with it).
+  OutcomeProbabilities at(const OutcomeQuery& q) const;
+  // Uncharged pair of permittivity 1: normal speed v [m/s] and diameters di, dj [m] (any order).
+  OutcomeProbabilities at(double v, double di, double dj) const { return at(OutcomeQuery{v, di, dj}); }
+  // Fragment statistics given a break at q (conditional interpolation above). Only for a query where
+  // P_break > 0; tables without fragment statistics give the default FragmentStats.
+  FragmentStats fragments_at(const OutcomeQuery& q) const;
+  FragmentStats fragments_at(double v, double di, double dj) const { return fragments_at(OutcomeQuery{v, di, dj}); }
+  bool has_axis(std::size_t k) const { return !axes[k].empty(); }
+  bool charged() const { return has_axis(kCharge1Axis); }
+  // Row-major index of the node with axis indices ix (absent axes: index 0).
+  std::size_t index(const std::array<std::size_t, kOutcomeAxisCount>& ix) const {
+    std::size_t r = 0;
+    for (std::size_t k = 0; k < kOutcomeAxisCount; ++k)
+      if (has_axis(k)) r = r * axes[k].size() + ix[k];
+    return r;
   }
+  std::size_t index(std::size_t iv, std::size_t i1, std::size_t i2) const { return index({iv, i1, i2, 0, 0, 0}); }
+  std::size_t nodes() const {
+    std::size_t n = 1;
+    for (const auto& a : axes) n *= a.empty() ? 1 : a.size();
+    return n;
+  }
+  // The names of the present axes, in order (the dimensions of the table's variables).
+  std::vector<std::string> dimensions() const;
 };
 
 // The table held by `d`; std::invalid_argument with a one-line reason (naming the variable and the
 // offending value) when a variable is missing, has other dimensions or units, an axis is not
-// increasing and positive, a probability is outside [0, 1] or the three do not sum to 1, or a node with
+// increasing (or not positive, charges excepted), one charge axis is given without the other, a probability is outside [0, 1] or the three do not sum to 1, or a node with
 // P_break > 0 has no or invalid fragment statistics (N_f < 2, f_L outside [1/N_f, 1)).
 OutcomeTable outcome_table_from_dataset(const io::Dataset& d);
 

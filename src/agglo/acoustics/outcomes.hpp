@@ -10,6 +10,7 @@
 // G = v_i - v_j, n = unit vector from i to j at contact (approaching: G.n > 0).
 #include <array>
 #include <memory>
+#include <vector>
 
 #include "agglo/acoustics/outcome_table.hpp"
 #include "agglo/core/settings_acoustic.hpp"
@@ -39,6 +40,9 @@ struct OutcomeParams {
   bool energy_compensation = outcome_keys().energy_compensation.def();  // Zhao et al. 2023, eq. 30
   DryModel dry_model = DryModel::critical_velocity;
   std::shared_ptr<const OutcomeTable> dry_table;  // set when dry_model == table
+  // kappa_p by population, when the table has a permittivity axis (else empty): a pair is looked up at
+  // the mean of its two samples' populations' kappa_p (docs/acoustics.md §1.7).
+  std::vector<double> permittivities;
 };
 
 double critical_velocity_dry(const OutcomeParams& o, double di, double dj, double rhoi, double rhoj);

@@ -120,6 +120,10 @@ SampledPopulation sample_population(const PopulationSpec& s, int index, const Do
     const bool solid = s.phase == Phase::solid;
     const std::size_t i = p.add(0.0, 0.0, 0.0, solid ? vol : 0.0, solid ? 0.0 : vol, s.density * vol, w, index, gas, sound);
     if (solid && s.structure.fractal) p.set_primaries(i, s.structure.primary_radius, gas, sound);
+    if (p.carries_charge) {  // q = sigma pi d_v^2 (samples.hpp)
+      const double dv = p.volume_diameter(i);
+      p.q[i] = s.charge_density * constants::pi * dv * dv;
+    }
     out.weight_sum += w;
   }
   out.clone_factor = clone_factor(static_cast<std::int64_t>(diam.size()), dom.num_cells(), sampling.min_samples_per_cell);

@@ -50,6 +50,9 @@ struct PopulationSpec {
   long samples = 0;
   bool conserving_rounding = false;            // weight_rounding = "conserving"
   StructureLaw structure;                      // compact (default) or fractal aggregates (structure.hpp)
+  bool charged = false;                        // population.charge_density set
+  double charge_density = 0.0;                 // sigma [C/m^2]: q = sigma pi d_v^2 per particle at t = 0
+  double permittivity = 1.0;                   // kappa_p (outcome tables with a permittivity axis)
 };
 
 struct SampledPopulation {

@@ -74,6 +74,7 @@ std::size_t SampleSet::add(double x_, double y_, double z_, double vs, double vl
     rp.push_back(vs > 0.0 ? 0.5 * std::cbrt(6.0 * vs / constants::pi) : 0.0);
     dm.push_back(0.0);
   }
+  if (carries_charge) q.push_back(0.0);  // uncharged until its population sets it
   refresh(i, gas, sound);
   return i;
 }

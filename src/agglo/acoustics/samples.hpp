@@ -37,6 +37,13 @@ struct SampleSet {
   // 0 for a droplet), primary radius r_p [m], and the derived mobility diameter d_m [m].
   std::vector<double> np, rp, dm;
   std::vector<StructureLaw> structure_laws;  // by population; empty: every sample compact
+  // Charge (docs/acoustics.md §1.7, charged outcome tables): when some population declares a charge
+  // (carries_charge, set by the case before sampling) every sample carries the charge q of one real
+  // particle [C]; merging sums it (q_i + q_j), a broken pair's fragments share it in proportion to mass.
+  // Otherwise q stays empty and nothing else changes. Charge enters only the outcome table's lookup, at the
+  // sample's surface charge density q / (pi d_v^2).
+  bool carries_charge = false;
+  std::vector<double> q;
   // Derived caches.
   std::vector<double> d, rho;         // (collision) diameter [m], density m / (V_s + V_l) [kg/m^3]
   std::vector<double> cc;             // Cunningham slip correction
@@ -77,10 +84,12 @@ struct SampleSet {
 
  private:
   void refresh_structured(std::size_t i, const Gas& gas, const Sound& sound);
+  // The optional per-sample arrays: aggregate structure, charge.
   template <class F>
   void each_structure_array(F&& f) {
-    if (!structured()) return;
-    for (auto* v : {&np, &rp, &dm}) f(*v);
+    if (structured())
+      for (auto* v : {&np, &rp, &dm}) f(*v);
+    if (carries_charge) f(q);
   }
 };
 

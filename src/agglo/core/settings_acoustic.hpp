@@ -121,6 +121,19 @@ struct AcousticSettings {
                             "Sorensen's (2011) continuum r_p n_p^0.46",
                             "collision (absent: read only when set)"},
                            std::nullopt, {kMobilityCollision, kMobilitySorensen}};
+    // Charge and permittivity (docs/acoustics.md §1.7): read only when set; they enter only the lookup of a
+    // dry outcome table with charge / permittivity axes (acoustics/outcome_table.hpp).
+    Real charge_density{t,
+                        {"population.charge_density", "C/m^2",
+                         "surface charge density sigma of every particle at t = 0 (signed): charge sigma pi d^2, d "
+                         "the volume-equivalent diameter; summed on merging, shared by mass on breaking",
+                         "uncharged (absent: read only when set)"},
+                        std::nullopt, Range::closed(-1e-2, 1e-2)};
+    Real permittivity{t,
+                      {"population.permittivity", "",
+                       "relative permittivity kappa_p of the particles (an outcome table's permittivity axis)",
+                       "1 (absent: read only when set)"},
+                      std::nullopt, Range::open_closed(0.0, 1e6)};
   } population;
 
   struct Sampling {

@@ -19,6 +19,18 @@ struct OutcomesSettings {
     Reals primaries{t, {"outcome_grid.primaries", "", "primary counts of both aggregate partners (increasing; "
                                                        "instead of diameters)"},
                     std::nullopt, Range::closed(2.0, 1e5)};
+    // Read only when set (tables without them resolve as before).
+    Reals charges{t,
+                  {"outcome_grid.charges", "C/m^2",
+                   "surface charge densities sigma of each partner (signed, increasing): charge sigma pi d^2, d the "
+                   "(volume-equivalent) diameter",
+                   "the case's charges (no charge axes)"},
+                  std::nullopt, Range::closed(-1e-2, 1e-2)};
+    Reals permittivities{t,
+                         {"outcome_grid.permittivities", "",
+                          "relative permittivities kappa_p of both partners (increasing)",
+                          "the case's permittivities (no permittivity axis)"},
+                         std::nullopt, Range::open_closed(0.0, 1e6)};
     Integer impacts{t, {"outcome_grid.impacts", "", "impacts per grid node (sampled impact parameters)"}, 8, 1,
                     100000};
     Real max_offset{t, {"outcome_grid.max_offset", "", "largest impact parameter b / (r_1 + r_2); 0 = every impact head-on"},

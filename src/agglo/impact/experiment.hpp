@@ -4,6 +4,7 @@
 // classification (extended while undecided). The engine records time series and snapshots into a
 // Recorder; it never writes files itself.
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -63,6 +64,10 @@ struct ImpactOutcome {
   HoldErrorSummary es_hold_error;  // with electrostatics.force_tolerance > 0
   int wall_contacts = -1;    // particles touching a wall at the end (sticking); -1: the case has no wall
   Breakage breakage;         // fragments, damage, restructuring, rebound (breakage.hpp); set when contact
+  // Two charged spheres of agglo outcomes (ImpactCase::miss_is_outcome) at the end: relative kinetic plus
+  // point-charge Coulomb energy E = mu |v_1 - v_2|^2 / 2 + q_1 q_2 / (4 pi eps0 kappa_0 |x_1 - x_2|) [J];
+  // E < 0: the pair is bound and cannot separate for good. NaN otherwise.
+  double pair_energy = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Electrostatic coupling factory (defined in electrostatic_coupling.cpp).

@@ -118,6 +118,9 @@ struct ImpactCase {
   CouplingSettings coupling;    // [electrostatics]
   // [wall] (the wall itself is in dem.walls) and [gas] (dem.gas, dem.gravity): docs/dem.md "Gas and walls".
   bool wall_impact = false;     // the agglomerate moves onto the wall (no projectile)
+  // Derived, not a setting: a projectile that never touches ends the run without contact (an outcome:
+  // agglo outcomes with charge axes, where like charges can turn it back) instead of an InvalidRunError.
+  bool miss_is_outcome = false;
 };
 
 // [agglomerate] (with [[particles]] for shape = "list", the structure of impact/structure_target.hpp for

@@ -138,7 +138,11 @@ void ImpactRun::end_approach(bool touched) {
   guard();
   at_.contact = touched;
   at_.t_contact = since_launch();
-  if (!touched) missed();
+  if (!touched) {
+    if (!c_.miss_is_outcome) missed();
+    at_.phase = ImpactPhase::done;  // no contact: nothing to integrate further (ImpactCase::miss_is_outcome)
+    return;
+  }
   at_.phase = ImpactPhase::contact;
   at_.extensions = 0;
   at_.t_from = sys_.time();
@@ -237,6 +241,12 @@ ImpactOutcome ImpactRun::outcome() const {
   }
   out.steps = sys_.steps();
   if (!c_.dem.walls.empty()) out.wall_contacts = sys_.wall_contacts();
+  if (c_.miss_is_outcome && sys_.particles().size() == 2) {
+    const auto& p = sys_.particles();
+    const double mu = p.m[0] * p.m[1] / (p.m[0] + p.m[1]);
+    out.pair_energy = 0.5 * mu * norm2(p.v[0] - p.v[1]) +
+                      p.q[0] * p.q[1] / (4.0 * constants::pi * constants::eps0 * kappa0_ * norm(p.x[0] - p.x[1]));
+  }
   return out;
 }
 

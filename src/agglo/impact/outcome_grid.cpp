@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "agglo/core/constants.hpp"
 #include "agglo/core/error.hpp"
 #include "agglo/core/rng.hpp"
 #include "agglo/core/settings_outcomes.hpp"
@@ -46,11 +47,18 @@ OutcomeGridSpec parse_outcome_grid(const ConfigSection& root) {
     g.diameters = k.diameters.read(s);
     check_increasing(k.diameters, s, g.diameters);
   }
+  if (k.charges.present(s)) {
+    g.charges = k.charges.read(s);
+    check_increasing(k.charges, s, g.charges);
+  }
+  if (k.permittivities.present(s)) {
+    g.permittivities = k.permittivities.read(s);
+    check_increasing(k.permittivities, s, g.permittivities);
+  }
   g.impacts = static_cast<int>(k.impacts.read(s));
   g.max_offset = k.max_offset.read(s);
   g.seed = static_cast<std::uint64_t>(k.seed.read(s));
-  const double nd = static_cast<double>(g.sizes());
-  const double total = static_cast<double>(g.speeds.size()) * nd * (nd + 1.0) / 2.0 * g.impacts;
+  const double total = static_cast<double>(outcome_impacts_count(g));
   if (total > kMaxGridImpacts)
     k.impacts.reject(s, fmt::format("gives {:.0f} impacts over the grid, more than the limit of {:.0f}", total,
                                     kMaxGridImpacts));
@@ -74,28 +82,71 @@ void check_sphere_sphere(const ConfigSection& root, const ImpactCase& c) {
     k.wall.t.fail(root, "agglo outcomes tabulates sphere-sphere impacts: remove the [wall] table");
 }
 
+std::size_t outcome_impacts_count(const OutcomeGridSpec& s) {
+  const std::size_t nd = s.sizes(), nc = s.charge_nodes();
+  // size pairs i1 < i2 take every charge pair, i1 = i2 those with c1 <= c2
+  const std::size_t pairs = nd * (nd - 1) / 2 * nc * nc + nd * nc * (nc + 1) / 2;
+  return s.speeds.size() * pairs * s.permittivity_nodes() * static_cast<std::size_t>(s.impacts);
+}
+
 std::vector<OutcomeImpact> outcome_impacts(const OutcomeGridSpec& s) {
   std::vector<OutcomeImpact> out;
-  const std::size_t nd = s.sizes();
+  const std::size_t nd = s.sizes(), nc = s.charge_nodes(), nk = s.permittivity_nodes();
   for (std::size_t iv = 0; iv < s.speeds.size(); ++iv)
     for (std::size_t i1 = 0; i1 < nd; ++i1)
-      for (std::size_t i2 = i1; i2 < nd; ++i2) {
-        const std::uint64_t node = (iv * nd + i1) * nd + i2;
-        CounterRng rng(s.seed, kOffsetStream, node);
-        for (int k = 0; k < s.impacts; ++k)
-          out.push_back({iv, i1, i2, k, s.max_offset * std::sqrt(rng.uniform())});
-      }
+      for (std::size_t i2 = i1; i2 < nd; ++i2)
+        for (std::size_t c1 = 0; c1 < nc; ++c1)
+          for (std::size_t c2 = i1 == i2 ? c1 : 0; c2 < nc; ++c2)
+            for (std::size_t ik = 0; ik < nk; ++ik) {
+              // keyed by (speed, sizes) alone: every charge and permittivity sees the same impact parameters
+              CounterRng rng(s.seed, kOffsetStream, (iv * nd + i1) * nd + i2);
+              for (int k = 0; k < s.impacts; ++k)
+                out.push_back({iv, i1, i2, k, s.max_offset * std::sqrt(rng.uniform()), c1, c2, ik});
+            }
   return out;
 }
 
+namespace {
+
+// The partners' charges sigma pi d^2 and permittivity of impact j (outcome_grid.hpp), when the grid has those axes.
+void set_outcome_charges(const OutcomeGridSpec& s, const OutcomeImpact& j, ImpactCase& c) {
+  const double d1 = s.diameters[j.i1], d2 = s.diameters[j.i2];
+  const double q1 = s.charges.empty() ? 0.0 : s.charges[j.c1] * constants::pi * d1 * d1;
+  const double q2 = s.charges.empty() ? 0.0 : s.charges[j.c2] * constants::pi * d2 * d2;
+  const bool charges = !s.charges.empty(), kappa = !s.permittivities.empty();
+  const double k = kappa ? s.permittivities[j.ik] : 1.0;
+  if (s.aggregates()) {  // Q spread evenly over the primaries of each partner
+    for (auto* a : {&c.agglomerate, &c.projectile.body}) {
+      const double n = static_cast<double>(a->structure.size());
+      if (charges) a->structure.charge.assign(a->structure.size(), (a == &c.agglomerate ? q1 : q2) / n);
+      if (kappa) a->structure.permittivity.assign(a->structure.size(), k);
+    }
+  } else {
+    auto& target = c.agglomerate.particles.at(0);
+    if (charges) target.charge = q1, c.projectile.charge = q2;
+    if (kappa) target.permittivity = k, c.projectile.permittivity = k;
+  }
+  if (charges) {
+    c.electrostatics = c.electrostatics || q1 != 0.0 || q2 != 0.0;
+    c.miss_is_outcome = true;  // like charges may turn the projectile back: a bounce (never touched)
+  }
+}
+
+}  // namespace
+
 ImpactCase outcome_case(const ImpactCase& base, const OutcomeGridSpec& s, const OutcomeImpact& j) {
-  if (s.aggregates()) return aggregate_outcome_case(base, s, j);
+  if (s.aggregates()) {
+    ImpactCase c = aggregate_outcome_case(base, s, j);
+    set_outcome_charges(s, j, c);
+    return c;
+  }
   ImpactCase c = base;
   const double r1 = 0.5 * s.diameters[j.i1], r2 = 0.5 * s.diameters[j.i2];
   c.agglomerate.particles.at(0).radius = r1;
   c.agglomerate.radius = r1;  // the length unit r_p of the gap and the offset
   c.projectile.radius = r2;
   c.projectile.offset_radii = j.b_fraction * (r1 + r2) / r1;
+  set_outcome_charges(s, j, c);
   return c;
 }
 
@@ -106,11 +157,13 @@ double outcome_launch_speed(const OutcomeGridSpec& s, const OutcomeImpact& j) {
 Estimate outcomes_estimate(const ImpactCase& base, const OutcomeGridSpec& s, int threads) {
   constexpr double kNodeBytes = 400.0, kJournalLineBytes = 250.0;  // a CSV row + 16 values; one journal line
   const auto& g = settings::outcomes_settings().grid;
-  const std::vector<std::string> keys = {std::string(g.speeds.dotted()),
-                                         std::string(s.aggregates() ? g.primaries.dotted() : g.diameters.dotted()),
-                                         std::string(g.impacts.dotted())};
+  std::vector<std::string> keys = {std::string(g.speeds.dotted()),
+                                   std::string(s.aggregates() ? g.primaries.dotted() : g.diameters.dotted()),
+                                   std::string(g.impacts.dotted())};
+  if (!s.charges.empty()) keys.emplace_back(g.charges.dotted());
+  if (!s.permittivities.empty()) keys.emplace_back(g.permittivities.dotted());
   Estimate e;
-  const std::size_t nd = s.sizes();
+  const std::size_t nd = s.sizes(), nc = s.charge_nodes();
   double memory = 0.0;
   for (std::size_t i1 = 0; i1 < nd; ++i1)
     for (std::size_t i2 = i1; i2 < nd; ++i2)
@@ -118,20 +171,23 @@ Estimate outcomes_estimate(const ImpactCase& base, const OutcomeGridSpec& s, int
         const OutcomeImpact worst{iv, i1, i2, 0, s.max_offset};  // fastest launch, widest approach
         const ImpactCase c = outcome_case(base, s, worst);
         const double particles = s.aggregates() ? s.primaries[i1] + s.primaries[i2] : 2.0;
-        add_to(e.steps, particles * run_steps_bound(c, outcome_launch_speed(s, worst)) * s.impacts, keys);
+        // the charge and permittivity nodes of this size pair (outcome_impacts)
+        const double copies = static_cast<double>((i1 == i2 ? nc * (nc + 1) / 2 : nc * nc) * s.permittivity_nodes());
+        add_to(e.steps, particles * run_steps_bound(c, outcome_launch_speed(s, worst)) * s.impacts * copies, keys);
         if (iv == 0) memory = std::max(memory, collide_estimate(c).memory.value);
       }
   add_to(e.steps, 0.0, {std::string(impact_keys().time.after_contact.dotted())});
   add_to(e.memory, std::max(1, threads) * memory, keys);
-  const double nodes = static_cast<double>(s.speeds.size() * nd * nd);
-  const double impacts = static_cast<double>(s.speeds.size()) * static_cast<double>(nd * (nd + 1) / 2) * s.impacts;
+  const double nodes = static_cast<double>(s.nodes());
+  const double impacts = static_cast<double>(outcome_impacts_count(s));
   add_to(e.output, nodes * kNodeBytes + impacts * kJournalLineBytes, keys);
   return e;
 }
 
 PairOutcome classify_pair(const ImpactOutcome& o) {
   if (o.broken) return PairOutcome::brk;
-  return stays(o) ? PairOutcome::stick : PairOutcome::bounce;
+  // a separated charged pair that is bound (pair_energy < 0) comes back and cannot escape: a stick
+  return stays(o) || (o.contact && o.pair_energy < 0.0) ? PairOutcome::stick : PairOutcome::bounce;
 }
 
 WilsonInterval wilson_interval(std::int64_t k, std::int64_t n) {
@@ -147,7 +203,7 @@ OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vect
                                     const std::vector<double>& fragments, const std::vector<double>& largest) {
   OutcomeGridResult r;
   r.spec = spec;
-  const std::size_t n = spec.speeds.size() * spec.sizes() * spec.sizes();
+  const std::size_t n = spec.nodes();
   r.sticks.assign(n, 0);
   r.bounces.assign(n, 0);
   r.breaks.assign(n, 0);
@@ -159,9 +215,9 @@ OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vect
   const auto jobs = outcome_impacts(spec);
   for (std::size_t k = 0; k < jobs.size() && k < outcomes.size(); ++k) {
     const OutcomeImpact& j = jobs[k];
-    const std::size_t mirror = j.i1 == j.i2 ? 1 : 2;
+    const std::size_t mirror = j.i1 == j.i2 && j.c1 == j.c2 ? 1 : 2;
     for (std::size_t m = 0; m < mirror; ++m) {
-      const std::size_t i = m == 0 ? r.index(j.iv, j.i1, j.i2) : r.index(j.iv, j.i2, j.i1);
+      const std::size_t i = m == 0 ? r.index(j.iv, j.i1, j.i2, j.c1, j.c2, j.ik) : r.index(j.iv, j.i2, j.i1, j.c2, j.c1, j.ik);
       ++r.impacts[i];
       ++(outcomes[k] == PairOutcome::stick ? r.sticks : outcomes[k] == PairOutcome::bounce ? r.bounces : r.breaks)[i];
       if (spec.aggregates() && outcomes[k] == PairOutcome::brk) {

@@ -11,6 +11,13 @@
 // Per node: counts and P = k/n with the 95 % Wilson score interval
 //   (p + z^2/2n -+ z sqrt(p(1-p)/n + z^2/4n^2)) / (1 + z^2/n),  z = 1.959964.
 // The table is symmetric: node (d_1, d_2) with d_1 > d_2 copies (d_2, d_1).
+// Optional axes (docs/outcomes.md "Charge and permittivity"): `charges`, surface charge densities sigma
+// [C/m^2] (signed) given to each partner, charge Q = sigma pi d^2 with d its (volume-equivalent) diameter
+// (a sphere of surface density sigma; an aggregate's Q spread evenly over its primaries), run with the
+// electrostatics of the case ([electrostatics]); and `permittivities`, the relative permittivity kappa_p
+// of both partners. Nodes (speed, d_1, d_2, sigma_1, sigma_2, kappa_p); symmetric: (d_1, d_2, sigma_1,
+// sigma_2) copies (d_2, d_1, sigma_2, sigma_1), so an equal-size pair runs sigma_1 <= sigma_2 only. Absent,
+// the partners keep the case's charges and permittivities and the table has no such axes.
 // Aggregate partners (outcome_grid.primaries instead of diameters): impact/outcome_aggregates.hpp; their
 // tables also carry, per node, the mean number of fragments and the mean mass fraction of the largest
 // fragment over the impacts that broke (NaN where none broke).
@@ -27,31 +34,49 @@ namespace agglo::impact {
 struct OutcomeGridSpec {
   std::vector<double> speeds, diameters;  // [m/s], [m] (aggregates: volume-equivalent, from primaries)
   std::vector<int> primaries;             // aggregate partners' primary counts; empty: sphere partners
+  std::vector<double> charges;            // sigma [C/m^2] of each partner; empty: the case's charges
+  std::vector<double> permittivities;     // kappa_p of both partners; empty: the case's
   double primary_radius = 0.0;            // a [m] of the aggregate partners
   int impacts = 8;
   double max_offset = 0.5;
   std::uint64_t seed = 1;
   bool aggregates() const { return !primaries.empty(); }
   std::size_t sizes() const { return aggregates() ? primaries.size() : diameters.size(); }
+  // Nodes along the charge and permittivity axes (1 when absent).
+  std::size_t charge_nodes() const { return charges.empty() ? 1 : charges.size(); }
+  std::size_t permittivity_nodes() const { return permittivities.empty() ? 1 : permittivities.size(); }
+  // Row-major node index over (speed, size_1, size_2, charge_1, charge_2, permittivity).
+  std::size_t node(std::size_t iv, std::size_t i1, std::size_t i2, std::size_t c1 = 0, std::size_t c2 = 0,
+                   std::size_t ik = 0) const {
+    const std::size_t nd = sizes(), nc = charge_nodes();
+    return ((((iv * nd + i1) * nd + i2) * nc + c1) * nc + c2) * permittivity_nodes() + ik;
+  }
+  std::size_t nodes() const { return speeds.size() * sizes() * sizes() * charge_nodes() * charge_nodes() * permittivity_nodes(); }
 };
 
 // Reads [outcome_grid] (ConfigError naming the key: axes not strictly increasing, more than 1e6 impacts,
 // both or neither of diameters and primaries, a primary count that is not a whole number).
+// The charge and permittivity axes are read only when set.
 OutcomeGridSpec parse_outcome_grid(const ConfigSection& root);
 // ConfigError unless `c` is a one-sphere list target hit by a sphere, without a wall, with time.dt = 0
 // (each node's step is T0 / time.steps_per_period of its own pair).
 void check_sphere_sphere(const ConfigSection& root, const ImpactCase& c);
 
-// One impact of the grid: node (iv, i1, i2) with i1 <= i2, sample k, b / (r_1 + r_2).
+// One impact of the grid: node (iv, i1, i2, c1, c2, ik) with i1 <= i2 (and c1 <= c2 when i1 = i2),
+// sample k, b / (r_1 + r_2).
 struct OutcomeImpact {
   std::size_t iv = 0, i1 = 0, i2 = 0;
   int sample = 0;
   double b_fraction = 0.0;
+  std::size_t c1 = 0, c2 = 0, ik = 0;  // charge of partner 1, of partner 2, permittivity (0 when absent)
   bool operator==(const OutcomeImpact&) const = default;
 };
-// Every impact, node by node (speed outermost) then sample; fixed by the spec alone.
+// Every impact, node by node (speed outermost, then sizes, charges, permittivity) then sample; fixed by
+// the spec alone. The impact parameters are drawn per (speed, size pair, sample): every charge and
+// permittivity node of a size pair sees the same ones (common random numbers).
 std::vector<OutcomeImpact> outcome_impacts(const OutcomeGridSpec& s);
-// The case of one impact (radii, offset) and its launch speed [m/s].
+std::size_t outcome_impacts_count(const OutcomeGridSpec& s);  // outcome_impacts(s).size()
+// The case of one impact (radii, offset, charges and permittivity) and its launch speed [m/s].
 ImpactCase outcome_case(const ImpactCase& base, const OutcomeGridSpec& s, const OutcomeImpact& j);
 double outcome_launch_speed(const OutcomeGridSpec& s, const OutcomeImpact& j);
 
@@ -62,6 +87,9 @@ double outcome_launch_speed(const OutcomeGridSpec& s, const OutcomeImpact& j);
 Estimate outcomes_estimate(const ImpactCase& base, const OutcomeGridSpec& s, int threads);
 
 enum class PairOutcome { stick = 0, bounce = 1, brk = 2 };
+// Sphere pairs: stick when in contact at the end (impact::stays) or, charged, touched and bound at the
+// end (ImpactOutcome::pair_energy < 0: the pair returns and, losing energy in every contact, cannot escape;
+// gas drag only binds it more); else bounce (also a pair turned back before touching).
 PairOutcome classify_pair(const ImpactOutcome& o);
 
 struct WilsonInterval {
@@ -69,7 +97,8 @@ struct WilsonInterval {
 };
 WilsonInterval wilson_interval(std::int64_t k, std::int64_t n);
 
-// Counts per node over the full grid (speed, diameter_1, diameter_2), row-major, mirrored.
+// Counts per node over the full grid (speed, diameter_1, diameter_2[, charge_1, charge_2][, permittivity]),
+// row-major (OutcomeGridSpec::node), mirrored.
 struct OutcomeGridResult {
   OutcomeGridSpec spec;
   std::vector<std::int64_t> sticks, bounces, breaks, impacts;
@@ -77,9 +106,9 @@ struct OutcomeGridResult {
   // the mean mass fraction of the largest [1]; NaN where none broke. The mean fraction is raised to
   // 1/(mean number) when below it by a rounding error only (equal fragments; the DSMC requires f_L >= 1/N_f).
   std::vector<double> fragments, largest_fraction;
-  std::size_t index(std::size_t iv, std::size_t i1, std::size_t i2) const {
-    const std::size_t nd = spec.sizes();
-    return (iv * nd + i1) * nd + i2;
+  std::size_t index(std::size_t iv, std::size_t i1, std::size_t i2, std::size_t c1 = 0, std::size_t c2 = 0,
+                    std::size_t ik = 0) const {
+    return spec.node(iv, i1, i2, c1, c2, ik);
   }
 };
 // `outcomes[k]` is the outcome of impact k of outcome_impacts(spec); for aggregates `fragments[k]` and

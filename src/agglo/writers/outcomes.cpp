@@ -28,25 +28,44 @@ Probabilities probabilities(const std::vector<std::int64_t>& k, const std::vecto
   return out;
 }
 
+// The grid's coordinate columns: speed and both sizes, then the charge and permittivity axes it has.
+io::Table grid_columns(const OutcomeGridResult& r) {
+  namespace ac = acoustics;
+  const auto& ax = ac::kOutcomeAxes;
+  const auto& g = r.spec;
+  const std::size_t nd = g.diameters.size();
+  std::vector<std::pair<std::string, std::size_t>> rows = {{ax[0], g.speeds.size()}, {ax[1], nd}, {ax[2], nd}};
+  if (!g.charges.empty()) {
+    rows.emplace_back(ax[ac::kCharge1Axis], g.charges.size());
+    rows.emplace_back(ax[ac::kCharge2Axis], g.charges.size());
+  }
+  if (!g.permittivities.empty()) rows.emplace_back(ax[ac::kPermittivityAxis], g.permittivities.size());
+  io::Table t("outcomes.csv", rows, "{:.8g}");
+  t.real(ax[0], ac::kOutcomeAxisUnits[0], ac::kOutcomeAxisMeanings[0], g.speeds).over({ax[0]});
+  const bool agg = g.aggregates();
+  t.real(ax[1], ac::kOutcomeAxisUnits[1],
+         agg ? "volume-equivalent diameter 2 a N^(1/3) of the first aggregate (the target)"
+             : "diameter of the first sphere (the target)",
+         g.diameters)
+      .over({ax[1]});
+  t.real(ax[2], ac::kOutcomeAxisUnits[2],
+         agg ? "volume-equivalent diameter 2 a N^(1/3) of the second aggregate (the projectile)"
+             : "diameter of the second sphere (the projectile)",
+         g.diameters)
+      .over({ax[2]});
+  for (std::size_t k = ac::kCharge1Axis; k <= ac::kPermittivityAxis; ++k) {
+    const auto& values = k == ac::kPermittivityAxis ? g.permittivities : g.charges;
+    if (!values.empty()) t.real(ax[k], ac::kOutcomeAxisUnits[k], ac::kOutcomeAxisMeanings[k], values).over({ax[k]});
+  }
+  return t;
+}
+
 }  // namespace
 
 io::Table outcomes_table(const OutcomeGridResult& r) {
-  const auto& ax = acoustics::kOutcomeAxes;
   const auto& pn = acoustics::kOutcomeProbabilities;
-  const std::size_t nd = r.spec.diameters.size();
-  io::Table t("outcomes.csv", {{ax[0], r.spec.speeds.size()}, {ax[1], nd}, {ax[2], nd}}, "{:.8g}");
-  t.real(ax[0], acoustics::kOutcomeAxisUnits[0], "normal relative speed at contact", r.spec.speeds).over({ax[0]});
+  io::Table t = grid_columns(r);
   const bool agg = r.spec.aggregates();
-  t.real(ax[1], acoustics::kOutcomeAxisUnits[1],
-         agg ? "volume-equivalent diameter 2 a N^(1/3) of the first aggregate (the target)"
-             : "diameter of the first sphere (the target)",
-         r.spec.diameters)
-      .over({ax[1]});
-  t.real(ax[2], acoustics::kOutcomeAxisUnits[2],
-         agg ? "volume-equivalent diameter 2 a N^(1/3) of the second aggregate (the projectile)"
-             : "diameter of the second sphere (the projectile)",
-         r.spec.diameters)
-      .over({ax[2]});
   const std::array<const std::vector<std::int64_t>*, 3> counts = {&r.sticks, &r.bounces, &r.breaks};
   const std::array<const char*, 3> what = {"sticks", "bounces", "breaks"};
   for (std::size_t k = 0; k < 3; ++k) {

@@ -34,17 +34,34 @@ OutcomesCase outcomes_case(Config& cfg) {
   return c;
 }
 
-// Journal key: the node's values (shortest round-trip digits) and the sample.
+// Journal key: the node's values (shortest round-trip digits) and the sample; the charges and the
+// permittivity only on grids with those axes (the keys of other grids stay as they were).
 std::string outcome_job_key(const impact::OutcomeGridSpec& g, const impact::OutcomeImpact& j) {
+  std::string extra;
+  if (!g.charges.empty()) extra += fmt::format(" sigma1={} sigma2={}", g.charges[j.c1], g.charges[j.c2]);
+  if (!g.permittivities.empty()) extra += fmt::format(" kappa={}", g.permittivities[j.ik]);
   if (g.aggregates())
-    return fmt::format("v_n={} n1={} n2={} sample={} b={}", g.speeds[j.iv], g.primaries[j.i1], g.primaries[j.i2],
-                       j.sample, j.b_fraction);
-  return fmt::format("v_n={} d1={} d2={} sample={} b={}", g.speeds[j.iv], g.diameters[j.i1], g.diameters[j.i2],
-                     j.sample, j.b_fraction);
+    return fmt::format("v_n={} n1={} n2={}{} sample={} b={}", g.speeds[j.iv], g.primaries[j.i1], g.primaries[j.i2],
+                       extra, j.sample, j.b_fraction);
+  return fmt::format("v_n={} d1={} d2={}{} sample={} b={}", g.speeds[j.iv], g.diameters[j.i1], g.diameters[j.i2],
+                     extra, j.sample, j.b_fraction);
+}
+
+// The charge and permittivity axes in the provenance ("" without them).
+std::string charge_provenance(const impact::OutcomeGridSpec& g) {
+  std::string r;
+  if (!g.charges.empty())
+    r += fmt::format("; partner charges sigma pi d^2 for sigma in [{}] C/m^2 (d volume-equivalent), with the "
+                     "case's electrostatics",
+                     fmt::join(g.charges, ", "));
+  if (!g.permittivities.empty()) r += fmt::format("; permittivities kappa_p [{}]", fmt::join(g.permittivities, ", "));
+  return r;
 }
 
 // An aggregate impact's journal entry: the outcome, and for a break its fragment statistics.
 nlohmann::json aggregate_result(const impact::ImpactCase& one, const impact::ImpactOutcome& o) {
+  if (!o.contact)  // turned back before touching (charged grids): the two partners, a bounce
+    return nlohmann::json{{"outcome", static_cast<int>(impact::PairOutcome::bounce)}, {"steps", o.steps}};
   const auto f = impact::classify_aggregate_pair(o.components, impact::pair_masses(one),
                                                  one.agglomerate.structure.size());
   nlohmann::json r{{"outcome", static_cast<int>(f.outcome)}, {"steps", o.steps}};
@@ -75,13 +92,13 @@ std::string provenance(const OutcomesCase& c, std::size_t impacts) {
     return fmt::format("agglo outcomes: {} DEM aggregate-aggregate impacts of case '{}' ({} target, {} projectile, "
                        "primary radius {:g} m, primary counts [{}] as volume-equivalent diameters 2 a N^(1/3); "
                        "structures and projectile orientation drawn per impact, docs/outcomes.md); impact parameter "
-                       "b^2 uniform up to ({:g} (r_1 + r_2))^2, seed {}, launch speed v_n / sqrt(1 - (b/(r_1 + r_2))^2)",
+                       "b^2 uniform up to ({:g} (r_1 + r_2))^2, seed {}, launch speed v_n / sqrt(1 - (b/(r_1 + r_2))^2){}",
                        impacts, c.dem.name, c.dem.agglomerate.shape, c.dem.projectile.shape, c.grid.primary_radius,
-                       fmt::join(c.grid.primaries, ", "), c.grid.max_offset, c.grid.seed);
+                       fmt::join(c.grid.primaries, ", "), c.grid.max_offset, c.grid.seed, charge_provenance(c.grid));
   return fmt::format("agglo outcomes: {} DEM sphere-sphere impacts of case '{}' (one-sphere target, "
                      "docs/outcomes.md); impact parameter b^2 uniform up to ({:g} (r_1 + r_2))^2, seed {}, "
-                     "launch speed v_n / sqrt(1 - (b/(r_1 + r_2))^2)",
-                     impacts, c.dem.name, c.grid.max_offset, c.grid.seed);
+                     "launch speed v_n / sqrt(1 - (b/(r_1 + r_2))^2){}",
+                     impacts, c.dem.name, c.grid.max_offset, c.grid.seed, charge_provenance(c.grid));
 }
 
 class Outcomes final : public Command {
