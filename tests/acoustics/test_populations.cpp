@@ -1,5 +1,7 @@
 // Initial sampling of populations: integer weights and their total (populations.hpp).
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -65,4 +67,19 @@ TEST(Populations, ConservingRoundingKeepsTheLognormalTotalAndShape) {
     EXPECT_EQ(a.p.d[i], b.p.d[i]);
     EXPECT_LE(std::abs(a.p.w[i] - b.p.w[i]), 1.0);  // the two roundings differ by at most one
   }
+}
+
+// normal_quantile skips the bisection's evaluations that a checked bracket decides: it must return the
+// reference bisection's number bit for bit, in the middle and far into both tails, and be a quantile.
+TEST(Populations, FastNormalQuantileIsTheBisectionBitForBit) {
+  std::vector<double> qs;
+  for (int m = 0; m < 4000; ++m) qs.push_back((m + 0.5) / 4000.0);
+  for (double z = -9.0; z <= 9.0; z += 0.0137) qs.push_back(normal_cdf(z));
+  for (double q : {1e-300, 1e-200, 1e-20, 0.02425, 0.97575, 0.5, 1.0 - 1e-16}) qs.push_back(q);
+  for (double q : qs) {
+    const double fast = normal_quantile(q), ref = normal_quantile_bisection(q);
+    ASSERT_EQ(std::memcmp(&fast, &ref, sizeof fast), 0) << "q = " << q << ": " << fast << " vs " << ref;
+  }
+  EXPECT_NEAR(normal_quantile(0.975), 1.959963984540054, 1e-13);
+  EXPECT_NEAR(normal_quantile(normal_cdf(-5.5)), -5.5, 1e-12);
 }

@@ -29,19 +29,29 @@ Counts count(const SampleSet& p, double V) {
   return c;
 }
 
+namespace {
+// Adds sample i's mass w m to every cut its diameter and its settling measure pass. A sum that does not
+// take the sample skips the add (adding +0 would leave it unchanged), so the sums are those of a loop
+// adding w m or 0 to every cut.
+inline void add_pm(PmMass& m, const std::array<double, 3>& limit, double wm, double d, double settling) {
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (d < kPmCuts[k]) m.volume[k] += wm;
+    if (settling < limit[k]) m.aerodynamic[k] += wm;
+  }
+}
+}  // namespace
+
 PmMass pm_mass(const SampleSet& p, double V, const Gas& g) {
   std::array<double, 3> limit{};  // rho_0 x^2 C_c(x): d_a < x iff rho_p d_v^2 C_c(d_v) is below it
   for (std::size_t k = 0; k < 3; ++k) limit[k] = kPmUnitDensity * kPmCuts[k] * kPmCuts[k] * g.slip_correction(kPmCuts[k]);
   PmMass m;
-  const bool structured = p.structured();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double wm = p.w[i] * p.mass[i], d = p.volume_diameter(i);
-    const double settling = structured ? 6.0 * p.mass[i] * p.cc[i] / (constants::pi * p.dm[i])
-                                       : p.rho[i] * d * d * p.cc[i];
-    for (std::size_t k = 0; k < 3; ++k) {
-      m.volume[k] += d < kPmCuts[k] ? wm : 0.0;
-      m.aerodynamic[k] += settling < limit[k] ? wm : 0.0;
-    }
+  if (p.structured()) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      add_pm(m, limit, p.w[i] * p.mass[i], p.volume_diameter(i), 6.0 * p.mass[i] * p.cc[i] / (constants::pi * p.dm[i]));
+  } else {  // a sphere's volume diameter is its diameter d
+    const double *w = p.w.data(), *mass = p.mass.data(), *d = p.d.data(), *rho = p.rho.data(), *cc = p.cc.data();
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (w[i] > 0.0) add_pm(m, limit, w[i] * mass[i], d[i], rho[i] * d[i] * d[i] * cc[i]);
   }
   for (std::size_t k = 0; k < 3; ++k) {
     m.volume[k] /= V;

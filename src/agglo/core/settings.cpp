@@ -124,7 +124,7 @@ std::vector<std::string> Choice::allowed() const {
   return {fixed_.begin(), fixed_.end()};
 }
 
-std::string Choice::read(const ConfigSection& s) const {
+std::string Choice::read_or(const ConfigSection& s, std::optional<std::string_view> def) const {
   if (!legacy_.if_true.empty())
     if (const auto b = s.boolean_if_set(leaf())) return std::string(*b ? legacy_.if_true : legacy_.if_false);
   if (const auto v = s.string_if_set(leaf()))
@@ -135,7 +135,7 @@ std::string Choice::read(const ConfigSection& s) const {
       }
   const std::vector<std::string> names = allowed();
   const std::vector<std::string_view> views(names.begin(), names.end());
-  return s.choice(leaf(), def_ ? std::optional<std::string>(std::string(*def_)) : std::nullopt, views);
+  return s.choice(leaf(), def ? std::optional<std::string>(std::string(*def)) : std::nullopt, views);
 }
 
 std::string Choice::default_text() const { return note_or(def_ ? fmt::format("\"{}\"", *def_) : "required"); }

@@ -165,7 +165,8 @@ class Choice : public Setting {
  public:
   Choice(Table& t, const Info& i, std::optional<std::string_view> def, std::vector<std::string_view> allowed);
   Choice(Table& t, const Info& i, std::optional<std::string_view> def, NameSource names, Legacy legacy = {});
-  std::string read(const ConfigSection& s) const;
+  std::string read(const ConfigSection& s) const { return read_or(s, def_); }
+  std::string read_or(const ConfigSection& s, std::optional<std::string_view> def) const;
   std::string_view def() const { return *def_; }
   std::vector<std::string> allowed() const;
   std::string default_text() const override;

@@ -61,8 +61,9 @@ struct AcousticSettings {
     Choice initial_velocity{t, {"time.initial_velocity", "", "initial particle velocity"}, "steady",
                             {"steady", "gas", "rest"}};
     Choice selection{t,
-                     {"time.selection", "", "collision-pair selection: binned majorants, or Zhao et al.'s modified Nanbu"},
-                     "nanbu", {"nanbu", "binned"}};
+                     {"time.selection", "", "collision-pair selection: binned majorants, or Zhao et al.'s modified Nanbu",
+                      "\"binned\" without motion (time.integrator = \"none\"), else \"nanbu\""},
+                     std::nullopt, {"nanbu", "binned"}};
     Choice nanbu_guard{t, {"time.nanbu_guard", "", "when P_ij > 1/N: sub-cycle the cell, or stop"}, "subcycle",
                        {"subcycle", "strict"}};
     Integer max_subcycles{t, {"time.max_subcycles", "", "most sub-cycles of one cell and step"}, 100000, 1,
