@@ -1,4 +1,4 @@
-// AVX2 versions of the spectral solver's small dense kernels, bit for bit the two-lane reference
+// AVX2 versions of the spectral solver's small dense kernels (gemv2, gemv2x2, gemv2t), bit for bit the two-lane reference
 // kernels of dense_ops.hpp (see there).
 #include "agglo/electrostatics/spectral/dense_ops.hpp"
 
@@ -88,6 +88,45 @@ __attribute__((noinline)) void gemv2x2_avx2(const double* A, int lda, int rows, 
   }
 }
 
+// Columns k, k+1 of row a against v_r = (v[2r], v[2r+1]) as one four-lane product (a_k, a_k, a_k+1, a_k+1) x
+// (v_r, v_r), the two lanes of each column as gemv2t_reference multiplies them.
+inline __attribute__((always_inline)) __m256d dense_ops_tstep(const double* a, __m256d vr) {
+  const __m256d a01 = _mm256_castpd128_pd256(_mm_loadu_pd(a));
+  return _mm256_mul_pd(_mm256_permute4x64_pd(a01, 0b01010000), vr);
+}
+
+__attribute__((noinline)) void gemv2t_avx2(const double* A, int lda, int rows, int cols, const double* v, double* y) {
+  int k = 0;
+  for (; k + 8 <= cols; k += 8) {  // eight columns in four registers, down all rows
+    double* yk = y + 2 * k;
+    __m256d Y0 = _mm256_loadu_pd(yk), Y1 = _mm256_loadu_pd(yk + 4), Y2 = _mm256_loadu_pd(yk + 8),
+            Y3 = _mm256_loadu_pd(yk + 12);
+    for (int r = 0; r < rows; ++r) {
+      const double* a = A + static_cast<long>(r) * lda + k;
+      const __m256d vr = _mm256_broadcast_pd(reinterpret_cast<const __m128d*>(v + 2 * r));
+      Y0 = _mm256_add_pd(Y0, dense_ops_tstep(a, vr));
+      Y1 = _mm256_add_pd(Y1, dense_ops_tstep(a + 2, vr));
+      Y2 = _mm256_add_pd(Y2, dense_ops_tstep(a + 4, vr));
+      Y3 = _mm256_add_pd(Y3, dense_ops_tstep(a + 6, vr));
+    }
+    _mm256_storeu_pd(yk, Y0), _mm256_storeu_pd(yk + 4, Y1), _mm256_storeu_pd(yk + 8, Y2);
+    _mm256_storeu_pd(yk + 12, Y3);
+  }
+  for (; k + 2 <= cols; k += 2) {
+    __m256d Y0 = _mm256_loadu_pd(y + 2 * k);
+    for (int r = 0; r < rows; ++r)
+      Y0 = _mm256_add_pd(Y0, dense_ops_tstep(A + static_cast<long>(r) * lda + k,
+                                             _mm256_broadcast_pd(reinterpret_cast<const __m128d*>(v + 2 * r))));
+    _mm256_storeu_pd(y + 2 * k, Y0);
+  }
+  if (k < cols) {
+    __m128d Y0 = _mm_loadu_pd(y + 2 * k);
+    for (int r = 0; r < rows; ++r)
+      Y0 = _mm_add_pd(Y0, _mm_mul_pd(_mm_set1_pd(A[static_cast<long>(r) * lda + k]), _mm_loadu_pd(v + 2 * r)));
+    _mm_storeu_pd(y + 2 * k, Y0);
+  }
+}
+
 const bool dense_ops_avx2 = __builtin_cpu_supports("avx2");
 
 }  // namespace
@@ -114,6 +153,13 @@ void gemv2x2(const double* A, int lda, int rows, int cols, const double* x, cons
   if (dense_ops_avx2 && cols <= kDenseOpsMaxCols) return gemv2x2_avx2(A, lda, rows, cols, x, x2, y, y2);
 #endif
   gemv2x2_reference(A, lda, rows, cols, x, x2, y, y2);
+}
+
+void gemv2t(const double* A, int lda, int rows, int cols, const double* v, double* y) {
+#if defined(AGGLO_DENSE_OPS_AVX2)
+  if (dense_ops_avx2) return gemv2t_avx2(A, lda, rows, cols, v, y);
+#endif
+  gemv2t_reference(A, lda, rows, cols, v, y);
 }
 
 }  // namespace agglo::es::sh::kern

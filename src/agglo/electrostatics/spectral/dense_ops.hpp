@@ -4,7 +4,7 @@
 //   y = A x     for a row-major A (rows x cols) and two interleaved vectors x = (x1[k], x2[k]);
 //   y += A^T v  likewise (interleaved v and y).
 //   gemv2x2: two y = A x at once.
-// gemv2 and gemv2x2 (dense_ops.cpp) run four-lane AVX2 code where the processor has it (chosen at run
+// gemv2, gemv2x2 and gemv2t (dense_ops.cpp) run four-lane AVX2 code where the processor has it (chosen at run
 // time), the same products and sums in the same order as the two-lane reference kernels below
 // (gemv2_reference, gemv2x2_reference; no FMA is enabled, so nothing is contracted): every result is the
 // reference's bit for bit (tests/electrostatics/test_dense_ops.cpp). The AVX2 code takes the columns
@@ -12,7 +12,10 @@
 // duplicated matrix entries (a_k, a_k, a_k+2, a_k+2) and (a_k+1, a_k+1, a_k+3, a_k+3) loaded by vmovddup
 // against the vector pairs (x_k, x_k+2) and (x_k+1, x_k+3) reordered once per call: no shuffle in the
 // inner loop, half the floating-point instructions of the two-lane code, and two rows (gemv2) or two
-// vectors (gemv2x2) at a time for four independent sums.
+// vectors (gemv2x2) at a time for four independent sums. gemv2t's AVX2 code keeps eight columns of y
+// (four registers of two columns x two vectors) in registers while it runs down the rows, each lane
+// taking the same products in the same row order as gemv2t_reference: one pass over A, y loaded and
+// stored once per eight columns instead of once per row.
 namespace agglo::es::sh::kern {
 
 typedef double v2d __attribute__((vector_size(16)));
@@ -76,8 +79,8 @@ void gemv2(const double* A, int lda, int rows, int cols, const double* x, double
 void gemv2x2(const double* A, int lda, int rows, int cols, const double* x, const double* x2, double* y, double* y2);
 bool has_avx2_kernels();
 
-// y[2k], y[2k+1] += sum_r A[r*lda + k] * (v[2r], v[2r+1]),  k < cols
-inline void gemv2t(const double* A, int lda, int rows, int cols, const double* v, double* y) {
+// y[2k], y[2k+1] += sum_r A[r*lda + k] * (v[2r], v[2r+1]),  k < cols (the rows added in order r = 0, 1, ...)
+inline void gemv2t_reference(const double* A, int lda, int rows, int cols, const double* v, double* y) {
   const v2d* V = reinterpret_cast<const v2d*>(v);
   v2d* Y = reinterpret_cast<v2d*>(y);
   for (int r = 0; r < rows; ++r) {
@@ -86,5 +89,8 @@ inline void gemv2t(const double* A, int lda, int rows, int cols, const double* v
     for (int k = 0; k < cols; ++k) Y[k] += a[k] * vr;
   }
 }
+
+// gemv2t_reference on AVX2 where the processor has it (same bits).
+void gemv2t(const double* A, int lda, int rows, int cols, const double* v, double* y);
 
 }  // namespace agglo::es::sh::kern
