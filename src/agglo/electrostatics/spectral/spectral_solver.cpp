@@ -179,14 +179,14 @@ void SpectralSolver::pair_product(const Pair& pr, const double* beta, double* ou
   else
     pr.R.to_frame2(pr.L, pr.M, b_k, b_i, bk, bi);
   std::fill(ai, ai + 2 * np, 0.0);  // ai, ak
-  std::fill(out_i, out_i + np, 0.0);
-  std::fill(out_k, out_k + np, 0.0);
+  // out_i, out_k: written whole by the rotation back (add = false; the same numbers as adding to zeros but
+  // for the sign of a zero, and alpha, which starts at +0, sums them to the same bits either way)
   // source k seen from i sits at +t z; source i seen from k at -t z.
   T_.apply_pair(pr.L, pr.M, pr.ui, pr.uk, bk, bi, ai, ak, pr.powers.empty() ? nullptr : pr.powers.data());
   if (pr.pivot)
-    pr.P.from_frame2(pivot_, pr.L, pr.M, ai, ak, out_i, out_k);
+    pr.P.from_frame2(pivot_, pr.L, pr.M, ai, ak, out_i, out_k, false);
   else
-    pr.R.from_frame2(pr.L, pr.M, ai, ak, out_i, out_k);
+    pr.R.from_frame2(pr.L, pr.M, ai, ak, out_i, out_k, false);
 }
 
 // alpha = M beta. The pairs are taken in blocks (block_end): each block's pair products run in parallel
