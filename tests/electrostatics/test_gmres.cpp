@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <omp.h>
+
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -178,4 +180,43 @@ TEST(Gmres, ZeroRightHandSideAndBadSizes) {
   std::vector<double> short_x(kN - 1, 0.0), short_w(kN - 1, 1.0);
   EXPECT_THROW(gmres(op_of(s.A), s.bv, short_x, {}, GmresOptions{}), std::invalid_argument);
   EXPECT_THROW(gmres(op_of(s.A), s.bv, x, short_w, GmresOptions{}), std::invalid_argument);
+}
+
+// Vectors of 3e5 numbers (above the length from which gmres.cpp sums its Euclidean inner products in
+// parallel blocks): the solution must have the same bits on one and two threads (the blocks and their
+// order depend on the length only; a reduction that followed the thread count would change the last
+// bits), and its true residual must meet the tolerance. The operator is tridiagonal,
+// y_j = 2 x_j + c_j x_(j-1) - c_(j+1) x_(j+1) with c_j = 0.4 sin(j) (eigenvalues within 0.8 of 2).
+TEST(Gmres, LongEuclideanSolveHasTheSameBitsOnOneAndTwoThreads) {
+  const std::size_t n = 300000;
+  std::vector<double> c(n + 1), b(n);
+  for (std::size_t j = 0; j <= n; ++j) c[j] = 0.4 * std::sin(double(j));
+  for (std::size_t j = 0; j < n; ++j) b[j] = std::cos(0.001 * double(j)) + 0.1 * std::sin(7.0 * double(j));
+  const LinearOperator A = [&c, n](std::span<const double> x, std::span<double> y) {
+    for (std::size_t j = 0; j < n; ++j)
+      y[j] = 2.0 * x[j] + (j > 0 ? c[j] * x[j - 1] : 0.0) - (j + 1 < n ? c[j + 1] * x[j + 1] : 0.0);
+  };
+  const int saved = omp_get_max_threads();
+  std::vector<std::vector<double>> x(2, std::vector<double>(n, 0.0));
+  GmresResult r[2];
+  for (int t = 0; t < 2; ++t) {
+    omp_set_num_threads(t + 1);
+    r[t] = gmres(A, b, x[t], {}, GmresOptions{1e-10, 200, 10, true});
+  }
+  omp_set_num_threads(saved);
+  ASSERT_TRUE(r[0].converged);
+  EXPECT_GT(r[0].iterations, 10);  // more than one restart cycle
+  EXPECT_EQ(r[0].iterations, r[1].iterations);
+  EXPECT_EQ(r[0].residual, r[1].residual);
+  std::size_t differ = 0;
+  for (std::size_t j = 0; j < n; ++j) differ += x[0][j] != x[1][j];
+  EXPECT_EQ(differ, 0u);
+  std::vector<double> ax(n);
+  A(x[0], ax);
+  double rn = 0.0, bn = 0.0;
+  for (std::size_t j = 0; j < n; ++j) {
+    rn += (b[j] - ax[j]) * (b[j] - ax[j]);
+    bn += b[j] * b[j];
+  }
+  EXPECT_LE(std::sqrt(rn / bn), 1e-10);
 }

@@ -4,9 +4,12 @@
 // with modified Gram-Schmidt, reduces the Hessenberg matrix with Givens rotations, and adds the
 // least-squares correction to x. Inner product: <u, v> = sum_i w_i u_i v_i with the weights w (area
 // weights for the BEM, so that the norm approximates the L2 norm on the surface); empty weights give
-// the Euclidean product. Stopping rule: ||b - A x|| <= tol ||b|| in that norm. A cycle ends when the
-// Givens residual estimate meets it; with `recheck_true_residual` the residual is then recomputed
-// explicitly (one extra operator application) and GMRES restarts if that is still above tol.
+// the Euclidean product, summed in fixed blocks of 4096 numbers (8 interleaved partial sums each, the
+// block sums in block order, blocks in parallel for long vectors: the same bits at any thread count);
+// the weighted product is one sequential sum. Stopping rule: ||b - A x|| <= tol ||b|| in that norm. A
+// cycle ends when the Givens residual estimate meets it; with `recheck_true_residual` the residual is
+// then recomputed explicitly (one extra operator application) and GMRES restarts if that is still above
+// tol.
 // After every operator application the calling thread's cancel token is polled (core/cancel.hpp):
 // InterruptedError when it is set.
 #include <functional>

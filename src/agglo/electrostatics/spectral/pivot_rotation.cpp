@@ -180,9 +180,10 @@ void PivotRotation::to_frame2(const PivotTables& T, int Lmax, int Mmax, const do
   }
 }
 
-// The inverse, Z(a + pi/2)^-1 Y^-1 Z(b)^-1 Y Z(-pi/2)^-1, from frame orders <= min(M, Mmax), added to out.
+// The inverse, Z(a + pi/2)^-1 Y^-1 Z(b)^-1 Y Z(-pi/2)^-1, from frame orders <= min(M, Mmax), added to out
+// (written with add = false).
 void PivotRotation::from_frame2(const PivotTables& T, int Lmax, int Mmax, const double* in1, const double* in2,
-                                double* out1, double* out2) const {
+                                double* out1, double* out2, bool add) const {
   PivotBuffers b;
   for (int l = 0; l <= Lmax; ++l) {
     const int mm = std::min({l, M_, Mmax});
@@ -192,7 +193,7 @@ void PivotRotation::from_frame2(const PivotTables& T, int Lmax, int Mmax, const 
     pivot_turn(l, l, cb_.data(), sb_.data(), true, b.yc, b.ys);
     pivot_backward(T, l, l, b.yc, b.ys, b.c, b.s);
     pivot_turn(l, l, ca_.data(), sa_.data(), true, b.c, b.s);
-    pivot_store(l, l, b.c, b.s, true, out1, out2);
+    pivot_store(l, l, b.c, b.s, add, out1, out2);
   }
 }
 

@@ -61,12 +61,12 @@ class PivotRotation {
   // Direction e (any length > 0), degrees <= L, frame orders |m| <= M (M < 0: all).
   void build(const Vec3& e, int L, int M = -1);
   int degree() const { return L_; }
-  // As FrameRotation::to_frame2 / from_frame2 (frame orders <= min(M, Mmax); from_frame2 ADDS), with the
-  // quarter turns of Y (Y.degree() >= Lmax).
+  // As FrameRotation::to_frame2 / from_frame2 (frame orders <= min(M, Mmax); from_frame2 ADDS, or writes
+  // with add = false), with the quarter turns of Y (Y.degree() >= Lmax).
   void to_frame2(const PivotTables& Y, int Lmax, int Mmax, const double* in1, const double* in2, double* out1,
                  double* out2) const;
   void from_frame2(const PivotTables& Y, int Lmax, int Mmax, const double* in1, const double* in2, double* out1,
-                   double* out2) const;
+                   double* out2, bool add = true) const;
 
  private:
   int L_ = -1, M_ = -1;

@@ -268,7 +268,8 @@ void FrameRotation::to_frame2(int Lmax, int Mmax, const double* in1, const doubl
 }
 
 void FrameRotation::from_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1,
-                                double* out2) const {
+                                double* out2, bool add) const {
+  auto put = [add](double& o, double v) { o = add ? o + v : v; };
   alignas(16) double vc[2 * 514], vs[2 * 514], tc[2 * 514], ts[2 * 514];
   for (int l = 0; l <= Lmax; ++l) {
     const int ml = std::min(l, M_);
@@ -293,14 +294,14 @@ void FrameRotation::from_frame2(int Lmax, int Mmax, const double* in1, const dou
       }
       kern::gemv2t(S, l, mm, l, vs, ts);
     }
-    out1[idx(l, 0)] += tc[0];
-    out2[idx(l, 0)] += tc[1];
+    put(out1[idx(l, 0)], tc[0]);
+    put(out2[idx(l, 0)], tc[1]);
     for (int m = 1; m <= l; ++m) {
       const double c = cosa_[m], s = sina_[m];
-      out1[idx(l, m)] += tc[2 * m] * c - ts[2 * (m - 1)] * s;
-      out1[idx(l, -m)] += tc[2 * m] * s + ts[2 * (m - 1)] * c;
-      out2[idx(l, m)] += tc[2 * m + 1] * c - ts[2 * (m - 1) + 1] * s;
-      out2[idx(l, -m)] += tc[2 * m + 1] * s + ts[2 * (m - 1) + 1] * c;
+      put(out1[idx(l, m)], tc[2 * m] * c - ts[2 * (m - 1)] * s);
+      put(out1[idx(l, -m)], tc[2 * m] * s + ts[2 * (m - 1)] * c);
+      put(out2[idx(l, m)], tc[2 * m + 1] * c - ts[2 * (m - 1) + 1] * s);
+      put(out2[idx(l, -m)], tc[2 * m + 1] * s + ts[2 * (m - 1) + 1] * c);
     }
   }
 }

@@ -34,9 +34,11 @@ class FrameRotation {
   void from_frame(int Lmax, const double* in, double* out) const;
   // Fused versions for two vectors (one pass over the rotation data). to_frame2 computes only
   // the frame orders |m| <= Mmax (others untouched); from_frame2 reads only |m| <= Mmax and
-  // ADDS the result to out1, out2.
+  // ADDS the result to out1, out2 (degrees <= Lmax, every order), or writes it there with add = false (the
+  // same numbers as adding to zeros, but for the sign of a zero).
   void to_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1, double* out2) const;
-  void from_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1, double* out2) const;
+  void from_frame2(int Lmax, int Mmax, const double* in1, const double* in2, double* out1, double* out2,
+                   bool add = true) const;
   // Degree l's blocks of to_frame (after the z rotation): cos block rows m' = 0..min(l, M), columns
   // m = 0..l (row-major), sin block rows m' = 1..min(l, M), columns m = 1..l (pivot_rotation.hpp).
   const double* cos_block(int l) const { return &blk_[off_[l]]; }

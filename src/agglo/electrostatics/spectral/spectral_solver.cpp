@@ -179,14 +179,14 @@ void SpectralSolver::pair_product(const Pair& pr, const double* beta, double* ou
   else
     pr.R.to_frame2(pr.L, pr.M, b_k, b_i, bk, bi);
   std::fill(ai, ai + 2 * np, 0.0);  // ai, ak
-  std::fill(out_i, out_i + np, 0.0);
-  std::fill(out_k, out_k + np, 0.0);
+  // out_i, out_k: written whole by the rotation back (add = false; the same numbers as adding to zeros but
+  // for the sign of a zero, and alpha, which starts at +0, sums them to the same bits either way)
   // source k seen from i sits at +t z; source i seen from k at -t z.
   T_.apply_pair(pr.L, pr.M, pr.ui, pr.uk, bk, bi, ai, ak, pr.powers.empty() ? nullptr : pr.powers.data());
   if (pr.pivot)
-    pr.P.from_frame2(pivot_, pr.L, pr.M, ai, ak, out_i, out_k);
+    pr.P.from_frame2(pivot_, pr.L, pr.M, ai, ak, out_i, out_k, false);
   else
-    pr.R.from_frame2(pr.L, pr.M, ai, ak, out_i, out_k);
+    pr.R.from_frame2(pr.L, pr.M, ai, ak, out_i, out_k, false);
 }
 
 // alpha = M beta. The pairs are taken in blocks (block_end): each block's pair products run in parallel
@@ -335,12 +335,14 @@ void SpectralSolver::applied_field(const Problem& p, LargeVector& alpha_ext, Lar
     for (int l = 1; l <= L; ++l) gamma_[i * (L + 1) + l] = (ki - k0) * l / ((ki + k0) * l + k0);
   }
   const std::size_t n = std::size_t(N) * nc_;
-  alpha_ext.assign(n, 0.0);
-  rhs.assign(n, 0.0);
+  alpha_ext.resize(n);  // every number is set below, sphere by sphere
+  rhs.resize(n);  // (rhs: every number written, degree by degree)
   const double r2 = std::sqrt(2.0);
+#pragma omp parallel for schedule(static) if (n >= kSpectralParallelLength)
   for (int i = 0; i < N; ++i) {
     const auto& s = p.spheres[i];
     double* ae = &alpha_ext[std::size_t(i) * nc_];
+    std::fill(ae, ae + nc_, 0.0);
     const Vec3& E = p.external_field;
     ae[sh::idx(0, 0)] = -dot(E, s.center);
     if (L >= 1) {
@@ -378,8 +380,8 @@ void SpectralSolver::apply_system(std::span<const double> xs, std::span<double> 
 GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector& rhs, double tol) {
   const int N = N_;
   const std::size_t n = std::size_t(N) * nc_;
-  beta_.assign(n, 0.0);
   if (prev_N_ == N && prev_L_ >= 0) {
+    beta_.assign(n, 0.0);
     int Lc = std::min(prev_L_, L_);
     int ncp = sh::ncoef(prev_L_);
     for (int i = 0; i < N; ++i)
@@ -387,7 +389,7 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector
   } else {
     beta_ = rhs;
   }
-  alpha_.assign(n, 0.0);
+  alpha_.resize(n);  // left unset: every product (matvec_M) zeroes it before it adds
   alpha_current_ = false;
   GmresResult gr;
   bool polarisable = false;
@@ -415,34 +417,42 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector
 }
 
 // Forces, torques (closed forms of spectral_solver.hpp) and energy from beta_ and alpha_ (the
-// complete external potential coefficients).
+// complete external potential coefficients). Sphere by sphere, in parallel from kSpectralParallelLength
+// unknowns on: each sphere's numbers are computed alone and the energy terms are added in sphere order
+// afterwards, so the bits do not depend on the thread count.
 Solution SpectralSolver::forces_and_energy(const Problem& p) const {
   const int N = N_, L = L_;
   const double k0 = p.medium_permittivity;
   Solution sol;
   sol.force.assign(N, Vec3{});
   sol.torque.assign(N, Vec3{});
-  std::vector<double> gx(nc_), gy(nc_), gz(nc_);
-  double U = 0.0;
-  for (int i = 0; i < N; ++i) {
-    const auto& s = p.spheres[i];
-    const double* al = &alpha_[std::size_t(i) * nc_];
-    const double* be = &beta_[std::size_t(i) * nc_];
-    // F = -kappa0 grad_shift \int sigma phi_ext dS = -kappa0 4 pi eps0 sum w_m beta (a grad phi)_lm
-    sh::gradient(L, al, gx.data(), gy.data(), gz.data());
-    auto wdot = [&](const std::vector<double>& g) {
-      double acc = 0.0;
-      for (int l = 0; l <= L; ++l)
-        for (int m = -l; m <= l; ++m) acc += (m == 0 ? 1.0 : 0.5) * be[sh::idx(l, m)] * g[sh::idx(l, m)];
-      return acc;
-    };
-    const double c = -k0 * 4 * pi * eps0;
-    sol.force[i] = Vec3{wdot(gx), wdot(gy), wdot(gz)} * c;
-    // M = kappa0 \int sigma r x E = -kappa0 4 pi eps0 a sum w_m beta (r x grad) alpha
-    sh::rotation_generator(L, al, gx.data(), gy.data(), gz.data());
-    sol.torque[i] = Vec3{wdot(gx), wdot(gy), wdot(gz)} * (c * s.radius);
-    U += 0.5 * s.charge * (be[0] + al[0]);
+  std::vector<double> energy(N);
+#pragma omp parallel if (std::size_t(N) * nc_ >= kSpectralParallelLength)
+  {
+    std::vector<double> gx(nc_), gy(nc_), gz(nc_);
+#pragma omp for schedule(static)
+    for (int i = 0; i < N; ++i) {
+      const auto& s = p.spheres[i];
+      const double* al = &alpha_[std::size_t(i) * nc_];
+      const double* be = &beta_[std::size_t(i) * nc_];
+      // F = -kappa0 grad_shift \int sigma phi_ext dS = -kappa0 4 pi eps0 sum w_m beta (a grad phi)_lm
+      sh::gradient(L, al, gx.data(), gy.data(), gz.data());
+      auto wdot = [&](const std::vector<double>& g) {
+        double acc = 0.0;
+        for (int l = 0; l <= L; ++l)
+          for (int m = -l; m <= l; ++m) acc += (m == 0 ? 1.0 : 0.5) * be[sh::idx(l, m)] * g[sh::idx(l, m)];
+        return acc;
+      };
+      const double c = -k0 * 4 * pi * eps0;
+      sol.force[i] = Vec3{wdot(gx), wdot(gy), wdot(gz)} * c;
+      // M = kappa0 \int sigma r x E = -kappa0 4 pi eps0 a sum w_m beta (r x grad) alpha
+      sh::rotation_generator(L, al, gx.data(), gy.data(), gz.data());
+      sol.torque[i] = Vec3{wdot(gx), wdot(gy), wdot(gz)} * (c * s.radius);
+      energy[i] = 0.5 * s.charge * (be[0] + al[0]);
+    }
   }
+  double U = 0.0;
+  for (int i = 0; i < N; ++i) U += energy[i];
   sol.energy = U;
   return sol;
 }
@@ -461,7 +471,9 @@ Solution SpectralSolver::solve(const Problem& p) {
   // external potential coefficients (M beta_ is there after GMRES; one product less per solve)
   parallel_blocks_ = count_parallel_blocks();
   if (!alpha_current_) matvec_M(beta_.data(), alpha_.data());
-  for (std::size_t c = 0; c < alpha_.size(); ++c) alpha_[c] += alpha_ext[c];
+  const std::size_t nall = alpha_.size();
+#pragma omp parallel for schedule(static) if (nall >= kSpectralParallelLength)
+  for (std::size_t c = 0; c < nall; ++c) alpha_[c] += alpha_ext[c];
   Solution sol = forces_and_energy(p);
 
   prev_beta_ = beta_;
