@@ -133,8 +133,14 @@ void Engine::sort_cells() {
   const std::size_t nc = static_cast<std::size_t>(s_.motion.domain.num_cells());
   start_.assign(nc + 1, 0);
   // (Unrolled: the loop overhead is a third of these loops' instructions; the same order of updates.)
-  AGGLO_SORT_UNROLL4
-  for (std::size_t i = 0; i < n; ++i) ++start_[cell_of_[i] + 1];
+  if (by_rank_.empty()) {
+    AGGLO_SORT_UNROLL4
+    for (std::size_t i = 0; i < n; ++i) ++start_[cell_of_[i] + 1];
+  } else {  // (in canonical order also the counts: in stored order runs of one cell chain the increments)
+    const std::uint32_t* by_rank = by_rank_.data();
+    AGGLO_SORT_UNROLL4
+    for (std::size_t r = 0; r < n; ++r) ++start_[cell_of_[by_rank[r]] + 1];
+  }
   for (std::size_t c = 0; c < nc; ++c) start_[c + 1] += start_[c];
   fill_.assign(start_.begin(), start_.end() - 1);
   if (by_rank_.empty()) {
