@@ -30,12 +30,6 @@ constexpr std::size_t kMotionChunk = 512;
 // store them sorted by cell, re-sorted every kResortEvery steps of a moving run, the canonical order kept.
 constexpr std::size_t kSortMinSamples = kParallelMinSamples;
 constexpr std::uint64_t kResortEvery = 64;
-
-// The part of `bounds` (the B + 1 bounds of B blocks) that thread t of a team of `team` threads takes.
-std::pair<std::size_t, std::size_t> block_range(const std::vector<std::uint32_t>& bounds, int t, int team) {
-  const std::size_t nb = bounds.size() - 1, tt = static_cast<std::size_t>(t), tm = static_cast<std::size_t>(team);
-  return {bounds[tt * nb / tm], bounds[(tt + 1) * nb / tm]};
-}
 }  // namespace
 
 // The per-sample loops of the motion pass (state check, cell index) also compiled for AVX2 with GCC on
@@ -210,6 +204,10 @@ void Engine::fix_blocks() {
 void Engine::split_blocks() {
   const std::size_t n = p_.size(), nc = start_.size() - 1;
   const std::size_t nb = static_cast<std::size_t>(std::max(1, omp_get_max_threads()));
+  if (move_claims_.size() != nb) {
+    move_claims_ = std::vector<BlockClaims>(nb);
+    cell_claims_ = std::vector<BlockClaims>(nb);
+  }
   block_cells_.assign(nb + 1, static_cast<std::uint32_t>(nc));
   block_samples_.assign(nb + 1, static_cast<std::uint32_t>(n));
   block_cells_[0] = block_samples_[0] = 0;
@@ -289,6 +287,9 @@ void Engine::step() {
   if (!blocks_fixed_ || block_samples_.back() != n ||
       block_cells_.size() != static_cast<std::size_t>(std::max(1, omp_get_max_threads())) + 1)
     split_blocks();
+  for (std::size_t b = 0; b < move_claims_.size(); ++b)
+    move_claims_[b].reset(static_cast<std::uint32_t>((block_samples_[b + 1] - block_samples_[b] + kMotionChunk - 1) /
+                                                     kMotionChunk));
 #pragma omp parallel num_threads(nt) if (parallel)
   {
     const int thread = omp_get_thread_num(), team = omp_get_num_threads();
@@ -311,16 +312,17 @@ void Engine::step() {
   for (int c = 0; c < nc; ++c) stats_.add(cell_stats_[c]);
 }
 
-// Motion over one collision step, state check and cell index of the thread's block of stored samples:
-// the first part of a step's parallel region. Sets bad_state if a piece failed the check.
+// Motion over one collision step, state check and cell index of the thread's block of stored samples
+// (then what is left of the others' blocks, block_claims.hpp): the first part of a step's parallel region.
+// Sets bad_state if a piece failed the check.
 void Engine::move_pass(int thread, int team, bool& bad_state) {
   const double t0 = time();
   const Motion& M = s_.motion;
   const bool moving = M.integrator != Integrator::none;
   bool ok = true;
-  const auto [first, last] = block_range(block_samples_, thread, team);
-  for (std::size_t b = first; b < last; b += kMotionChunk) {
-    const std::size_t e = std::min(last, b + kMotionChunk);
+  share_blocks(move_claims_, thread, team, [&](std::size_t block, std::size_t piece) {
+    const std::size_t b = block_samples_[block] + piece * kMotionChunk;
+    const std::size_t e = std::min<std::size_t>(block_samples_[block + 1], b + kMotionChunk);
     bool chunk_ok = true;
     if (moving) {
       M.advance(p_, b, e, t0, s_.collision_dt, substeps_);
@@ -328,7 +330,7 @@ void Engine::move_pass(int thread, int team, bool& bad_state) {
     }
     if (chunk_ok) compute_cells(b, e);  // only for valid positions (otherwise the step throws)
     ok = ok && chunk_ok;
-  }
+  });
   if (!ok) {
 #pragma omp atomic write
     bad_state = true;
@@ -363,6 +365,7 @@ GroupReuse Engine::bin_step(bool moved, bool bad_state) {
                            : regroup_step      ? GroupReuse::retighten
                                                : GroupReuse::keep;
   regroup_ = false;
+  for (std::size_t b = 0; b < cell_claims_.size(); ++b) cell_claims_[b].reset(block_cells_[b + 1] - block_cells_[b]);
   if (binned) {
     local_of_.resize(n);
     groups_.resize(static_cast<std::size_t>(s_.motion.domain.num_cells()));
@@ -388,12 +391,12 @@ CollisionContext Engine::collision_context() const {
 // cell's exception is kept as its message in errors (exceptions must not leave an OpenMP region).
 void Engine::collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::vector<std::string>& errors, int thread,
                           int team) {
-  const auto [first, last] = block_range(block_cells_, thread, team);
   const std::uint64_t st = step_;
   const bool binned = s_.selection == Selection::binned;
   // Moving runs: the cell of every sample, for the binned groups that follow the samples.
   const std::uint32_t* cell_of = s_.motion.integrator != Integrator::none ? cell_of_.data() : nullptr;
-  for (int c = static_cast<int>(first); c < static_cast<int>(last); ++c) {
+  share_blocks(cell_claims_, thread, team, [&](std::size_t block, std::size_t k) {
+    const std::size_t c = block_cells_[block] + k;
     cell_stats_[c] = CollisionStats{};
     const std::size_t b = start_[c], e = start_[c + 1];
     try {
@@ -406,9 +409,9 @@ void Engine::collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::ve
       else if (e - b >= 2)
         collide_cell(p_, order_.data() + b, e - b, cell, st, ctx, cell_stats_[c]);
     } catch (const std::exception& ex) {
-      errors[static_cast<std::size_t>(c)] = ex.what();
+      errors[c] = ex.what();
     }
-  }
+  });
 }
 
 }  // namespace agglo::acoustics

@@ -5,7 +5,8 @@
 // every random draw comes from a counter-based stream keyed by (seed, cell, step) or
 // (seed, population, sample), so a run is bitwise reproducible whatever the thread count.
 // Storage order: a step's threads each take one contiguous block of cells, balanced by sample count, in
-// both passes (motion and collisions). So that a block's samples are also contiguous in memory, runs of
+// both passes (motion and collisions; a thread done with its block helps with what is left of the others',
+// block_claims.hpp). So that a block's samples are also contiguous in memory, runs of
 // the Nanbu selection with kSortMinSamples or more samples store them sorted by cell (re-sorted every
 // kResortEvery steps), while every result keeps the canonical order, the order the samples had without
 // sorting: a cell's samples meet in canonical order, and particles() and the checkpoint restore it first.
@@ -16,6 +17,7 @@
 #include "agglo/acoustics/drag.hpp"
 #include "agglo/acoustics/kernels.hpp"
 #include "agglo/acoustics/binned.hpp"
+#include "agglo/acoustics/block_claims.hpp"
 #include "agglo/acoustics/nanbu.hpp"
 #include "agglo/acoustics/outcomes.hpp"
 #include "agglo/acoustics/samples.hpp"
@@ -117,6 +119,7 @@ class Engine {
   mutable bool blocks_fixed_ = false;  // blocks from a sort of the present storage
   std::vector<std::uint32_t> block_cells_, block_samples_;  // bounds of the blocks (cells; stored samples)
   std::uint64_t sorted_at_ = 0, resorts_ = 0;
+  std::vector<BlockClaims> move_claims_, cell_claims_;  // the blocks' pieces and cells shared out (block_claims.hpp)
   std::vector<CollisionStats> cell_stats_;
   std::vector<std::uint32_t> local_of_;  // scratch of the binned selection
   std::vector<BinnedGroups> groups_;     // binned selection: groups of each cell
