@@ -14,6 +14,7 @@
 #include "agglo/dem/contact/marshall_sliding.hpp"
 #include "agglo/dem/contact/marshall_twisting.hpp"
 #include "agglo/dem/dem_system.hpp"
+#include "agglo/dem/parallel_for.hpp"
 
 using namespace agglo;
 using namespace agglo::dem;
@@ -86,6 +87,30 @@ TEST(DemReferenceTwin, BlockAtEquilibriumBitIdentical) {
       ASSERT_EQ(twin_differences(fast, ref), 0) << "step " << fast.steps() << ", all models " << all_models;
     }
     EXPECT_EQ(fast.active_contacts(), 300);  // 3 * 5 * 5 * 4 lattice contacts, all kept
+  }
+  omp_set_num_threads(saved);
+}
+
+// The parallel fast path (blocks of pairs, contact/pair_blocks.hpp: more than one thread and more than
+// kParallelThreshold pairs) against the reference twin on one thread: a 13^3 block (6084 lattice contacts),
+// every particle moving, so that contacts also form and break; 2 and 3 threads (uneven blocks).
+TEST(DemReferenceTwin, ParallelBlocksBitIdentical) {
+  const int saved = omp_get_max_threads();
+  for (int threads : {2, 3}) {
+    omp_set_num_threads(1);
+    DemSystem ref(twin_block(13, 0.05), twin_params(true));
+    ref.set_reference_kernel(true);
+    ref.run(60);
+    omp_set_num_threads(threads);
+    DemSystem fast(twin_block(13, 0.05), twin_params(true));
+    fast.run(60);
+    ASSERT_GT(static_cast<std::int64_t>(fast.pairs().size()), kParallelThreshold);
+    ASSERT_TRUE(runs_parallel(static_cast<std::int64_t>(fast.pairs().size())));
+    EXPECT_EQ(twin_differences(fast, ref), 0) << threads << " threads";
+    const auto blocks = contact::make_pair_blocks(fast.pairs(), fast.particles().size(), threads);
+    std::size_t crossing = 0;
+    for (const auto& c : blocks.crossing_out) crossing += c.size();
+    EXPECT_GT(crossing, 0u);  // (pairs between the blocks exist: the buffered path was taken)
   }
   omp_set_num_threads(saved);
 }

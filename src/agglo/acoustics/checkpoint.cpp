@@ -110,6 +110,7 @@ void mismatch(const io::CheckpointReader& r, const char* what, std::size_t found
 class EngineCheckpoint {
  public:
   static void save(const Engine& e, io::CheckpointWriter& w) {
+    e.canonicalize();  // the samples in canonical order (engine.hpp), as a run that never sorted them
     w.u64(e.step_);
     each_array(e.p_, [&](const auto& v) { w.pod_vector(v); });
     w.pod(e.stats_);
@@ -124,6 +125,7 @@ class EngineCheckpoint {
 
   static void load(Engine& e, io::CheckpointReader& r) {
     const std::size_t n = e.p_.size();  // samples are never added or removed during a run
+    e.forget_storage_order();            // the checkpoint holds the canonical order
     e.step_ = r.u64();
     each_array(e.p_, [&](auto& v) {
       get(r, v);

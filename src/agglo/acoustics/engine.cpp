@@ -24,8 +24,12 @@ constexpr std::size_t kParallelMinSamples = 4096;
 // Large sets are re-sorted by cell every kReorderEvery steps so that a cell's samples are contiguous.
 constexpr std::size_t kReorderMinSamples = 100000;
 constexpr std::uint64_t kReorderEvery = 64;
-// Samples per work item of the parallel motion pass.
+// Samples per piece of a thread's block in the motion pass (state check and cell index while in cache).
 constexpr std::size_t kMotionChunk = 512;
+// Runs of the Nanbu selection with at least kSortMinSamples (and fewer than kReorderMinSamples) samples
+// store them sorted by cell, re-sorted every kResortEvery steps of a moving run, the canonical order kept.
+constexpr std::size_t kSortMinSamples = kParallelMinSamples;
+constexpr std::uint64_t kResortEvery = 64;
 }  // namespace
 
 // The per-sample loops of the motion pass (state check, cell index) also compiled for AVX2 with GCC on
@@ -117,17 +121,103 @@ void Engine::bin() {
   sort_cells();
 }
 
+// Counting sort by cell; a cell's samples in canonical order (stored order when that is canonical).
 void Engine::sort_cells() {
   const std::size_t n = p_.size();
   const std::size_t nc = static_cast<std::size_t>(s_.motion.domain.num_cells());
   start_.assign(nc + 1, 0);
   // (Unrolled: the loop overhead is a third of these loops' instructions; the same order of updates.)
-  AGGLO_SORT_UNROLL4
-  for (std::size_t i = 0; i < n; ++i) ++start_[cell_of_[i] + 1];
+  if (by_rank_.empty()) {
+    AGGLO_SORT_UNROLL4
+    for (std::size_t i = 0; i < n; ++i) ++start_[cell_of_[i] + 1];
+  } else {  // (in canonical order also the counts: in stored order runs of one cell chain the increments)
+    const std::uint32_t* by_rank = by_rank_.data();
+    AGGLO_SORT_UNROLL4
+    for (std::size_t r = 0; r < n; ++r) ++start_[cell_of_[by_rank[r]] + 1];
+  }
   for (std::size_t c = 0; c < nc; ++c) start_[c + 1] += start_[c];
   fill_.assign(start_.begin(), start_.end() - 1);
-  AGGLO_SORT_UNROLL4
-  for (std::size_t i = 0; i < n; ++i) order_[fill_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  if (by_rank_.empty()) {
+    AGGLO_SORT_UNROLL4
+    for (std::size_t i = 0; i < n; ++i) order_[fill_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  } else {
+    const std::uint32_t* by_rank = by_rank_.data();
+    AGGLO_SORT_UNROLL4
+    for (std::size_t r = 0; r < n; ++r) order_[fill_[cell_of_[by_rank[r]]]++] = by_rank[r];
+  }
+}
+
+bool Engine::sorts_storage() const {
+  const std::size_t n = p_.size();
+  return s_.sort_storage && n >= kSortMinSamples && n < kReorderMinSamples && s_.selection == Selection::nanbu;
+}
+
+// Stores the samples in the order of order_ (cells in turn; a cell's samples in canonical order), so that
+// order_ becomes the identity and a block of cells holds a contiguous range of samples.
+void Engine::reorder_by_cell(bool keep_canonical) {
+  const std::size_t n = p_.size();
+  p_.permute(order_);
+  if (keep_canonical) {
+    std::vector<std::uint32_t> rank(n);
+    for (std::size_t k = 0; k < n; ++k) rank[k] = rank_.empty() ? order_[k] : rank_[order_[k]];
+    rank_ = std::move(rank);
+    by_rank_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) by_rank_[rank_[k]] = static_cast<std::uint32_t>(k);
+  } else {
+    forget_storage_order();
+  }
+  std::vector<std::uint32_t> cells(n);
+  for (std::size_t k = 0; k < n; ++k) cells[k] = cell_of_[order_[k]];
+  cell_of_ = std::move(cells);
+  for (std::size_t k = 0; k < n; ++k) order_[k] = static_cast<std::uint32_t>(k);
+  regroup_ = true;
+  sorted_at_ = step_;
+  ++resorts_;
+  fix_blocks();
+}
+
+void Engine::canonicalize() const {
+  if (rank_.empty()) return;
+  const std::size_t n = p_.size();
+  p_.permute(by_rank_);
+  std::vector<std::uint32_t> cells(n);
+  for (std::size_t k = 0; k < n; ++k) cells[k] = cell_of_[by_rank_[k]];
+  cell_of_ = std::move(cells);
+  for (std::uint32_t& i : order_) i = rank_[i];
+  forget_storage_order();
+}
+
+void Engine::forget_storage_order() const {
+  rank_.clear();
+  by_rank_.clear();
+  blocks_fixed_ = false;
+}
+
+// One block per thread of omp_get_max_threads(), each a contiguous range of cells holding about n / B
+// samples; with sorted storage (order_ the identity) also a contiguous range of stored samples.
+void Engine::fix_blocks() {
+  split_blocks();
+  for (std::size_t b = 0; b < block_cells_.size(); ++b) block_samples_[b] = start_[block_cells_[b]];
+  blocks_fixed_ = true;
+}
+
+void Engine::split_blocks() {
+  const std::size_t n = p_.size(), nc = start_.size() - 1;
+  const std::size_t nb = static_cast<std::size_t>(std::max(1, omp_get_max_threads()));
+  if (move_claims_.size() != nb) {
+    move_claims_ = std::vector<BlockClaims>(nb);
+    cell_claims_ = std::vector<BlockClaims>(nb);
+  }
+  block_cells_.assign(nb + 1, static_cast<std::uint32_t>(nc));
+  block_samples_.assign(nb + 1, static_cast<std::uint32_t>(n));
+  block_cells_[0] = block_samples_[0] = 0;
+  for (std::size_t b = 1; b < nb; ++b) {
+    const auto first = std::lower_bound(start_.begin(), start_.end(), static_cast<std::uint32_t>(b * n / nb));
+    block_cells_[b] = std::max(block_cells_[b - 1], static_cast<std::uint32_t>(first - start_.begin()));
+    block_cells_[b] = std::min(block_cells_[b], static_cast<std::uint32_t>(nc));
+    block_samples_[b] = static_cast<std::uint32_t>(b * n / nb);
+  }
+  blocks_fixed_ = false;
 }
 
 double Engine::max_guard_pn(std::size_t* argmax) const {
@@ -140,7 +230,7 @@ double Engine::max_guard_pn(std::size_t* argmax) const {
     const CellBounds cb = cell_bounds(p_, idx, n, kernel_, s_.motion.gas);
     for (std::size_t a = 0; a < n; ++a) {
       const double pn = guard_pn(p_, idx[a], n, cb, kernel_, s_.collision_dt, D.cell_volume());
-      if (pn > m && argmax) *argmax = idx[a];
+      if (pn > m && argmax) *argmax = rank_.empty() ? idx[a] : rank_[idx[a]];  // (canonical index)
       m = std::max(m, pn);
     }
   }
@@ -149,7 +239,8 @@ double Engine::max_guard_pn(std::size_t* argmax) const {
 
 void Engine::check_state() const {
   const Domain& D = s_.motion.domain;
-  for (std::size_t i = 0; i < p_.size(); ++i) {
+  for (std::size_t r = 0; r < p_.size(); ++r) {
+    const std::size_t i = by_rank_.empty() ? r : by_rank_[r];  // (in canonical order: the first bad sample)
     const bool finite = std::isfinite(p_.x[i]) && std::isfinite(p_.y[i]) && std::isfinite(p_.z[i]) &&
                         std::isfinite(p_.vx[i]) && std::isfinite(p_.vy[i]) && std::isfinite(p_.vz[i]) &&
                         std::isfinite(p_.w[i]) && std::isfinite(p_.mass[i]);
@@ -167,9 +258,11 @@ void Engine::check_state() const {
 
 // One collision step in one OpenMP parallel region (one fork/join per step; the serial binning between
 // motion and collisions is an `omp single`): motion, state check and cell index of each sample; then
-// the counting sort by cell (and the periodic reorder of large sets); then the collision step of every
-// cell. Each part does what it did in separate regions, in the same order per sample and per cell, so
-// results are bitwise the same for any thread count. Exceptions never leave the region: the serial
+// the counting sort by cell (and the periodic re-sort of the storage); then the collision step of every
+// cell. Each thread takes the same block in both passes: the stored samples of its cells at the last sort
+// and those cells (a static partition, so a sample stays in one core's cache between the passes). Each
+// part does the same per sample and per cell, in the same order, so results are bitwise the same for any
+// thread count. Exceptions never leave the region: the serial
 // part's is kept and rethrown, and the cells' messages are kept per cell (the lowest cell's is thrown).
 void Engine::step() {
   const std::size_t n = p_.size();
@@ -191,9 +284,16 @@ void Engine::step() {
   const int nt = parallel ? threads_.next(omp_get_max_threads()) : 1;
   const bool timed = parallel && threads_.measuring();
   const auto wall0 = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+  if (!blocks_fixed_ || block_samples_.back() != n ||
+      block_cells_.size() != static_cast<std::size_t>(std::max(1, omp_get_max_threads())) + 1)
+    split_blocks();
+  for (std::size_t b = 0; b < move_claims_.size(); ++b)
+    move_claims_[b].reset(static_cast<std::uint32_t>((block_samples_[b + 1] - block_samples_[b] + kMotionChunk - 1) /
+                                                     kMotionChunk));
 #pragma omp parallel num_threads(nt) if (parallel)
   {
-    if (move) move_pass(bad_state);
+    const int thread = omp_get_thread_num(), team = omp_get_num_threads();
+    if (move) move_pass(thread, team, bad_state);
 #pragma omp barrier
 #pragma omp single
     {
@@ -203,7 +303,7 @@ void Engine::step() {
         serial_error = std::current_exception();
       }
     }  // implicit barrier: every thread sees serial_error
-    if (!serial_error) collide_pass(ctx, reuse, errors);
+    if (!serial_error) collide_pass(ctx, reuse, errors, thread, team);
   }
   if (timed) threads_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
   if (serial_error) std::rethrow_exception(serial_error);
@@ -212,19 +312,17 @@ void Engine::step() {
   for (int c = 0; c < nc; ++c) stats_.add(cell_stats_[c]);
 }
 
-// Motion over one collision step, state check and cell index: the work-sharing part of a step's
-// parallel region. Chunks are handed out dynamically: a thread that the OS holds back (shared machine)
-// does not hold up the others for its whole static share. Sets bad_state if a chunk failed the check.
-void Engine::move_pass(bool& bad_state) {
+// Motion over one collision step, state check and cell index of the thread's block of stored samples
+// (then what is left of the others' blocks, block_claims.hpp): the first part of a step's parallel region.
+// Sets bad_state if a piece failed the check.
+void Engine::move_pass(int thread, int team, bool& bad_state) {
   const double t0 = time();
-  const std::size_t n = p_.size();
   const Motion& M = s_.motion;
   const bool moving = M.integrator != Integrator::none;
   bool ok = true;
-  const long nchunks = static_cast<long>((n + kMotionChunk - 1) / kMotionChunk);
-#pragma omp for schedule(dynamic, 1) nowait
-  for (long c = 0; c < nchunks; ++c) {
-    const std::size_t b = static_cast<std::size_t>(c) * kMotionChunk, e = std::min(n, b + kMotionChunk);
+  share_blocks(move_claims_, thread, team, [&](std::size_t block, std::size_t piece) {
+    const std::size_t b = block_samples_[block] + piece * kMotionChunk;
+    const std::size_t e = std::min<std::size_t>(block_samples_[block + 1], b + kMotionChunk);
     bool chunk_ok = true;
     if (moving) {
       M.advance(p_, b, e, t0, s_.collision_dt, substeps_);
@@ -232,7 +330,7 @@ void Engine::move_pass(bool& bad_state) {
     }
     if (chunk_ok) compute_cells(b, e);  // only for valid positions (otherwise the step throws)
     ok = ok && chunk_ok;
-  }
+  });
   if (!ok) {
 #pragma omp atomic write
     bad_state = true;
@@ -251,10 +349,12 @@ GroupReuse Engine::bin_step(bool moved, bool bad_state) {
     compute_cells(0, n);  // (not reached unless the fast test gave a false alarm)
   }
   if (moved) sort_cells();
-  if (n >= kReorderMinSamples && step_ % kReorderEvery == 1 && (moving || step_ == 1)) {
-    p_.permute(order_);
-    bin();
-  }
+  if (n >= kReorderMinSamples && step_ % kReorderEvery == 1 && (moving || step_ == 1))
+    reorder_by_cell(false);  // large sets: a new canonical order (as before the canonical order was kept)
+  else if (sorts_storage() && (!blocks_fixed_ || (moving && step_ - sorted_at_ >= kResortEvery)))
+    reorder_by_cell(true);
+  else if (!blocks_fixed_)
+    split_blocks();  // cells by this step's counts
   const bool binned = s_.selection == Selection::binned;
   // Binned groups are kept while only collisions change the samples (no motion, same order) and follow the
   // samples that move between cells otherwise; rebuilt after a new order and every kRegroupEvery steps of
@@ -265,6 +365,7 @@ GroupReuse Engine::bin_step(bool moved, bool bad_state) {
                            : regroup_step      ? GroupReuse::retighten
                                                : GroupReuse::keep;
   regroup_ = false;
+  for (std::size_t b = 0; b < cell_claims_.size(); ++b) cell_claims_[b].reset(block_cells_[b + 1] - block_cells_[b]);
   if (binned) {
     local_of_.resize(n);
     groups_.resize(static_cast<std::size_t>(s_.motion.domain.num_cells()));
@@ -286,16 +387,16 @@ CollisionContext Engine::collision_context() const {
   return ctx;
 }
 
-// One collision step in every cell: the second work-sharing part of a step's parallel region. A cell's
-// exception is kept as its message in errors (exceptions must not leave an OpenMP region).
-void Engine::collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::vector<std::string>& errors) {
-  const int nc = static_cast<int>(s_.motion.domain.num_cells());
+// One collision step in every cell of the thread's block: the second part of a step's parallel region. A
+// cell's exception is kept as its message in errors (exceptions must not leave an OpenMP region).
+void Engine::collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::vector<std::string>& errors, int thread,
+                          int team) {
   const std::uint64_t st = step_;
   const bool binned = s_.selection == Selection::binned;
   // Moving runs: the cell of every sample, for the binned groups that follow the samples.
   const std::uint32_t* cell_of = s_.motion.integrator != Integrator::none ? cell_of_.data() : nullptr;
-#pragma omp for schedule(dynamic, 1)
-  for (int c = 0; c < nc; ++c) {
+  share_blocks(cell_claims_, thread, team, [&](std::size_t block, std::size_t k) {
+    const std::size_t c = block_cells_[block] + k;
     cell_stats_[c] = CollisionStats{};
     const std::size_t b = start_[c], e = start_[c + 1];
     try {
@@ -308,9 +409,9 @@ void Engine::collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::ve
       else if (e - b >= 2)
         collide_cell(p_, order_.data() + b, e - b, cell, st, ctx, cell_stats_[c]);
     } catch (const std::exception& ex) {
-      errors[static_cast<std::size_t>(c)] = ex.what();
+      errors[c] = ex.what();
     }
-  }
+  });
 }
 
 }  // namespace agglo::acoustics

@@ -4,6 +4,12 @@
 // and one collision step per cell by the selected algorithm (nanbu.hpp, binned.hpp). Cells run in parallel (OpenMP);
 // every random draw comes from a counter-based stream keyed by (seed, cell, step) or
 // (seed, population, sample), so a run is bitwise reproducible whatever the thread count.
+// Storage order: a step's threads each take one contiguous block of cells, balanced by sample count, in
+// both passes (motion and collisions; a thread done with its block helps with what is left of the others',
+// block_claims.hpp). So that a block's samples are also contiguous in memory, runs of
+// the Nanbu selection with kSortMinSamples or more samples store them sorted by cell (re-sorted every
+// kResortEvery steps), while every result keeps the canonical order, the order the samples had without
+// sorting: a cell's samples meet in canonical order, and particles() and the checkpoint restore it first.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -11,6 +17,7 @@
 #include "agglo/acoustics/drag.hpp"
 #include "agglo/acoustics/kernels.hpp"
 #include "agglo/acoustics/binned.hpp"
+#include "agglo/acoustics/block_claims.hpp"
 #include "agglo/acoustics/nanbu.hpp"
 #include "agglo/acoustics/outcomes.hpp"
 #include "agglo/acoustics/samples.hpp"
@@ -36,6 +43,7 @@ struct EngineSettings {
   bool strict_guard = false;
   std::uint64_t max_subcycles = 100000;
   std::uint64_t seed = 1;
+  bool sort_storage = true;  // false: samples never stored sorted by cell (the reference twin of the sorted order)
 };
 
 class Engine {
@@ -51,8 +59,18 @@ class Engine {
   int motion_substeps() const { return substeps_; }
 
   const EngineSettings& settings() const { return s_; }
-  const SampleSet& particles() const { return p_; }
-  SampleSet& particles() { return p_; }
+  // The samples in canonical order (the storage order is restored first; the next step re-sorts).
+  const SampleSet& particles() const {
+    canonicalize();
+    return p_;
+  }
+  SampleSet& particles() {
+    canonicalize();
+    blocks_fixed_ = false;  // the caller may move or add samples
+    return p_;
+  }
+  // Times the samples were stored sorted by cell (the canonical order kept).
+  std::uint64_t resorts() const { return resorts_; }
   const std::vector<SampledPopulation>& sampled() const { return sampled_; }
   const CollisionStats& stats() const { return stats_; }
   const Kernel& kernel() const { return kernel_; }
@@ -71,21 +89,37 @@ class Engine {
   friend class EngineCheckpoint;  // saves and restores the state below (checkpoint.hpp)
   void bin();
   // The parts of step(), called inside its parallel region (engine.cpp).
-  void move_pass(bool& bad_state);                // motion, state check, cell index (omp for)
-  GroupReuse bin_step(bool moved, bool bad_state);  // serial: step counter, checks, sort by cell
-  void collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::vector<std::string>& errors);  // omp for
+  void move_pass(int thread, int team, bool& bad_state);  // motion, state check, cell index of the thread's block
+  GroupReuse bin_step(bool moved, bool bad_state);         // serial: step counter, checks, sort by cell
+  void collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::vector<std::string>& errors, int thread,
+                    int team);  // the cells of the thread's block
+  // Storage order (engine.cpp): samples stored in the cell order of order_; keep_canonical: the canonical
+  // order stays (rank_), else the new storage order becomes the canonical order (large sets, as before).
+  void reorder_by_cell(bool keep_canonical);
+  bool sorts_storage() const;
+  void canonicalize() const;  // stored order back to canonical (cell_of_, order_ follow)
+  void forget_storage_order() const;
+  void fix_blocks();          // blocks of cells (and of stored samples) from the present sort
+  void split_blocks();        // blocks of cells by the present counts, of samples evenly (unsorted storage)
   CollisionContext collision_context() const;
   void compute_cells(std::size_t begin, std::size_t end);  // cell_of_ for samples [begin, end)
   void sort_cells();                                        // order_, start_ from cell_of_
   bool state_ok(std::size_t begin, std::size_t end) const;  // fast test of check_state's conditions
   EngineSettings s_;
-  SampleSet p_;
+  mutable SampleSet p_;  // (mutable: the storage order, not the samples, changes in canonicalize())
   Kernel kernel_;
   std::vector<SampledPopulation> sampled_;
   CollisionStats stats_;
   std::uint64_t step_ = 0;
   int substeps_ = 1;
-  std::vector<std::uint32_t> cell_of_, order_, start_, fill_;
+  mutable std::vector<std::uint32_t> cell_of_, order_;
+  std::vector<std::uint32_t> start_, fill_;
+  mutable std::vector<std::uint32_t> rank_, by_rank_;  // canonical position of stored sample i, and inverse
+                                                       // (both empty: stored in canonical order)
+  mutable bool blocks_fixed_ = false;  // blocks from a sort of the present storage
+  std::vector<std::uint32_t> block_cells_, block_samples_;  // bounds of the blocks (cells; stored samples)
+  std::uint64_t sorted_at_ = 0, resorts_ = 0;
+  std::vector<BlockClaims> move_claims_, cell_claims_;  // the blocks' pieces and cells shared out (block_claims.hpp)
   std::vector<CollisionStats> cell_stats_;
   std::vector<std::uint32_t> local_of_;  // scratch of the binned selection
   std::vector<BinnedGroups> groups_;     // binned selection: groups of each cell

@@ -30,6 +30,11 @@ class ContactLaw {
   void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const {
     kernel_->accumulate_pairs(pairs, p, dt);
   }
+  // The same sums on several threads (pair_blocks.hpp), bit for bit those of accumulate_pairs.
+  void accumulate_pairs_in_blocks(std::vector<Pair>& pairs, Particles& p, double dt, const contact::PairBlocks& blocks,
+                                  std::vector<PairForce>& crossing) const {
+    kernel_->accumulate_pairs_in_blocks(pairs, p, dt, blocks, crossing);
+  }
   // One contact evaluation: updates `s` (formation, break, springs) and returns the forces.
   PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
                           std::uint32_t kind = 0) const {

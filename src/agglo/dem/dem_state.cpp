@@ -22,6 +22,7 @@ void DemSystem::restore(const DemState& s) {
   p_ = s.particles;
   p_.mat.resize(p_.size(), 0);
   nl_.restore(s.neighbors, p_.size());
+  blocks_builds_ = -1;  // the parallel path's blocks are made again for the restored list
   for (auto& pr : nl_.pairs()) pr.kind = mats_.kind(p_.mat[pr.i], p_.mat[pr.j]);
   dt_ = s.dt;
   skin_ = s.skin;

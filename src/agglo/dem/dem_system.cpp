@@ -148,13 +148,29 @@ void DemSystem::compute_forces() {
       pr.kind = mats_.kind(p_.mat[pr.i], p_.mat[pr.j]);
       pr.jkr = jkr_for(pr.i, pr.j);
     });
-  if (reference_ || runs_parallel(static_cast<std::int64_t>(nl_.pairs().size())))
+  if (reference_)
     gather_pair_forces();
+  else if (runs_parallel(static_cast<std::int64_t>(nl_.pairs().size())))
+    accumulate_in_blocks();
   else
     law_.accumulate_pairs(nl_.pairs(), p_, dt_);
   if (!walls_.empty() || norm2(params_.gravity) > 0.0) add_wall_and_body_forces();
   if (ext_) ext_->add_forces(p_, step_, time_, p_.f, p_.t);
   forces_ready_ = true;
+}
+
+// The parallel path: blocks of pairs, one per thread (pair_blocks.hpp), made again after every rebuild of
+// the list (and when the thread count or the particle count changes); the sums of the serial fast path.
+void DemSystem::accumulate_in_blocks() {
+  const auto nb = static_cast<std::size_t>(std::max(1, max_threads()));
+  const auto& pairs = nl_.pairs();
+  if (blocks_builds_ != nl_.builds() || blocks_.blocks() != nb || blocks_pairs_ != pairs.size() ||
+      blocks_.first_particle.back() != p_.size()) {  // (blocks() != nb also when none were made yet)
+    blocks_ = contact::make_pair_blocks(pairs, p_.size(), nb);
+    blocks_builds_ = nl_.builds();
+    blocks_pairs_ = pairs.size();
+  }
+  law_.accumulate_pairs_in_blocks(nl_.pairs(), p_, dt_, blocks_, pair_forces_);
 }
 
 void DemSystem::gather_pair_forces() {

@@ -113,6 +113,7 @@ class DemSystem {
   void add_wall_and_body_forces();
   void kick(std::int64_t q);
   void gather_pair_forces();  // the reference path: per-pair buffer, then a gather per particle
+  void accumulate_in_blocks();  // the parallel path: the fast path's sums on blocks of pairs
 
   Particles p_;
   DemParams params_;
@@ -131,6 +132,9 @@ class DemSystem {
   long step_ = 0;
   bool forces_ready_ = false;
   bool reference_ = false;
+  contact::PairBlocks blocks_;  // of the parallel path, for the list of build blocks_builds_ (-1: none)
+  long blocks_builds_ = -1;
+  std::size_t blocks_pairs_ = 0;
 };
 
 // Reference contact period T0 = 2 pi sqrt(m*/k0), k0 = 0.9905 F_C/delta_C, for the smallest pair, every

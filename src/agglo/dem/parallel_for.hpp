@@ -21,6 +21,15 @@ inline bool runs_parallel(std::int64_t n) {
 #endif
 }
 
+// Threads a parallel region would use (1 without OpenMP).
+inline int max_threads() {
+#ifdef _OPENMP
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
 template <class F>
 void parallel_for(std::int64_t n, const F& f) {
   if (n > kParallelThreshold) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "agglo/dem/contact/pair_blocks.hpp"
 #include "agglo/dem/contact/pair_state.hpp"
 #include "agglo/dem/jkr.hpp"
 #include "agglo/dem/neighbor_list.hpp"
@@ -22,6 +23,10 @@ class ContactKernel {
   // force goes to i (+) and j (-) as k grows, the order in which the per-pair buffer is gathered, so
   // the sums are bit for bit those of evaluate_pairs + gather (DemSystem), without the buffer.
   virtual void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const = 0;
+  // The same sums on blocks.blocks() OpenMP threads (pair_blocks.hpp: the crossing pairs' forces go through
+  // `crossing`, resized to pairs.size()), bit for bit those of accumulate_pairs.
+  virtual void accumulate_pairs_in_blocks(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& blocks,
+                                          std::vector<PairForce>& crossing) const = 0;
   // One pair of material pair `kind` (tests and diagnostics; a virtual call per pair).
   virtual PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
                                   std::uint32_t kind) const = 0;

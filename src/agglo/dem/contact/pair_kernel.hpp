@@ -65,6 +65,44 @@ class PairKernel final : public ContactKernel {
     }
   }
 
+  // Two phases per block (pair_blocks.hpp), block b on thread b of the team (static schedule, chunk 1, the
+  // same thread in both loops): zero the owned particles and buffer the crossing pairs' forces; then add
+  // the incoming crossing forces, and the own pairs in order (a crossing pair's force only to its i).
+  void accumulate_pairs_in_blocks(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& b,
+                                  std::vector<PairForce>& crossing) const override {
+    crossing.resize(pairs.size());
+    const auto nb = static_cast<std::int64_t>(b.blocks());
+#pragma omp parallel num_threads(static_cast<int>(nb))
+    {
+#pragma omp for schedule(static, 1)
+      for (std::int64_t t = 0; t < nb; ++t) {
+        for (std::uint32_t q = b.first_particle[t]; q < b.first_particle[t + 1]; ++q) p.f[q] = p.t[q] = Vec3{};
+        for (std::size_t k : b.crossing_out[t]) crossing[k] = pair_force(pairs[k], p, dt);
+      }
+#pragma omp for schedule(static, 1)
+      for (std::int64_t t = 0; t < nb; ++t) {
+        for (std::size_t k : b.crossing_in[t]) {
+          p.f[pairs[k].j] -= crossing[k].f_on_i;
+          p.t[pairs[k].j] += crossing[k].t_on_j;
+        }
+        const std::uint32_t end = b.first_particle[t + 1];
+        for (std::size_t k = b.first_pair[t]; k < b.first_pair[t + 1]; ++k) {
+          Pair& pr = pairs[k];
+          if (pr.j >= end) {
+            p.f[pr.i] += crossing[k].f_on_i;
+            p.t[pr.i] += crossing[k].t_on_i;
+            continue;
+          }
+          const PairForce out = pair_force(pr, p, dt);
+          p.f[pr.i] += out.f_on_i;
+          p.t[pr.i] += out.t_on_i;
+          p.f[pr.j] -= out.f_on_i;
+          p.t[pr.j] += out.t_on_j;
+        }
+      }
+    }
+  }
+
   PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
                           std::uint32_t kind) const override {
     return models_[kind].force(jkr, k, s, dt);
@@ -85,6 +123,12 @@ class PairKernel final : public ContactKernel {
   }
 
  private:
+  [[gnu::always_inline]] PairForce pair_force(Pair& pr, const Particles& p, double dt) const {
+    const PairKinematics kin{p.x[pr.i], p.x[pr.j], p.v[pr.i], p.v[pr.j], p.w[pr.i], p.w[pr.j],
+                             p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
+    return models_[pr.kind].force(pr.jkr, kin, pr.state, dt);
+  }
+
   // The sub-models of one pair of materials and the contact they compute.
   struct Models {
     explicit Models(const ContactParams& p) : normal_(p), damping_(p), tangential_(p), rolling_(p), twisting_(p) {}
