@@ -31,6 +31,18 @@
 // are the conditional means given a break, interpolated with the weights of P_break:
 //   N_f(x) = sum_c W_c P_break,c N_f,c / sum_c W_c P_break,c   (and f_L alike),
 // W_c the corner weights above (by Jensen's inequality 1/N_f <= f_L still holds between the nodes).
+// Fragment mass distribution (optional; docs/acoustics.md §1.7 "Fragment mass distribution"): bins of the
+// fragment mass fraction f = m / M, `fragment_edges` over the dimension `fragment_edge` (B + 1 values,
+// 0 = e_0 < e_1 < ... < e_B = 1, units "1"; bin b holds e_b <= f < e_(b+1), the last also f = 1, B <= 32),
+// and over (the table's dimensions, `fragment_bin` of B), units "1":
+//   fragment_number: h_b, the mean number of fragments in bin b of one broken pair (sum_b h_b = N_f),
+//   fragment_mass:   mu_b, the mean mass fraction of M those fragments carry (sum_b mu_b = 1),
+// so mu_b / h_b is the mean mass fraction of a fragment of bin b. Checked at the nodes with P_break > 0:
+// both >= 0, h_b > 0 exactly where mu_b > 0, sum_b mu_b = 1 within 1e-6, e_b <= mu_b / h_b <= e_(b+1)
+// (within 1e-9), sum_b h_b >= 2, and sum_b h_b = N_f (within 1e-6 relative) when `fragments` is there too.
+// Between nodes: h_b(x) = sum_c W_c P_break,c h_b,c / sum_c W_c P_break,c, mu_b alike (their ratio stays in
+// the bin: a mediant). A table with them needs no `fragments` / `largest_fraction`; a table without them
+// is read as before (the (N_f, f_L) model).
 #include <array>
 #include <cstddef>
 #include <filesystem>
@@ -61,6 +73,17 @@ inline constexpr std::array<const char*, 2> kOutcomeFragmentStats = {"fragments"
 inline constexpr std::array<const char*, 2> kOutcomeFragmentMeanings = {
     "mean number of fragments of a pair that breaks",
     "mean mass fraction of the largest fragment of a pair that breaks"};
+// The fragment mass distribution: bin dimension, edge dimension and variable, and the two variables over
+// (table dimensions, bin): names, meanings; units "1".
+inline constexpr const char* kFragmentBinDim = "fragment_bin";
+inline constexpr const char* kFragmentEdgeDim = "fragment_edge";
+inline constexpr const char* kFragmentEdges = "fragment_edges";
+inline constexpr const char* kFragmentEdgesMeaning = "edges of the bins of the fragment mass fraction m / M";
+inline constexpr std::array<const char*, 2> kFragmentDistribution = {"fragment_number", "fragment_mass"};
+inline constexpr std::array<const char*, 2> kFragmentDistributionMeanings = {
+    "mean number of fragments in the mass-fraction bin of a pair that breaks",
+    "mean mass fraction of the pair carried by the fragments in the bin of a pair that breaks"};
+inline constexpr std::size_t kMaxFragmentBins = 32;
 
 struct OutcomeProbabilities {
   double stick = 0.0, bounce = 0.0, brk = 0.0;
@@ -68,8 +91,12 @@ struct OutcomeProbabilities {
 };
 
 // Fragments of a pair that breaks: mean number N_f (>= 2) and mass fraction of the largest f_L.
+// With a fragment mass distribution (bins > 0): per bin b < bins the mean number h_b and mass fraction
+// mu_b of the fragments of one broken pair (number = sum_b h_b).
 struct FragmentStats {
   double number = 2.0, largest = 0.5;
+  std::size_t bins = 0;
+  std::array<double, kMaxFragmentBins> bin_number{}, bin_mass{};
 };
 
 // One pair's query: normal speed [m/s], both diameters [m] (any order), their surface charge densities
@@ -85,6 +112,9 @@ struct OutcomeTable {
   std::array<std::vector<double>, kOutcomeAxisCount> axes;
   std::vector<double> p_stick, p_bounce, p_break;  // row-major over the present axes, in order
   std::vector<double> fragments, largest_fraction; // same layout; empty when the file has none
+  std::vector<double> fragment_edges;               // B + 1 bin edges of m / M; empty: no distribution
+  std::vector<double> fragment_number, fragment_mass;  // node-major, B bins innermost; empty: none
+  std::size_t fragment_bins() const { return fragment_edges.empty() ? 0 : fragment_edges.size() - 1; }
   std::string source;                              // file it was read from ("" when built in memory)
   std::string provenance;                          // the file's `provenance` attribute, if any
 
@@ -118,7 +148,7 @@ struct OutcomeTable {
 // The table held by `d`; std::invalid_argument with a one-line reason (naming the variable and the
 // offending value) when a variable is missing, has other dimensions or units, an axis is not
 // increasing (or not positive, charges excepted), one charge axis is given without the other, a probability is outside [0, 1] or the three do not sum to 1, or a node with
-// P_break > 0 has no or invalid fragment statistics (N_f < 2, f_L outside [1/N_f, 1)).
+// P_break > 0 has no or invalid fragment statistics (N_f < 2, f_L outside [1/N_f, 1); the distribution's checks above).
 OutcomeTable outcome_table_from_dataset(const io::Dataset& d);
 
 // The dataset of `t` in the file format above (the inverse of outcome_table_from_dataset).
