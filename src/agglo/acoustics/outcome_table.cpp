@@ -161,7 +161,7 @@ Corners corners_of(const OutcomeTable& t, const OutcomeQuery& q) {
   Corners r;
   const bool swap = q.d_j < q.d_i;
   std::array<AxisPos, kOutcomeAxisCount> pos{};
-  std::array<std::size_t, kOutcomeAxisCount> present = {kSpeedAxis, kDiameter1Axis, kDiameter2Axis, 0, 0, 0};
+  std::array<std::size_t, kOutcomeAxisCount> present = {kSpeedAxis, kDiameter1Axis, kDiameter2Axis};
   pos[0] = locate_log(t.axes[kSpeedAxis], q.speed, r.clamped);
   pos[1] = locate_log(t.axes[kDiameter1Axis], swap ? q.d_j : q.d_i, r.clamped);
   pos[2] = locate_log(t.axes[kDiameter2Axis], swap ? q.d_i : q.d_j, r.clamped);
@@ -175,6 +175,12 @@ Corners corners_of(const OutcomeTable& t, const OutcomeQuery& q) {
   if (t.has_axis(kPermittivityAxis)) {
     pos[m] = locate_log(t.axes[kPermittivityAxis], q.permittivity, r.clamped);
     present[m++] = kPermittivityAxis;
+  }
+  if (t.has_primary_radii()) {
+    pos[m] = locate_log(t.axes[kPrimaryRadius1Axis], swap ? q.rp_j : q.rp_i, r.clamped);
+    present[m++] = kPrimaryRadius1Axis;
+    pos[m] = locate_log(t.axes[kPrimaryRadius2Axis], swap ? q.rp_i : q.rp_j, r.clamped);
+    present[m++] = kPrimaryRadius2Axis;
   }
   if (m == kRequiredOutcomeAxes)
     corners3(t, pos, r);
@@ -338,6 +344,10 @@ OutcomeTable outcome_table_from_dataset(const io::Dataset& d) {
     throw std::invalid_argument(fmt::format("axis '{}' without axis '{}': a charged table has both",
                                             kOutcomeAxes[t.has_axis(kCharge1Axis) ? kCharge1Axis : kCharge2Axis],
                                             kOutcomeAxes[t.has_axis(kCharge1Axis) ? kCharge2Axis : kCharge1Axis]));
+  if (t.has_axis(kPrimaryRadius1Axis) != t.has_axis(kPrimaryRadius2Axis))
+    throw std::invalid_argument(fmt::format("axis '{}' without axis '{}': a table over primary radii has both",
+                                            kOutcomeAxes[t.has_primary_radii() ? kPrimaryRadius1Axis : kPrimaryRadius2Axis],
+                                            kOutcomeAxes[t.has_primary_radii() ? kPrimaryRadius2Axis : kPrimaryRadius1Axis]));
   const std::vector<std::string> dims = t.dimensions();
   t.p_stick = values_of(variable(d, kOutcomeProbabilities[0], dims, "1"));
   t.p_bounce = values_of(variable(d, kOutcomeProbabilities[1], dims, "1"));

@@ -2,12 +2,14 @@
 // A tabulated dry collision outcome (docs/acoustics.md §1.7): the probabilities P_stick, P_bounce and
 // P_break of a collision on a grid of the normal relative speed v_n = |G.n| [m/s], the two partners'
 // diameters d_1 <= d_2 [m] (the pair is queried with the smaller diameter first) and, optionally, their
-// surface charge densities sigma_1, sigma_2 [C/m^2] (partner 1 = the one of diameter d_1) and their relative
-// permittivity kappa_p [1] (docs/outcomes.md "Charge and permittivity"). The charge of a partner of
+// surface charge densities sigma_1, sigma_2 [C/m^2] (partner 1 = the one of diameter d_1), their relative
+// permittivity kappa_p [1] (docs/outcomes.md "Charge and permittivity") and the primary radii a_1, a_2 [m] of
+// aggregate partners (docs/acoustics.md §1.7; with the volume-equivalent diameters d = 2 a N^(1/3) they fix
+// each partner's primary count; a compact sphere is one primary of radius d/2). The charge of a partner of
 // (volume-equivalent) diameter d is Q = sigma pi d^2 (sigma = Q / (pi d^2): for a sphere its surface charge
 // density; an aggregate's Q is spread evenly over its primaries), signed.
 // Between the nodes the probabilities are interpolated multilinearly over every axis the table has, in
-// ln v_n, ln d_1, ln d_2, sigma_1, sigma_2 (linear: signed) and ln kappa_p:
+// ln v_n, ln d_1, ln d_2, sigma_1, sigma_2 (linear: signed), ln kappa_p, ln a_1 and ln a_2:
 //   P(x) = sum over the 2^m corners c of the enclosing cell of  prod_k w_k(c) P_c,
 //   w_k = (s(x_k) - s(a_k)) / (s(b_k) - s(a_k)) towards the upper node b_k of axis k (1 - w_k for a_k),
 // s = ln or the identity as listed, which is exact for data that are linear in each s(x_k). A query
@@ -16,9 +18,9 @@
 // table constant along it; an absent optional axis is not read at all (an uncharged table ignores
 // charges: the DSMC refuses charged populations with it, acoustics/case_config.cpp).
 // File: NetCDF (io/netcdf_reader.hpp), dimensions `speed`, `diameter_1`, `diameter_2` [, `charge_1`,
-// `charge_2`] [, `permittivity`] in this order (the charge axes both or neither), coordinate variables of
-// the same names in "m s-1", "m", "m", "C m-2", "C m-2", "1" (strictly increasing; positive except the
-// charges), and `p_stick`, `p_bounce`, `p_break` (units "1", over all the table's dimensions, each in
+// `charge_2`] [, `permittivity`] [, `primary_radius_1`, `primary_radius_2`] in this order (the charge axes
+// both or neither, the primary-radius axes alike), coordinate variables of the same names in "m s-1", "m",
+// "m", "C m-2", "C m-2", "1", "m", "m" (strictly increasing; positive except the charges), and `p_stick`, `p_bounce`, `p_break` (units "1", over all the table's dimensions, each in
 // [0, 1], their sum 1 within 1e-6 at every node); further variables (intervals, counts) and global
 // attributes (provenance) are kept but not used. `agglo outcomes` writes such a file (docs/outcomes.md);
 // a 3-axis file (no charge or permittivity) is the format of before those axes, read unchanged.
@@ -55,19 +57,24 @@ namespace agglo::acoustics {
 
 // Names, units, meanings and interpolation space of the file's dimensions/coordinates (written once,
 // here), in the order of the file's dimensions; the first kRequiredOutcomeAxes are required.
-inline constexpr std::size_t kOutcomeAxisCount = 6, kRequiredOutcomeAxes = 3;
-enum OutcomeAxis : std::size_t { kSpeedAxis, kDiameter1Axis, kDiameter2Axis, kCharge1Axis, kCharge2Axis, kPermittivityAxis };
+inline constexpr std::size_t kOutcomeAxisCount = 8, kRequiredOutcomeAxes = 3;
+enum OutcomeAxis : std::size_t {
+  kSpeedAxis, kDiameter1Axis, kDiameter2Axis, kCharge1Axis, kCharge2Axis, kPermittivityAxis,
+  kPrimaryRadius1Axis, kPrimaryRadius2Axis };
 inline constexpr std::array<const char*, kOutcomeAxisCount> kOutcomeAxes = {
-    "speed", "diameter_1", "diameter_2", "charge_1", "charge_2", "permittivity"};
-inline constexpr std::array<const char*, kOutcomeAxisCount> kOutcomeAxisUnits = {"m s-1", "m", "m", "C m-2", "C m-2", "1"};
+    "speed", "diameter_1", "diameter_2", "charge_1", "charge_2", "permittivity", "primary_radius_1", "primary_radius_2"};
+inline constexpr std::array<const char*, kOutcomeAxisCount> kOutcomeAxisUnits = {"m s-1", "m",     "m", "C m-2",
+                                                                                 "C m-2", "1",     "m", "m"};
 inline constexpr std::array<const char*, kOutcomeAxisCount> kOutcomeAxisMeanings = {
     "normal relative speed at contact",
     "diameter of the smaller partner",
     "diameter of the larger partner",
     "surface charge density Q / (pi d^2) of the partner of diameter_1",
     "surface charge density Q / (pi d^2) of the partner of diameter_2",
-    "relative permittivity kappa_p of both partners"};
-inline constexpr std::array<bool, kOutcomeAxisCount> kOutcomeAxisLog = {true, true, true, false, false, true};
+    "relative permittivity kappa_p of both partners",
+    "primary radius of the partner of diameter_1",
+    "primary radius of the partner of diameter_2"};
+inline constexpr std::array<bool, kOutcomeAxisCount> kOutcomeAxisLog = {true, true, true, false, false, true, true, true};
 inline constexpr std::array<const char*, 3> kOutcomeProbabilities = {"p_stick", "p_bounce", "p_break"};
 inline constexpr std::array<const char*, 2> kOutcomeFragmentStats = {"fragments", "largest_fraction"};
 inline constexpr std::array<const char*, 2> kOutcomeFragmentMeanings = {
@@ -100,10 +107,12 @@ struct FragmentStats {
 };
 
 // One pair's query: normal speed [m/s], both diameters [m] (any order), their surface charge densities
-// [C/m^2] (each with its own diameter) and the pair's relative permittivity.
+// [C/m^2] (each with its own diameter), the pair's relative permittivity and both primary radii [m] (each
+// with its own diameter; read only by tables with primary-radius axes).
 struct OutcomeQuery {
   double speed = 0.0, d_i = 0.0, d_j = 0.0;
   double sigma_i = 0.0, sigma_j = 0.0, permittivity = 1.0;
+  double rp_i = 0.0, rp_j = 0.0;
 };
 
 struct OutcomeTable {
@@ -128,6 +137,7 @@ struct OutcomeTable {
   FragmentStats fragments_at(double v, double di, double dj) const { return fragments_at(OutcomeQuery{v, di, dj}); }
   bool has_axis(std::size_t k) const { return !axes[k].empty(); }
   bool charged() const { return has_axis(kCharge1Axis); }
+  bool has_primary_radii() const { return has_axis(kPrimaryRadius1Axis); }
   // Row-major index of the node with axis indices ix (absent axes: index 0).
   std::size_t index(const std::array<std::size_t, kOutcomeAxisCount>& ix) const {
     std::size_t r = 0;
@@ -135,7 +145,7 @@ struct OutcomeTable {
       if (has_axis(k)) r = r * axes[k].size() + ix[k];
     return r;
   }
-  std::size_t index(std::size_t iv, std::size_t i1, std::size_t i2) const { return index({iv, i1, i2, 0, 0, 0}); }
+  std::size_t index(std::size_t iv, std::size_t i1, std::size_t i2) const { return index({iv, i1, i2, 0, 0, 0, 0, 0}); }
   std::size_t nodes() const {
     std::size_t n = 1;
     for (const auto& a : axes) n *= a.empty() ? 1 : a.size();
