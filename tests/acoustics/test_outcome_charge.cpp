@@ -39,7 +39,7 @@ OutcomeTable charged_table_of(const Axes& axes, const std::function<double(const
           for (i[4] = 0; i[4] < n[4]; ++i[4])
             for (i[5] = 0; i[5] < n[5]; ++i[5]) {
               std::array<double, 6> x{};
-              for (std::size_t k = 0; k < kOutcomeAxisCount; ++k)  // absent: uncharged, kappa_p = 1
+              for (std::size_t k = 0; k < x.size(); ++k)  // absent: uncharged, kappa_p = 1
                 x[k] = axes[k].empty() ? (k == kPermittivityAxis ? 1.0 : 0.0) : axes[k][i[k]];
               t.p_stick.push_back(f(x));
               t.p_bounce.push_back(1.0 - t.p_stick.back());

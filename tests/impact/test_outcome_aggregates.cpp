@@ -75,6 +75,7 @@ TEST(OutcomeAggregates, ClassifiesConstructedContactGraphs) {
   EXPECT_EQ(f.fragments, 2);
   EXPECT_DOUBLE_EQ(f.largest_fraction, 5.0 / 6.0);
   EXPECT_DOUBLE_EQ(f.fragment_mass, 6.0);
+  EXPECT_EQ(f.fractions, (std::vector<double>{1.0 / 6.0, 5.0 / 6.0}));
   f = classify_aggregate_pair({{0, 2}, {1, 3}}, kMasses, 2);  // two parts, but not the partners
   EXPECT_EQ(f.outcome, PairOutcome::brk);
   f = classify_aggregate_pair({{0, 1}, {2}, {3}}, kMasses, 2);  // the projectile in two, apart from the target
@@ -117,6 +118,7 @@ TEST(OutcomeAggregates, FragmentMassConservedAndTableReadByTheDsmc) {
   const AggParsed p = parse_aggregates("speeds = [0.1, 3.0, 30.0]\nprimaries = [2]\nimpacts = 3\n");
   std::vector<PairOutcome> out;
   std::vector<double> nf, fl;
+  std::vector<std::vector<double>> fractions;
   for (const auto& j : outcome_impacts(p.grid)) {
     const ImpactCase c = outcome_case(p.dem, p.grid, j);
     const ImpactOutcome o = run_impact(c, outcome_launch_speed(p.grid, j));
@@ -129,6 +131,11 @@ TEST(OutcomeAggregates, FragmentMassConservedAndTableReadByTheDsmc) {
     out.push_back(f.outcome);
     nf.push_back(f.fragments);
     fl.push_back(f.largest_fraction);
+    double sum = 0.0;
+    for (double x : f.fractions) sum += x;
+    EXPECT_NEAR(sum, 1.0, 1e-14);  // the fragments' mass fractions
+    EXPECT_EQ(f.fractions.size(), static_cast<std::size_t>(f.fragments));
+    fractions.push_back(f.fractions);
   }
   const OutcomeGridResult t = tabulate_outcomes(p.grid, out, nf, fl);
   EXPECT_EQ(t.sticks[0], 3);  // 0.1 m/s sticks
@@ -140,7 +147,38 @@ TEST(OutcomeAggregates, FragmentMassConservedAndTableReadByTheDsmc) {
   EXPECT_DOUBLE_EQ(table.p_break[2], 1.0);
   const auto fs = table.fragments_at(30.0, p.grid.diameters[0], p.grid.diameters[0]);
   EXPECT_DOUBLE_EQ(fs.number, t.fragments[2]);
-  EXPECT_DOUBLE_EQ(fs.largest, t.largest_fraction[2]);
+  EXPECT_EQ(fs.bins, 0u);  // without the distribution: the (N_f, f_L) model
+  // with it: the node's distribution, its numbers summing to N_f and its mass fractions to 1
+  const OutcomeGridResult td = tabulate_outcomes(p.grid, out, nf, fl, fractions);
+  const auto with = acoustics::outcome_table_from_dataset(writers::outcomes_dataset(td, "test"));
+  const auto fb = with.fragments_at(30.0, p.grid.diameters[0], p.grid.diameters[0]);
+  ASSERT_EQ(fb.bins, kFragmentFractionEdges.size() - 1);
+  double n = 0.0, mu = 0.0;
+  for (std::size_t b = 0; b < fb.bins; ++b) n += fb.bin_number[b], mu += fb.bin_mass[b];
+  EXPECT_NEAR(n, t.fragments[2], 1e-12);
+  EXPECT_NEAR(mu, 1.0, 1e-12);
+}
+
+// The fragment mass distribution of a node: per bin of m / M the fragments' mean number and mass fraction
+// over the breaks (0.25 in bin 5, 0.5 in bin 6, 0.75 in bin 7 of kFragmentFractionEdges); none when a break
+// has no fractions (a journal of before them).
+TEST(OutcomeAggregates, FragmentDistributionOverTheBreaks) {
+  OutcomeGridSpec s;
+  s.speeds = {1.0};
+  s.primaries = {4};
+  s.diameters = {1e-6};
+  s.impacts = 3;
+  const std::vector<PairOutcome> out = {PairOutcome::brk, PairOutcome::stick, PairOutcome::brk};
+  auto t = tabulate_outcomes(s, out, {2.0, 1.0, 3.0}, {0.75, 1.0, 0.5}, {{0.25, 0.75}, {}, {0.5, 0.25, 0.25}});
+  const std::size_t nb = kFragmentFractionEdges.size() - 1;
+  ASSERT_EQ(t.fragment_number.size(), nb);
+  const std::vector<double> number = {0, 0, 0, 0, 0, 1.5, 0.5, 0.5}, mass = {0, 0, 0, 0, 0, 0.375, 0.25, 0.375};
+  EXPECT_EQ(t.fragment_number, number);
+  EXPECT_EQ(t.fragment_mass, mass);
+  EXPECT_EQ(fragment_fraction_bin(0.0), 0u);
+  EXPECT_EQ(fragment_fraction_bin(1.0), nb - 1);
+  t = tabulate_outcomes(s, out, {2.0, 1.0, 3.0}, {0.75, 1.0, 0.5}, {{0.25, 0.75}, {}, {}});
+  EXPECT_TRUE(t.fragment_number.empty());
 }
 
 // The node means: over the breaks only; f_L raised to 1/N_f when below it by rounding only (five equal

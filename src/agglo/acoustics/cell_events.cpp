@@ -102,6 +102,10 @@ OutcomeQuery CellEvents::table_query(std::size_t i, std::size_t j, double gn) co
   if (!oc.permittivities.empty())
     q.permittivity = 0.5 * (oc.permittivities[static_cast<std::size_t>(p.pop[i])] +
                             oc.permittivities[static_cast<std::size_t>(p.pop[j])]);
+  if (oc.dry_table->has_primary_radii()) {
+    q.rp_i = p.query_primary_radius(i);
+    q.rp_j = p.query_primary_radius(j);
+  }
   return q;
 }
 

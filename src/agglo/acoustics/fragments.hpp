@@ -28,6 +28,20 @@
 // the fragment mass of an unequal-weight break deviates from f_L M (or the others' mass) by the rounding
 // of c, at most a factor (c + 1) / c. Kinetic energy of the relative motion is lost, as in coalescence.
 // Split-merge debts (merge.hpp) follow coalescence: equal weights pool them on i, else they stay.
+// With a fragment mass distribution (outcome_table.hpp: per bin b the mean number h_b and mass fraction
+// mu_b of the fragments of one broken pair; FragmentStats::bins > 0), the classes are its bins (decision):
+// a sample that takes the fragments of bin b and holds weight x mass = X becomes
+//   c = R(X h_b / (mu_b M)) fragments (at least 1) of mass X / c each,
+// the bin drawn in proportion to mu_b (the mass share).
+//   w_i = w_j = W:  i and j each hold X = W M / 2, their bins drawn with the uniforms u and u + 1/2 (mod 1)
+//                   (each uniform: the expectations below; together: the two halves rarely the same bin);
+//   w_h > w_l = W:  h keeps its state with weight w_h - W; l holds X = W M in one drawn bin.
+// Expected mass in bin b: sum over the holders of P(b) X = mu_b W M, so the expected number in bin b is
+// mu_b W M h_b / (mu_b M) = W h_b, and W N_f in all; the fragments' mean mass in bin b is mu_b M / h_b.
+// Mass and momentum are exact per event as above (each holder keeps X at v_cm). The floor c >= 1 matters
+// only when X < mu_b M / h_b, i.e. equal weights W = 1 and a bin whose mean fragment exceeds M / 2 (the
+// fragment is then lighter than the bin's mean and the count above its expectation): a bias of that case.
+// Draws 3 (equal weights) or 2 uniforms.
 // Aggregate structure (structure.hpp): a fragment of mass f M holds f (n_i + n_j) primaries of the pair's
 // (merged) primary radius, so primary count and solid volume are conserved as the mass is.
 #include <cstddef>
@@ -39,7 +53,8 @@
 namespace agglo::acoustics {
 
 // Breaks the W = min(w_i, w_j) real pairs of samples i, j (both live) by the rule above and refreshes the
-// caches of the samples that changed. Draws 1 (equal weights) or 2 uniforms from `rng`.
+// caches of the samples that changed. Draws 1 (equal weights) or 2 uniforms from `rng` (with a
+// distribution, f.bins > 0: 3 or 2).
 void break_weighted(SampleSet& p, std::size_t i, std::size_t j, const FragmentStats& f, CounterRng& rng,
                     const Gas& gas, const Sound& sound);
 

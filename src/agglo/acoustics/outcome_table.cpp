@@ -161,7 +161,7 @@ Corners corners_of(const OutcomeTable& t, const OutcomeQuery& q) {
   Corners r;
   const bool swap = q.d_j < q.d_i;
   std::array<AxisPos, kOutcomeAxisCount> pos{};
-  std::array<std::size_t, kOutcomeAxisCount> present = {kSpeedAxis, kDiameter1Axis, kDiameter2Axis, 0, 0, 0};
+  std::array<std::size_t, kOutcomeAxisCount> present = {kSpeedAxis, kDiameter1Axis, kDiameter2Axis};
   pos[0] = locate_log(t.axes[kSpeedAxis], q.speed, r.clamped);
   pos[1] = locate_log(t.axes[kDiameter1Axis], swap ? q.d_j : q.d_i, r.clamped);
   pos[2] = locate_log(t.axes[kDiameter2Axis], swap ? q.d_i : q.d_j, r.clamped);
@@ -176,6 +176,12 @@ Corners corners_of(const OutcomeTable& t, const OutcomeQuery& q) {
     pos[m] = locate_log(t.axes[kPermittivityAxis], q.permittivity, r.clamped);
     present[m++] = kPermittivityAxis;
   }
+  if (t.has_primary_radii()) {
+    pos[m] = locate_log(t.axes[kPrimaryRadius1Axis], swap ? q.rp_j : q.rp_i, r.clamped);
+    present[m++] = kPrimaryRadius1Axis;
+    pos[m] = locate_log(t.axes[kPrimaryRadius2Axis], swap ? q.rp_i : q.rp_j, r.clamped);
+    present[m++] = kPrimaryRadius2Axis;
+  }
   if (m == kRequiredOutcomeAxes)
     corners3(t, pos, r);
   else
@@ -183,10 +189,93 @@ Corners corners_of(const OutcomeTable& t, const OutcomeQuery& q) {
   return r;
 }
 
-// Fragment statistics at the nodes with P_break > 0: present, N_f >= 2 and 1/N_f <= f_L < 1.
+// The bin edges of the fragment mass distribution: 0 = e_0 < ... < e_B = 1, 1 <= B <= kMaxFragmentBins.
+void check_fragment_edges(const std::vector<double>& e) {
+  if (e.size() < 2 || e.size() > kMaxFragmentBins + 1)
+    throw std::invalid_argument(fmt::format("variable '{}' has {} values: 2 to {} bin edges expected", kFragmentEdges,
+                                            e.size(), kMaxFragmentBins + 1));
+  if (e.front() != 0.0 || e.back() != 1.0)
+    throw std::invalid_argument(fmt::format("variable '{}' runs from {} to {}: the edges of m / M run from 0 to 1",
+                                            kFragmentEdges, e.front(), e.back()));
+  for (std::size_t k = 1; k < e.size(); ++k)
+    if (!(e[k] > e[k - 1]))
+      throw std::invalid_argument(fmt::format("variable '{}' is not strictly increasing at value {} ({} after {})",
+                                              kFragmentEdges, k, e[k], e[k - 1]));
+}
+
+// The distribution at node i (P_break > 0): h_b, mu_b >= 0, h_b > 0 iff mu_b > 0, sum mu_b = 1, the
+// mean fraction mu_b / h_b within its bin, sum h_b >= 2 (and = N_f when the table has `fragments`).
+void check_fragment_node(const OutcomeTable& t, std::size_t i) {
+  const std::size_t nb = t.fragment_bins();
+  const auto& [nn, mn] = kFragmentDistribution;
+  double sum_h = 0.0, sum_mu = 0.0;
+  for (std::size_t b = 0; b < nb; ++b) {
+    const double h = t.fragment_number[i * nb + b], mu = t.fragment_mass[i * nb + b];
+    if (!(h >= 0.0 && std::isfinite(h)) || !(mu >= 0.0 && std::isfinite(mu)) || ((h > 0.0) != (mu > 0.0)))
+      throw std::invalid_argument(fmt::format("{} = {} and {} = {} at node {} bin {} where p_break > 0: both finite, "
+                                              ">= 0, and zero together",
+                                              nn, h, mn, mu, i, b));
+    if (h > 0.0 && !(mu / h >= t.fragment_edges[b] - 1e-9 && mu / h <= t.fragment_edges[b + 1] + 1e-9))
+      throw std::invalid_argument(fmt::format("{} / {} at node {} bin {} = {}: a fragment's mean mass fraction outside "
+                                              "its bin [{}, {}]",
+                                              mn, nn, i, b, mu / h, t.fragment_edges[b], t.fragment_edges[b + 1]));
+    sum_h += h;
+    sum_mu += mu;
+  }
+  if (std::abs(sum_mu - 1.0) > 1e-6)
+    throw std::invalid_argument(fmt::format("{} at node {} sums to {} over the bins instead of 1", mn, i, sum_mu));
+  if (!(sum_h >= 2.0 - 1e-9))
+    throw std::invalid_argument(
+        fmt::format("{} at node {} sums to {}: a pair that breaks has at least 2 fragments", nn, i, sum_h));
+  if (!t.fragments.empty() && std::abs(sum_h - t.fragments[i]) > 1e-6 * t.fragments[i])
+    throw std::invalid_argument(fmt::format("{} at node {} sums to {}, but {} = {}", nn, i, sum_h,
+                                            kOutcomeFragmentStats[0], t.fragments[i]));
+}
+
+// Reads the optional fragment mass distribution of `d` into t (both variables and the edges, or none).
+void read_fragment_distribution(const io::Dataset& d, OutcomeTable& t, std::vector<std::string> dims) {
+  if (!d.find(kFragmentEdges) && !d.find(kFragmentDistribution[0]) && !d.find(kFragmentDistribution[1])) return;
+  t.fragment_edges = values_of(variable(d, kFragmentEdges, {kFragmentEdgeDim}, "1"));
+  check_fragment_edges(t.fragment_edges);
+  dims.emplace_back(kFragmentBinDim);
+  t.fragment_number = values_of(variable(d, kFragmentDistribution[0], dims, "1"));
+  t.fragment_mass = values_of(variable(d, kFragmentDistribution[1], dims, "1"));
+  if (t.fragment_number.size() != t.nodes() * t.fragment_bins())
+    throw std::invalid_argument(fmt::format("variable '{}' has {} values: {} nodes x {} bins (the edges) expected",
+                                            kFragmentDistribution[0], t.fragment_number.size(), t.nodes(),
+                                            t.fragment_bins()));
+}
+
+// The distribution given a break at the corners c: weights W_c P_break,c (outcome_table.hpp).
+void interpolate_fragment_bins(const OutcomeTable& t, const Corners& c, FragmentStats& f) {
+  const std::size_t nb = t.fragment_bins();
+  double sw = 0.0;
+  f.bins = nb;
+  for (std::size_t k = 0; k < c.count; ++k) {
+    const double a = c.w[k] * t.p_break[c.i[k]];
+    if (!(a > 0.0)) continue;  // nodes without breaks hold no distribution (may be NaN)
+    sw += a;
+    for (std::size_t b = 0; b < nb; ++b) {
+      f.bin_number[b] += a * t.fragment_number[c.i[k] * nb + b];
+      f.bin_mass[b] += a * t.fragment_mass[c.i[k] * nb + b];
+    }
+  }
+  double n = 0.0;
+  for (std::size_t b = 0; b < nb; ++b) {
+    f.bin_number[b] /= sw;
+    f.bin_mass[b] /= sw;
+    n += f.bin_number[b];
+  }
+  f.number = n;
+}
+
+// Fragment statistics at the nodes with P_break > 0: present (or the distribution), N_f >= 2 and
+// 1/N_f <= f_L < 1; the distribution's checks.
 void check_fragments(const OutcomeTable& t) {
   for (std::size_t i = 0; i < t.p_break.size(); ++i) {
     if (!(t.p_break[i] > 0.0)) continue;
+    if (t.fragment_bins() > 0) check_fragment_node(t, i);
+    if (t.fragments.empty() && t.fragment_bins() > 0) continue;  // the distribution stands for them
     if (t.fragments.empty())
       throw std::invalid_argument(fmt::format("p_break at node {} = {} > 0, but no variable '{}' ({})", i,
                                               t.p_break[i], kOutcomeFragmentStats[0], kOutcomeFragmentMeanings[0]));
@@ -216,6 +305,13 @@ OutcomeProbabilities OutcomeTable::at(const OutcomeQuery& q) const {
 }
 
 FragmentStats OutcomeTable::fragments_at(const OutcomeQuery& q) const {
+  if (fragment_bins() > 0) {
+    FragmentStats f;
+    const Corners c = corners_of(*this, q);
+    interpolate_fragment_bins(*this, c, f);
+    if (!(f.number > 0.0)) return {};  // no node of the cell broke
+    return f;
+  }
   if (fragments.empty()) return {};
   const Corners c = corners_of(*this, q);
   double sw = 0.0, sn = 0.0, sf = 0.0;
@@ -248,6 +344,10 @@ OutcomeTable outcome_table_from_dataset(const io::Dataset& d) {
     throw std::invalid_argument(fmt::format("axis '{}' without axis '{}': a charged table has both",
                                             kOutcomeAxes[t.has_axis(kCharge1Axis) ? kCharge1Axis : kCharge2Axis],
                                             kOutcomeAxes[t.has_axis(kCharge1Axis) ? kCharge2Axis : kCharge1Axis]));
+  if (t.has_axis(kPrimaryRadius1Axis) != t.has_axis(kPrimaryRadius2Axis))
+    throw std::invalid_argument(fmt::format("axis '{}' without axis '{}': a table over primary radii has both",
+                                            kOutcomeAxes[t.has_primary_radii() ? kPrimaryRadius1Axis : kPrimaryRadius2Axis],
+                                            kOutcomeAxes[t.has_primary_radii() ? kPrimaryRadius2Axis : kPrimaryRadius1Axis]));
   const std::vector<std::string> dims = t.dimensions();
   t.p_stick = values_of(variable(d, kOutcomeProbabilities[0], dims, "1"));
   t.p_bounce = values_of(variable(d, kOutcomeProbabilities[1], dims, "1"));
@@ -257,6 +357,7 @@ OutcomeTable outcome_table_from_dataset(const io::Dataset& d) {
     t.fragments = values_of(variable(d, kOutcomeFragmentStats[0], dims, "1"));
     t.largest_fraction = values_of(variable(d, kOutcomeFragmentStats[1], dims, "1"));
   }
+  read_fragment_distribution(d, t, dims);
   check_fragments(t);
   if (d.attributes.contains("provenance") && d.attributes["provenance"].is_string())
     t.provenance = d.attributes["provenance"].get<std::string>();
@@ -277,6 +378,15 @@ io::Dataset outcome_table_dataset(const OutcomeTable& t) {
   if (!t.fragments.empty()) {
     d.add(kOutcomeFragmentStats[0], dims, "1", kOutcomeFragmentMeanings[0], t.fragments);
     d.add(kOutcomeFragmentStats[1], dims, "1", kOutcomeFragmentMeanings[1], t.largest_fraction);
+  }
+  if (t.fragment_bins() > 0) {
+    d.add_dim(kFragmentEdgeDim, t.fragment_edges.size());
+    d.add_dim(kFragmentBinDim, t.fragment_bins());
+    d.add(kFragmentEdges, {kFragmentEdgeDim}, "1", kFragmentEdgesMeaning, t.fragment_edges);
+    std::vector<std::string> bin_dims = dims;
+    bin_dims.emplace_back(kFragmentBinDim);
+    d.add(kFragmentDistribution[0], bin_dims, "1", kFragmentDistributionMeanings[0], t.fragment_number);
+    d.add(kFragmentDistribution[1], bin_dims, "1", kFragmentDistributionMeanings[1], t.fragment_mass);
   }
   if (!t.provenance.empty()) d.attributes["provenance"] = t.provenance;
   return d;

@@ -78,6 +78,11 @@ struct SampleSet {
   double volume_diameter(std::size_t i) const;
   // The diameters the drag uses (d_m; d in compact runs).
   const std::vector<double>& mobility_diameters() const { return structured() ? dm : d; }
+  // The primary radius of sample i for an outcome table over primary radii [m]: r_p of an aggregate
+  // sample (n_p > 0), else d_v / 2 (a compact sphere is one primary).
+  double query_primary_radius(std::size_t i) const {
+    return structured() && np[i] > 0.0 ? rp[i] : 0.5 * volume_diameter(i);
+  }
   // Sample i (of a fractal population) becomes an aggregate of primaries of radius r [m] holding its solid
   // volume (n_p = V_s / ((4/3) pi r^3)); caches refreshed.
   void set_primaries(std::size_t i, double r, const Gas& gas, const Sound& sound);

@@ -70,6 +70,7 @@ PairFragments classify_aggregate_pair(const std::vector<std::vector<int>>& compo
   f.fragments = static_cast<int>(components.size());
   double total = 0.0, largest = 0.0;
   bool target_alone = false;
+  std::vector<double> component_mass;
   for (const auto& g : components) {
     double m = 0.0;
     std::size_t targets = 0;
@@ -84,8 +85,10 @@ PairFragments classify_aggregate_pair(const std::vector<std::vector<int>>& compo
     target_alone = target_alone || (targets == n_target && g.size() == n_target);
     f.fragment_mass += m;
     largest = std::max(largest, m);
+    component_mass.push_back(m);
   }
   for (double m : masses) total += m;
+  for (double m : component_mass) f.fractions.push_back(m / total);
   for (std::size_t i = 0; i < seen.size(); ++i)
     if (!seen[i]) throw std::invalid_argument(fmt::format("particle {} is in no component", i));
   f.largest_fraction = largest / total;

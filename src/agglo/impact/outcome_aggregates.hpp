@@ -16,7 +16,7 @@
 //   the two original partners (target primaries [0, N_1), projectile [N_1, N_1 + N_2)); break = anything
 //   else. A pair that never touched ends as its two partners and counts as a bounce.
 // Fragment statistics of an impact: number of components and the mass fraction of the largest,
-// m_largest / M with M = sum of all primary masses.
+// m_largest / M with M = sum of all primary masses, and every fragment's mass fraction m / M.
 #include <cstddef>
 #include <vector>
 
@@ -37,6 +37,7 @@ struct PairFragments {
   int fragments = 1;              // components of the final contact graph
   double largest_fraction = 1.0;  // mass of the largest / total mass [1]
   double fragment_mass = 0.0;     // sum of the fragments' masses [kg] (= the total mass)
+  std::vector<double> fractions;  // each fragment's mass / total mass [1], in the order of the components
 };
 
 // Classification above. `components`: the final contact-graph components (each particle in exactly one;

@@ -1,5 +1,6 @@
 #include "agglo/impact/outcome_grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -199,8 +200,45 @@ WilsonInterval wilson_interval(std::int64_t k, std::int64_t n) {
   return {k == 0 ? 0.0 : (centre - half) / (1.0 + z2 / nn), k == n ? 1.0 : (centre + half) / (1.0 + z2 / nn)};
 }
 
+std::size_t fragment_fraction_bin(double f) {
+  const auto& e = kFragmentFractionEdges;
+  const auto hi = static_cast<std::size_t>(std::upper_bound(e.begin(), e.end(), f) - e.begin());
+  return std::clamp<std::size_t>(hi, 1, e.size() - 1) - 1;
+}
+
+namespace {
+
+// Every break of `outcomes` has its fragments' mass fractions in `fractions`.
+bool breaks_have_fractions(const std::vector<PairOutcome>& outcomes, const std::vector<std::vector<double>>& fractions) {
+  for (std::size_t k = 0; k < outcomes.size(); ++k)
+    if (outcomes[k] == PairOutcome::brk && (k >= fractions.size() || fractions[k].empty())) return false;
+  return true;
+}
+
+// Adds the fragments of one break (mass fractions f) to the sums of node i; divides by the breaks at the end.
+void add_fragment_fractions(OutcomeGridResult& r, std::size_t i, const std::vector<double>& f) {
+  const std::size_t nb = kFragmentFractionEdges.size() - 1;
+  for (double x : f) {
+    const std::size_t b = fragment_fraction_bin(x);
+    r.fragment_number[i * nb + b] += 1.0;
+    r.fragment_mass[i * nb + b] += x;
+  }
+}
+
+void mean_fragment_fractions(OutcomeGridResult& r) {
+  const std::size_t nb = kFragmentFractionEdges.size() - 1;
+  for (std::size_t k = 0; k < r.fragment_number.size(); ++k) {
+    const std::int64_t n = r.breaks[k / nb];
+    r.fragment_number[k] = n > 0 ? r.fragment_number[k] / static_cast<double>(n) : std::nan("");
+    r.fragment_mass[k] = n > 0 ? r.fragment_mass[k] / static_cast<double>(n) : std::nan("");
+  }
+}
+
+}  // namespace
+
 OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vector<PairOutcome>& outcomes,
-                                    const std::vector<double>& fragments, const std::vector<double>& largest) {
+                                    const std::vector<double>& fragments, const std::vector<double>& largest,
+                                    const std::vector<std::vector<double>>& fractions) {
   OutcomeGridResult r;
   r.spec = spec;
   const std::size_t n = spec.nodes();
@@ -211,6 +249,11 @@ OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vect
   if (spec.aggregates()) {
     r.fragments.assign(n, 0.0);
     r.largest_fraction.assign(n, 0.0);
+  }
+  const bool distribution = spec.aggregates() && breaks_have_fractions(outcomes, fractions);
+  if (distribution) {
+    r.fragment_number.assign(n * (kFragmentFractionEdges.size() - 1), 0.0);
+    r.fragment_mass.assign(n * (kFragmentFractionEdges.size() - 1), 0.0);
   }
   const auto jobs = outcome_impacts(spec);
   for (std::size_t k = 0; k < jobs.size() && k < outcomes.size(); ++k) {
@@ -223,6 +266,7 @@ OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vect
       if (spec.aggregates() && outcomes[k] == PairOutcome::brk) {
         r.fragments[i] += fragments.at(k);
         r.largest_fraction[i] += largest.at(k);
+        if (distribution) add_fragment_fractions(r, i, fractions[k]);
       }
     }
   }
@@ -235,6 +279,7 @@ OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vect
     if (r.largest_fraction[i] < floor_fl && r.largest_fraction[i] > floor_fl * (1.0 - 1e-12))
       r.largest_fraction[i] = floor_fl;
   }
+  mean_fragment_fractions(r);
   return r;
 }
 

@@ -20,7 +20,11 @@
 // the partners keep the case's charges and permittivities and the table has no such axes.
 // Aggregate partners (outcome_grid.primaries instead of diameters): impact/outcome_aggregates.hpp; their
 // tables also carry, per node, the mean number of fragments and the mean mass fraction of the largest
-// fragment over the impacts that broke (NaN where none broke).
+// fragment over the impacts that broke (NaN where none broke), and the fragment mass distribution: per bin
+// b of the mass fraction f = m / M (kFragmentFractionEdges: e_b <= f < e_(b+1), the last bin also f = 1),
+// the mean number h_b of fragments of one broken pair in the bin and the mean mass fraction mu_b they carry
+// (sum_b h_b = the mean number of fragments, sum_b mu_b = 1; NaN where none broke).
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -30,6 +34,14 @@
 
 namespace agglo::impact {
 
+
+// The bins of the fragment mass fraction m / M of agglo outcomes: 0, 2^(-6.5), 2^(-5.5), ..., 2^(-0.5), 1
+// (a factor 2 apart; the edges lie between the fractions k/N of pairs of up to 2^6 equal primaries).
+inline constexpr std::array<double, 9> kFragmentFractionEdges = {
+    0.0,                0.011048543456039806, 0.02209708691207961, 0.04419417382415922, 0.08838834764831845,
+    0.1767766952966369, 0.3535533905932738,   0.7071067811865476,  1.0};
+// The bin b of a fragment of mass fraction f (0 <= f <= 1).
+std::size_t fragment_fraction_bin(double f);
 
 struct OutcomeGridSpec {
   std::vector<double> speeds, diameters;  // [m/s], [m] (aggregates: volume-equivalent, from primaries)
@@ -106,15 +118,21 @@ struct OutcomeGridResult {
   // the mean mass fraction of the largest [1]; NaN where none broke. The mean fraction is raised to
   // 1/(mean number) when below it by a rounding error only (equal fragments; the DSMC requires f_L >= 1/N_f).
   std::vector<double> fragments, largest_fraction;
+  // Aggregates whose every break has its fragments' mass fractions (else empty): h_b and mu_b per node,
+  // node-major with the kFragmentFractionEdges bins innermost; NaN where none broke.
+  std::vector<double> fragment_number, fragment_mass;
   std::size_t index(std::size_t iv, std::size_t i1, std::size_t i2, std::size_t c1 = 0, std::size_t c2 = 0,
                     std::size_t ik = 0) const {
     return spec.node(iv, i1, i2, c1, c2, ik);
   }
 };
 // `outcomes[k]` is the outcome of impact k of outcome_impacts(spec); for aggregates `fragments[k]` and
-// `largest[k]` its number of fragments and largest mass fraction (read where outcomes[k] is a break).
+// `largest[k]` its number of fragments and largest mass fraction (read where outcomes[k] is a break), and
+// `fractions[k]` the mass fractions of its fragments (the distribution is tabulated only when every break
+// has them: a journal of before them gives none).
 OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vector<PairOutcome>& outcomes,
                                     const std::vector<double>& fragments = {},
-                                    const std::vector<double>& largest = {});
+                                    const std::vector<double>& largest = {},
+                                    const std::vector<std::vector<double>>& fractions = {});
 
 }  // namespace agglo::impact

@@ -60,6 +60,23 @@ io::Table grid_columns(const OutcomeGridResult& r) {
   return t;
 }
 
+// The fragment mass distribution (results.nc only): the bin edges and, per node and bin, h_b and mu_b.
+void add_fragment_distribution(io::Table& t, const OutcomeGridResult& r) {
+  namespace ac = acoustics;
+  const auto& e = impact::kFragmentFractionEdges;
+  t.add_dim(ac::kFragmentEdgeDim, e.size());
+  t.add_dim(ac::kFragmentBinDim, e.size() - 1);
+  t.real(ac::kFragmentEdges, "1", ac::kFragmentEdgesMeaning, {e.begin(), e.end()})
+      .over({ac::kFragmentEdgeDim})
+      .header({});
+  std::vector<std::string> dims;
+  for (const auto& c : t.columns())
+    if (c.dims.size() == 1 && c.dims[0] == c.name && c.name != ac::kFragmentEdges) dims.push_back(c.name);
+  dims.emplace_back(ac::kFragmentBinDim);
+  t.real(ac::kFragmentDistribution[0], "1", ac::kFragmentDistributionMeanings[0], r.fragment_number).over(dims).header({});
+  t.real(ac::kFragmentDistribution[1], "1", ac::kFragmentDistributionMeanings[1], r.fragment_mass).over(dims).header({});
+}
+
 }  // namespace
 
 io::Table outcomes_table(const OutcomeGridResult& r) {
@@ -81,6 +98,7 @@ io::Table outcomes_table(const OutcomeGridResult& r) {
     t.real(fs[0], "1", acoustics::kOutcomeFragmentMeanings[0], r.fragments);
     t.real(fs[1], "1", acoustics::kOutcomeFragmentMeanings[1], r.largest_fraction);
   }
+  if (!r.fragment_number.empty()) add_fragment_distribution(t, r);
   t.integer("impacts", "1", "DEM impacts at the node", r.impacts);
   const std::array<const char*, 3> past = {"stuck", "bounced", "broke"};
   for (std::size_t k = 0; k < 3; ++k)

@@ -68,6 +68,7 @@ nlohmann::json aggregate_result(const impact::ImpactCase& one, const impact::Imp
   if (f.outcome == impact::PairOutcome::brk) {
     r["fragments"] = f.fragments;
     r["largest"] = f.largest_fraction;
+    r["fractions"] = f.fractions;
   }
   return r;
 }
@@ -130,14 +131,16 @@ class Outcomes final : public Command {
     rethrow_first_error(done, &jobs);
     std::vector<impact::PairOutcome> outcomes;
     std::vector<double> fragments, largest;  // per impact; read for the breaks
+    std::vector<std::vector<double>> fractions;  // each break's fragment mass fractions (empty: none journaled)
     long long steps = 0;
     for (const auto& o : done) {
       outcomes.push_back(static_cast<impact::PairOutcome>(o.result.at("outcome").get<int>()));
       steps += o.result.at("steps").get<long long>();
       fragments.push_back(o.result.value("fragments", 0.0));
       largest.push_back(o.result.value("largest", 0.0));
+      fractions.push_back(o.result.value("fractions", std::vector<double>{}));
     }
-    const auto table = impact::tabulate_outcomes(c.grid, outcomes, fragments, largest);
+    const auto table = impact::tabulate_outcomes(c.grid, outcomes, fragments, largest, fractions);
     if (ctx.formats.csv) writers::write_outcomes(out, table);
     CommandResult r;
     r.data = std::make_shared<const io::Dataset>(writers::outcomes_dataset(table, provenance(c, impacts.size())));
