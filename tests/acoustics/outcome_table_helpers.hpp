@@ -1,5 +1,6 @@
 #pragma once
-// Shared helpers of the outcome-table tests (test_outcome_table.cpp, test_breakage.cpp): table files in
+// Shared helpers of the outcome-table tests (test_outcome_table.cpp, test_breakage.cpp,
+// test_fragment_distribution.cpp): table files in
 // temporary folders, the constant-kernel box and seed statistics.
 #include <cmath>
 #include <cstdint>
@@ -12,10 +13,24 @@
 #include <unistd.h>
 
 #include "agglo/acoustics/outcome_table.hpp"
+#include "agglo/acoustics/samples.hpp"
 #include "agglo/io/netcdf_writer.hpp"
 #include "helpers.hpp"
 
 namespace agglo::acoustics::test {
+
+// Two solid samples (1 and 2 um, densities 2500 and 1800 kg/m^3) with weights wi, wj and different
+// velocities: the pair the breakage tests break (test_breakage.cpp, test_fragment_distribution.cpp).
+inline SampleSet pair_of_samples(double wi, double wj, const Gas& gas, const Sound& sound) {
+  SampleSet p;
+  const double vi = 1e-18 * 0.5235987755982988, vj = 8.0 * vi;
+  p.add(0, 0, 0, vi, 0.0, 2500.0 * vi, wi, 0, gas, sound);
+  p.add(0, 0, 0, vj, 0.0, 1800.0 * vj, wj, 1, gas, sound);
+  p.vx = {0.3, -0.1};
+  p.vy = {-0.2, 0.05};
+  p.vz = {0.01, 0.7};
+  return p;
+}
 
 // The folders the tests write their tables into, removed when the test program ends.
 struct TableFolders {

@@ -41,17 +41,7 @@ OutcomeTable constant_break_table(double stick, double brk, FragmentStats f) {
   return t;
 }
 
-// Two solid samples (1 and 2 um, densities 2500 and 1800 kg/m^3) with weights wi, wj and velocities.
-SampleSet pair_of_samples(double wi, double wj, const Gas& gas, const Sound& sound) {
-  SampleSet p;
-  const double vi = 1e-18 * 0.5235987755982988, vj = 8.0 * vi;
-  p.add(0, 0, 0, vi, 0.0, 2500.0 * vi, wi, 0, gas, sound);
-  p.add(0, 0, 0, vj, 0.0, 1800.0 * vj, wj, 1, gas, sound);
-  p.vx = {0.3, -0.1};
-  p.vy = {-0.2, 0.05};
-  p.vz = {0.01, 0.7};
-  return p;
-}
+using test::pair_of_samples;
 
 double total_mass(const SampleSet& p) {
   double m = 0.0;

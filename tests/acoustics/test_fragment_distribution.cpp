@@ -19,6 +19,7 @@
 #include "agglo/acoustics/fragments.hpp"
 #include "agglo/acoustics/outcome_table.hpp"
 #include "agglo/core/rng.hpp"
+#include "outcome_table_helpers.hpp"
 
 using namespace agglo;
 using namespace agglo::acoustics;
@@ -43,18 +44,6 @@ FragmentStats dist_stats(const std::array<double, 4>& number, const std::array<d
   return f;
 }
 
-// Two solid samples (1 and 2 um) with weights wi, wj and different velocities.
-SampleSet dist_pair(double wi, double wj, const Gas& gas, const Sound& sound) {
-  SampleSet p;
-  const double vi = 1e-18 * 0.5235987755982988, vj = 8.0 * vi;
-  p.add(0, 0, 0, vi, 0.0, 2500.0 * vi, wi, 0, gas, sound);
-  p.add(0, 0, 0, vj, 0.0, 1800.0 * vj, wj, 1, gas, sound);
-  p.vx = {0.3, -0.1};
-  p.vy = {-0.2, 0.05};
-  p.vz = {0.01, 0.7};
-  return p;
-}
-
 std::size_t dist_bin(double f) {
   std::size_t b = 0;
   while (b + 2 < kDistEdges.size() && f >= kDistEdges[b + 1]) ++b;
@@ -75,7 +64,7 @@ DistTally dist_breaks(double wi, double wj, const FragmentStats& f, int events, 
   DistTally t;
   CounterRng rng(seed, 41, 1);
   for (int e = 0; e < events; ++e) {
-    SampleSet p = dist_pair(wi, wj, gas, sound);
+    SampleSet p = test::pair_of_samples(wi, wj, gas, sound);
     const double W = std::min(wi, wj), M = p.mass[0] + p.mass[1];
     std::array<double, 3> mom0{}, mom{};
     double scale = 0.0;  // W sum m |v|, the scale of the momentum's rounding

@@ -159,15 +159,23 @@ TEST(OutcomeAggregates, FragmentMassConservedAndTableReadByTheDsmc) {
   EXPECT_NEAR(mu, 1.0, 1e-12);
 }
 
-// The fragment mass distribution of a node: per bin of m / M the fragments' mean number and mass fraction
-// over the breaks (0.25 in bin 5, 0.5 in bin 6, 0.75 in bin 7 of kFragmentFractionEdges); none when a break
-// has no fractions (a journal of before them).
-TEST(OutcomeAggregates, FragmentDistributionOverTheBreaks) {
+// One node (1 m/s, 4 primaries, 1 um) of three impacts: the grid of the node-statistics tests below.
+namespace {
+OutcomeGridSpec one_node_three_impacts() {
   OutcomeGridSpec s;
   s.speeds = {1.0};
   s.primaries = {4};
   s.diameters = {1e-6};
   s.impacts = 3;
+  return s;
+}
+}  // namespace
+
+// The fragment mass distribution of a node: per bin of m / M the fragments' mean number and mass fraction
+// over the breaks (0.25 in bin 5, 0.5 in bin 6, 0.75 in bin 7 of kFragmentFractionEdges); none when a break
+// has no fractions (a journal of before them).
+TEST(OutcomeAggregates, FragmentDistributionOverTheBreaks) {
+  const OutcomeGridSpec s = one_node_three_impacts();
   const std::vector<PairOutcome> out = {PairOutcome::brk, PairOutcome::stick, PairOutcome::brk};
   auto t = tabulate_outcomes(s, out, {2.0, 1.0, 3.0}, {0.75, 1.0, 0.5}, {{0.25, 0.75}, {}, {0.5, 0.25, 0.25}});
   const std::size_t nb = kFragmentFractionEdges.size() - 1;
@@ -184,11 +192,7 @@ TEST(OutcomeAggregates, FragmentDistributionOverTheBreaks) {
 // The node means: over the breaks only; f_L raised to 1/N_f when below it by rounding only (five equal
 // fragments: 0.2 computed as 0.19999999999999998), not when below it by more.
 TEST(OutcomeAggregates, FragmentMeansOverTheBreaks) {
-  OutcomeGridSpec s;
-  s.speeds = {1.0};
-  s.primaries = {4};
-  s.diameters = {1e-6};
-  s.impacts = 3;
+  const OutcomeGridSpec s = one_node_three_impacts();
   const std::vector<PairOutcome> out = {PairOutcome::brk, PairOutcome::stick, PairOutcome::brk};
   auto t = tabulate_outcomes(s, out, {5.0, 9.0, 5.0}, {0.19999999999999998, 0.9, 0.19999999999999998});
   EXPECT_EQ(t.fragments[0], 5.0);          // the stick's values are not read

@@ -58,6 +58,16 @@ void set_bin_fragments(SampleSet& p, std::size_t k, const Merged& m, const Fragm
   set_fragments(p, k, m, c, held / c);
 }
 
+// After an equal-weight break both samples keep their weight: i takes the pair's split-merge debt (and
+// j's reference when i has none), and both are refreshed.
+void pool_debt_and_refresh(SampleSet& p, std::size_t i, std::size_t j, const Gas& gas, const Sound& sound) {
+  if (p.debt[i] <= 0.0) p.debt_ref[i] = p.debt_ref[j];
+  p.debt[i] += p.debt[j];
+  p.debt[j] = 0.0;
+  p.refresh(i, gas, sound);
+  p.refresh(j, gas, sound);
+}
+
 // Breakage by a fragment mass distribution (fragments.hpp): equal weights, i and j each hold half the mass
 // in a bin drawn by u and by u + 1/2 (mod 1); unequal, l holds all of it in one bin.
 void break_by_distribution(SampleSet& p, std::size_t i, std::size_t j, const FragmentStats& f, CounterRng& rng,
@@ -69,11 +79,7 @@ void break_by_distribution(SampleSet& p, std::size_t i, std::size_t j, const Fra
     const double W = wi, held = 0.5 * W * m.mass, u2 = u < 0.5 ? u + 0.5 : u - 0.5;
     set_bin_fragments(p, i, m, f, draw_fragment_bin(f, u), held, W, rng);
     set_bin_fragments(p, j, m, f, draw_fragment_bin(f, u2), held, W, rng);
-    if (p.debt[i] <= 0.0) p.debt_ref[i] = p.debt_ref[j];
-    p.debt[i] += p.debt[j];
-    p.debt[j] = 0.0;
-    p.refresh(i, gas, sound);
-    p.refresh(j, gas, sound);
+    pool_debt_and_refresh(p, i, j, gas, sound);
     return;
   }
   const std::size_t h = wi > wj ? i : j, l = wi > wj ? j : i;
@@ -94,11 +100,7 @@ void break_weighted(SampleSet& p, std::size_t i, std::size_t j, const FragmentSt
     const double W = wi, c = stochastic_round(W * (f.number - 1.0), W, rng);
     set_fragments(p, i, m, W, f.largest * m.mass);
     set_fragments(p, j, m, c, W * (1.0 - f.largest) * m.mass / c);
-    if (p.debt[i] <= 0.0) p.debt_ref[i] = p.debt_ref[j];
-    p.debt[i] += p.debt[j];
-    p.debt[j] = 0.0;
-    p.refresh(i, gas, sound);
-    p.refresh(j, gas, sound);
+    pool_debt_and_refresh(p, i, j, gas, sound);
     return;
   }
   const std::size_t h = wi > wj ? i : j, l = wi > wj ? j : i;
