@@ -40,16 +40,21 @@ std::string outcome_job_key(const impact::OutcomeGridSpec& g, const impact::Outc
   std::string extra;
   if (!g.charges.empty()) extra += fmt::format(" sigma1={} sigma2={}", g.charges[j.c1], g.charges[j.c2]);
   if (!g.permittivities.empty()) extra += fmt::format(" kappa={}", g.permittivities[j.ik]);
+  if (!g.primary_radii.empty()) extra += fmt::format(" a1={} a2={}", g.primary_radii[j.m1], g.primary_radii[j.m2]);
   if (g.aggregates())
-    return fmt::format("v_n={} n1={} n2={}{} sample={} b={}", g.speeds[j.iv], g.primaries[j.i1], g.primaries[j.i2],
-                       extra, j.sample, j.b_fraction);
+    return fmt::format("v_n={} n1={} n2={}{} sample={} b={}", g.speeds[j.iv], g.partner_primaries(j.i1, j.m1),
+                       g.partner_primaries(j.i2, j.m2), extra, j.sample, j.b_fraction);
   return fmt::format("v_n={} d1={} d2={}{} sample={} b={}", g.speeds[j.iv], g.diameters[j.i1], g.diameters[j.i2],
                      extra, j.sample, j.b_fraction);
 }
 
-// The charge and permittivity axes in the provenance ("" without them).
+// The charge, permittivity and primary-radius axes in the provenance ("" without them).
 std::string charge_provenance(const impact::OutcomeGridSpec& g) {
   std::string r;
+  if (!g.primary_radii.empty())
+    r += fmt::format("; primary radii [{}] m of each partner (axes primary_radius_1, primary_radius_2), the counts "
+                     "N (a_0 / a)^3 at the common volume-equivalent diameters 2 a_0 N^(1/3), a_0 = {:g} m",
+                     fmt::join(g.primary_radii, ", "), g.primary_radii[0]);
   if (!g.charges.empty())
     r += fmt::format("; partner charges sigma pi d^2 for sigma in [{}] C/m^2 (d volume-equivalent), with the "
                      "case's electrostatics",
