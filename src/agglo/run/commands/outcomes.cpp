@@ -6,7 +6,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "agglo/acoustics/outcome_table.hpp"
 #include "agglo/impact/outcome_aggregates.hpp"
+#include "agglo/impact/outcome_fractal_law.hpp"
 #include "agglo/impact/outcome_grid.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/run/ensemble.hpp"
@@ -107,6 +109,25 @@ std::string provenance(const OutcomesCase& c, std::size_t impacts) {
                      impacts, c.dem.name, c.grid.max_offset, c.grid.seed, charge_provenance(c.grid));
 }
 
+// results.nc: the table with its provenance and, for the DSMC, the fractal law of aggregate structures
+// (impact/outcome_fractal_law.hpp) and the launch gap of charged sphere tables (acoustics/outcome_table.hpp).
+io::Dataset table_dataset(const OutcomesCase& c, const impact::OutcomeGridResult& table, const std::string& prov) {
+  io::Dataset d = writers::outcomes_dataset(table, prov);
+  namespace ac = acoustics;
+  if (c.grid.aggregates()) {
+    const impact::TableFractalLaw law = impact::table_fractal_law(c.dem, c.grid);
+    if (law.known) {
+      d.attributes[ac::kFractalDimensionAttribute] = law.fractal_dimension;
+      d.attributes[ac::kFractalPrefactorAttribute] = law.fractal_prefactor;
+      d.attributes[ac::kFractalLawAttribute] = law.how;
+    }
+  } else if (!c.grid.charges.empty()) {  // the target is the smaller sphere: gap g r_1 (outcome_grid.hpp)
+    d.attributes[ac::kLaunchGapAttribute] = c.dem.projectile.gap_radii;
+    d.attributes[ac::kMediumPermittivityAttribute] = c.dem.medium_permittivity;
+  }
+  return d;
+}
+
 class Outcomes final : public Command {
  public:
   std::string_view name() const override { return "outcomes"; }
@@ -148,7 +169,7 @@ class Outcomes final : public Command {
     const auto table = impact::tabulate_outcomes(c.grid, outcomes, fragments, largest, fractions);
     if (ctx.formats.csv) writers::write_outcomes(out, table);
     CommandResult r;
-    r.data = std::make_shared<const io::Dataset>(writers::outcomes_dataset(table, provenance(c, impacts.size())));
+    r.data = std::make_shared<const io::Dataset>(table_dataset(c, table, provenance(c, impacts.size())));
     std::int64_t sticks = 0, breaks = 0;
     for (const auto& o : outcomes) {
       sticks += o == impact::PairOutcome::stick;
