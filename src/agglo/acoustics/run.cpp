@@ -209,6 +209,10 @@ std::string closing_log(const AcousticObservations& o) {
                        o.stats.table_queries ? 100.0 * static_cast<double>(o.stats.table_clamped) /
                                                    static_cast<double>(o.stats.table_queries)
                                              : 0.0);
+  if (o.coulomb_launch)
+    log += fmt::format("dry outcome table: Coulomb work before the launch gap: {} pairs turned back (bounced "
+                       "elastically without contact; docs/acoustics.md §1.7)\n",
+                       o.stats.table_turned_back);
   if (!o.interrupted.empty()) log += "incomplete: " + o.interrupted + "\n";
   log += fmt::format("conservation: solid volume fraction {:.17g} -> {:.17g} (rel. {:.3g}); liquid {:.17g} -> {:.17g} "
                      "(rel. {:.3g}); mass {:.17g} -> {:.17g}\n",
@@ -391,6 +395,7 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
   obs.stats = eng.stats();
   obs.selection = eng.settings().selection;
   obs.dry_table = eng.settings().outcomes.dry_model == DryModel::table;
+  obs.coulomb_launch = obs.dry_table && eng.particles().carries_charge && eng.settings().outcomes.dry_table->has_launch_gap();
   obs.dsmc = true;
   const auto& dom = eng.settings().motion.domain;
   obs.min_cell_edge = std::min({dom.L[0] / dom.cells[0], dom.L[1] / dom.cells[1], dom.L[2] / dom.cells[2]});
