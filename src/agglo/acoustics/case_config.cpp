@@ -58,7 +58,7 @@ void parse_structure(const ConfigSection& s, PopulationSpec& p) {
   const auto& k = keys().population;
   const bool fractal = k.structure.present(s) && k.structure.read(s) == settings::kStructureFractal;
   const settings::Setting* fractal_keys[] = {&k.primary_radius, &k.fractal_dimension, &k.fractal_prefactor,
-                                             &k.mobility_radius};
+                                             &k.mobility_radius, &k.fractal_law};
   if (!fractal) {
     for (const settings::Setting* key : fractal_keys)
       if (key->present(s))
@@ -69,8 +69,16 @@ void parse_structure(const ConfigSection& s, PopulationSpec& p) {
   StructureLaw& law = p.structure;
   law.fractal = true;
   law.primary_radius = k.primary_radius.read(s);
-  law.fractal_dimension = k.fractal_dimension.read(s);
-  law.fractal_prefactor = k.fractal_prefactor.read(s);
+  law.from_table = k.fractal_law.present(s) && k.fractal_law.read(s) == settings::kFractalLawTable;
+  if (law.from_table) {  // D_f, k_f from the outcome table: apply_table_fractal_law, after [outcomes]
+    for (const settings::Real* key : {&k.fractal_dimension, &k.fractal_prefactor})
+      if (key->present(s))
+        key->reject(s, fmt::format("is taken from the outcome table with {} = \"{}\": remove it", k.fractal_law.dotted(),
+                                   settings::kFractalLawTable));
+  } else {
+    law.fractal_dimension = k.fractal_dimension.read(s);
+    law.fractal_prefactor = k.fractal_prefactor.read(s);
+  }
   law.mobility = k.mobility_radius.present(s) && k.mobility_radius.read(s) == settings::kMobilitySorensen
                      ? MobilityRule::sorensen
                      : MobilityRule::collision;
@@ -315,6 +323,32 @@ void check_charged_populations(const ConfigSection& root, EngineSettings& e) {
     for (const PopulationSpec& p : e.populations) e.outcomes.permittivities.push_back(p.permittivity);
 }
 
+// population.fractal_law = "table": D_f and k_f from the dry outcome table's attributes (outcome_table.hpp);
+// refused naming the key when the run has no table or its table records no law. Then the cells are checked
+// again against the collision diameters of that law (check_cells ran with the compact ones).
+void apply_table_fractal_law(const ConfigSection& root, EngineSettings& e) {
+  const auto& k = keys().population;
+  const OutcomeTable* t = e.outcomes.dry_model == DryModel::table ? e.outcomes.dry_table.get() : nullptr;
+  bool applied = false;
+  for (const ConfigSection& s : k.t.elements(root))
+    for (PopulationSpec& p : e.populations) {
+      if (!p.structure.from_table || p.name != k.name.read(s)) continue;
+      if (!(t && t->has_fractal_law()))
+        k.fractal_law.reject(s, fmt::format("needs a dry outcome table ({} = \"{}\") with the attributes '{}' and "
+                                            "'{}' (an aggregate table of agglo outcomes); {}",
+                                            keys().outcomes.dry_model.dotted(), settings::kDryTable,
+                                            kFractalDimensionAttribute, kFractalPrefactorAttribute,
+                                            t ? "this table has none" : "this run has no table"));
+      p.structure.fractal_dimension = t->fractal_dimension;
+      p.structure.fractal_prefactor = t->fractal_prefactor;
+      applied = true;
+    }
+  if (!applied) return;
+  double dmax = 0.0;
+  for (const PopulationSpec& p : e.populations) dmax = std::max(dmax, largest_diameter(p));
+  check_cells(keys().domain, keys().domain.t.open(root), e, dmax);
+}
+
 void parse_outcomes(const ConfigSection& root, const std::string& case_file, OutcomeParams& oc) {
   const auto& k = keys().outcomes;
   ConfigSection o = k.t.open(root);
@@ -363,6 +397,7 @@ AcousticCase parse_acoustic_case(Config& cfg) {
   parse_kernels(root, e);
   parse_outcomes(root, c.file, e.outcomes);
   check_charged_populations(root, e);
+  apply_table_fractal_law(root, e);
   parse_output(root, e.t_end, c.output);
   cfg.check_unknown_keys();
   return c;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "agglo/acoustics/coulomb_launch.hpp"
 #include "agglo/acoustics/fragments.hpp"
 #include "agglo/acoustics/merge.hpp"
 #include "agglo/core/constants.hpp"
@@ -115,7 +116,19 @@ CollisionOutcome CellEvents::dry_outcome(std::size_t i, std::size_t j, double gn
     return gn <= critical_velocity_dry(oc, di, dj, p.rho[i], p.rho[j]) ? CollisionOutcome::stick
                                                                         : CollisionOutcome::bounce;
   }
-  const OutcomeProbabilities pr = oc.dry_table->at(table_query(i, j, gn));
+  table_speed_ = gn;
+  turned_back_ = false;
+  if (p.carries_charge && oc.dry_table->has_launch_gap()) {  // the Coulomb work before the launch gap
+    table_speed_ = coulomb_launch_speed(gn, p.q[i], p.q[j], p.mass[i], p.mass[j], p.volume_diameter(i),
+                                        p.volume_diameter(j), oc.dry_table->launch_gap,
+                                        oc.dry_table->medium_permittivity);
+    if (table_speed_ < 0.0) {  // turned back before the launch separation: never touches, a bounce
+      turned_back_ = true;
+      ++st.table_turned_back;
+      return CollisionOutcome::bounce;
+    }
+  }
+  const OutcomeProbabilities pr = oc.dry_table->at(table_query(i, j, table_speed_));
   ++st.table_queries;
   if (pr.clamped) ++st.table_clamped;
   const double u = rng.uniform();
@@ -149,13 +162,15 @@ void CellEvents::collide(std::size_t i, std::size_t j) {
     if (p.w[j] <= 0.0) refill(j);
   } else if (out == CollisionOutcome::brk) {  // only dry pairs with a table (weights stay >= 1: no refill)
     ++st.breakups[static_cast<int>(type)];
-    break_weighted(p, i, j, oc.dry_table->fragments_at(table_query(i, j, gn)), rng, *ctx.gas,
+    break_weighted(p, i, j, oc.dry_table->fragments_at(table_query(i, j, table_speed_)), rng, *ctx.gas,
                    *ctx.sound);
   } else {
     ++st.rebounds[static_cast<int>(type)];
-    const double e =
-        type == PairType::dry ? oc.restitution : wet_restitution(oc, p.volume_diameter(i), p.volume_diameter(j), gn);
-    const double dE = rebound_weighted(p, i, j, nrm, e, oc.friction);
+    const bool dry = type == PairType::dry;
+    // a pair turned back by like charges: the central Coulomb force reverses the normal motion elastically
+    const double e = dry ? (turned_back_ ? 1.0 : oc.restitution)
+                         : wet_restitution(oc, p.volume_diameter(i), p.volume_diameter(j), gn);
+    const double dE = rebound_weighted(p, i, j, nrm, e, dry && turned_back_ ? 0.0 : oc.friction);
     st.energy_lost += dE;
     if (dE > 0.0) debtors.push_back(static_cast<std::uint32_t>(p.w[i] > p.w[j] ? i : j));
     compensate(i, j);

@@ -36,6 +36,10 @@ class CellEvents {
   // charge densities q / (pi d_v^2) (samples carrying charge), mean kappa_p of the two populations.
   OutcomeQuery table_query(std::size_t i, std::size_t j, double gn) const;
 
+  // A charged table with a launch gap (coulomb_launch.hpp): the speed of the last dry outcome's query, and
+  // whether that pair was turned back before the launch separation (a bounce without contact).
+  double table_speed_ = 0.0;
+  bool turned_back_ = false;
   SampleSet& p;
   const std::uint32_t* idx;
   const std::size_t n;

@@ -26,6 +26,7 @@ void CollisionStats::add(const CollisionStats& o) {
   row_rate_updates += o.row_rate_updates;
   table_queries += o.table_queries;
   table_clamped += o.table_clamped;
+  table_turned_back += o.table_turned_back;
 }
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(AGGLO_NO_AVX2)

@@ -37,6 +37,7 @@ struct CollisionStats {
   std::uint64_t row_rate_updates = 0;  // binned: full computations of a row of group-pair rates
   std::uint64_t table_queries = 0;     // dry outcome table (outcomes.dry_model = "table"): queries
   std::uint64_t table_clamped = 0;     // of which outside the table on some axis (clamped to its end)
+  std::uint64_t table_turned_back = 0; // charged table with a launch gap: pairs turned back by the Coulomb work
   void add(const CollisionStats& o);
 };
 

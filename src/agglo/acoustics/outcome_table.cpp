@@ -333,6 +333,49 @@ std::vector<std::string> OutcomeTable::dimensions() const {
   return dims;
 }
 
+namespace {
+
+// The number of global attribute `name` (NaN when absent); std::invalid_argument when it is not a number.
+double number_attribute(const io::Dataset& d, const char* name) {
+  if (!d.attributes.contains(name)) return std::nan("");
+  const auto& a = d.attributes[name];
+  if (a.is_number()) return a.get<double>();
+  if (a.is_array() && a.size() == 1 && a[0].is_number()) return a[0].get<double>();
+  throw std::invalid_argument(fmt::format("attribute '{}' is not a number", name));
+}
+
+// The pair of attributes (a, b): both or neither; each in its range.
+void check_attribute_pair(double a, double b, const char* na, const char* nb) {
+  if (std::isnan(a) != std::isnan(b))
+    throw std::invalid_argument(fmt::format("attribute '{}' without '{}'", std::isnan(a) ? nb : na, std::isnan(a) ? na : nb));
+}
+
+// The fractal law and launch-gap attributes (outcome_table.hpp), checked.
+void read_table_attributes(const io::Dataset& d, OutcomeTable& t) {
+  const double df = number_attribute(d, kFractalDimensionAttribute), kf = number_attribute(d, kFractalPrefactorAttribute);
+  check_attribute_pair(df, kf, kFractalDimensionAttribute, kFractalPrefactorAttribute);
+  if (!std::isnan(df)) {
+    if (!(df > 1.0 && df <= 3.0) || !(kf > 0.0))
+      throw std::invalid_argument(fmt::format("attributes '{}' = {} and '{}' = {}: D_f in (1, 3] and k_f > 0 expected",
+                                              kFractalDimensionAttribute, df, kFractalPrefactorAttribute, kf));
+    t.fractal_dimension = df;
+    t.fractal_prefactor = kf;
+    if (d.attributes.contains(kFractalLawAttribute) && d.attributes[kFractalLawAttribute].is_string())
+      t.fractal_law = d.attributes[kFractalLawAttribute].get<std::string>();
+  }
+  const double g = number_attribute(d, kLaunchGapAttribute), k0 = number_attribute(d, kMediumPermittivityAttribute);
+  check_attribute_pair(g, k0, kLaunchGapAttribute, kMediumPermittivityAttribute);
+  if (!std::isnan(g)) {
+    if (!(g > 0.0) || !(k0 > 0.0))
+      throw std::invalid_argument(fmt::format("attributes '{}' = {} and '{}' = {}: both positive expected",
+                                              kLaunchGapAttribute, g, kMediumPermittivityAttribute, k0));
+    t.launch_gap = g;
+    t.medium_permittivity = k0;
+  }
+}
+
+}  // namespace
+
 OutcomeTable outcome_table_from_dataset(const io::Dataset& d) {
   OutcomeTable t;
   for (std::size_t k = 0; k < kOutcomeAxisCount; ++k) {
@@ -361,6 +404,7 @@ OutcomeTable outcome_table_from_dataset(const io::Dataset& d) {
   check_fragments(t);
   if (d.attributes.contains("provenance") && d.attributes["provenance"].is_string())
     t.provenance = d.attributes["provenance"].get<std::string>();
+  read_table_attributes(d, t);
   return t;
 }
 
@@ -389,6 +433,15 @@ io::Dataset outcome_table_dataset(const OutcomeTable& t) {
     d.add(kFragmentDistribution[1], bin_dims, "1", kFragmentDistributionMeanings[1], t.fragment_mass);
   }
   if (!t.provenance.empty()) d.attributes["provenance"] = t.provenance;
+  if (t.has_fractal_law()) {
+    d.attributes[kFractalDimensionAttribute] = t.fractal_dimension;
+    d.attributes[kFractalPrefactorAttribute] = t.fractal_prefactor;
+    if (!t.fractal_law.empty()) d.attributes[kFractalLawAttribute] = t.fractal_law;
+  }
+  if (t.has_launch_gap()) {
+    d.attributes[kLaunchGapAttribute] = t.launch_gap;
+    d.attributes[kMediumPermittivityAttribute] = t.medium_permittivity;
+  }
   return d;
 }
 

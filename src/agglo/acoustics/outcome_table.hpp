@@ -91,6 +91,18 @@ inline constexpr std::array<const char*, 2> kFragmentDistributionMeanings = {
     "mean number of fragments in the mass-fraction bin of a pair that breaks",
     "mean mass fraction of the pair carried by the fragments in the bin of a pair that breaks"};
 inline constexpr std::size_t kMaxFragmentBins = 32;
+// Optional global attributes (numbers, text): the fractal law N = k_f (R_g / a)^D_f of an aggregate table's
+// structures (impact/outcome_fractal_law.hpp; both numbers or neither, D_f in (1, 3], k_f > 0) and how it was
+// obtained, which a population takes with population.fractal_law = "table" (docs/acoustics.md §1.8).
+inline constexpr const char* kFractalDimensionAttribute = "fractal_dimension";
+inline constexpr const char* kFractalPrefactorAttribute = "fractal_prefactor";
+inline constexpr const char* kFractalLawAttribute = "fractal_law";
+// Of a charged sphere table (both or neither): the DEM's launch surface gap g in units of the radius of the
+// smaller partner (the target), so the launch centre distance is s = r_1 + r_2 + g min(r_1, r_2) with
+// r = d / 2, and the medium's relative permittivity kappa_0 of its electrostatics; the DSMC converts its
+// far-field normal speed to the speed at s with them (docs/acoustics.md §1.7 "Coulomb work").
+inline constexpr const char* kLaunchGapAttribute = "launch_gap";
+inline constexpr const char* kMediumPermittivityAttribute = "medium_permittivity";
 
 struct OutcomeProbabilities {
   double stick = 0.0, bounce = 0.0, brk = 0.0;
@@ -126,6 +138,11 @@ struct OutcomeTable {
   std::size_t fragment_bins() const { return fragment_edges.empty() ? 0 : fragment_edges.size() - 1; }
   std::string source;                              // file it was read from ("" when built in memory)
   std::string provenance;                          // the file's `provenance` attribute, if any
+  double fractal_dimension = 0.0, fractal_prefactor = 0.0;  // the structures' law; 0: none recorded
+  std::string fractal_law;                         // how it was obtained
+  double launch_gap = 0.0, medium_permittivity = 1.0;  // g [1] and kappa_0 [1]; launch_gap 0: none recorded
+  bool has_fractal_law() const { return fractal_dimension > 0.0; }
+  bool has_launch_gap() const { return launch_gap > 0.0; }
 
   // Probabilities of query q (the pair ordered by diameter, its charges with it).
   OutcomeProbabilities at(const OutcomeQuery& q) const;
@@ -157,7 +174,7 @@ struct OutcomeTable {
 
 // The table held by `d`; std::invalid_argument with a one-line reason (naming the variable and the
 // offending value) when a variable is missing, has other dimensions or units, an axis is not
-// increasing (or not positive, charges excepted), one charge axis is given without the other, a probability is outside [0, 1] or the three do not sum to 1, or a node with
+// increasing (or not positive, charges excepted), one charge axis is given without the other, a probability is outside [0, 1] or the three do not sum to 1, a fractal-law or launch-gap attribute is not a number in its range or given without its partner, or a node with
 // P_break > 0 has no or invalid fragment statistics (N_f < 2, f_L outside [1/N_f, 1); the distribution's checks above).
 OutcomeTable outcome_table_from_dataset(const io::Dataset& d);
 

@@ -178,16 +178,41 @@ std::string pm_log(const AcousticObservations& o) {
   return log + "\n";
 }
 
+// The warning of a run whose largest collision diameter exceeded kCellDiameterFraction of the smallest cell
+// edge at some efficiency row ("" otherwise): when first and how often, and the largest ratio.
+std::string cell_size_warning(const AcousticObservations& o) {
+  if (!(o.min_cell_edge > 0.0)) return "";
+  std::size_t over = 0;
+  double t_first = -1.0, worst = 0.0, t_worst = 0.0;
+  for (const EfficiencyRow& r : o.efficiency) {
+    const double ratio = r.largest_collision_diameter / o.min_cell_edge;
+    if (ratio > kCellDiameterFraction && over++ == 0) t_first = r.t;
+    if (ratio > worst) worst = ratio, t_worst = r.t;
+  }
+  if (over == 0) return "";
+  return fmt::format("cell size: the largest collision diameter exceeded {:g} of the smallest cell edge {:.4g} m in {} "
+                     "of {} efficiency rows (first at t = {:.6g} s), up to {:.4g} m ({:.3g} of the edge) at t = "
+                     "{:.6g} s; the cells assume particles much smaller than the cell: use fewer cells "
+                     "(docs/acoustics.md §1.8)",
+                     kCellDiameterFraction, o.min_cell_edge, over, o.efficiency.size(), t_first,
+                     worst * o.min_cell_edge, worst, t_worst);
+}
+
 std::string closing_log(const AcousticObservations& o) {
   const Counts &c0 = o.initial, &c1 = o.final;
   const EfficiencyRow& last = o.efficiency.back();
   std::string log = guard_report(o.stats, o.selection) + outcomes_log(o.stats) + pm_log(o);
+  if (const std::string w = cell_size_warning(o); !w.empty()) log += "warning: " + w + "\n";
   if (o.dry_table)
     log += fmt::format("dry outcome table: queries={} clamped={} ({:.3g}% outside the table, clamped to its ends)\n",
                        o.stats.table_queries, o.stats.table_clamped,
                        o.stats.table_queries ? 100.0 * static_cast<double>(o.stats.table_clamped) /
                                                    static_cast<double>(o.stats.table_queries)
                                              : 0.0);
+  if (o.coulomb_launch)
+    log += fmt::format("dry outcome table: Coulomb work before the launch gap: {} pairs turned back (bounced "
+                       "elastically without contact; docs/acoustics.md §1.7)\n",
+                       o.stats.table_turned_back);
   if (!o.interrupted.empty()) log += "incomplete: " + o.interrupted + "\n";
   log += fmt::format("conservation: solid volume fraction {:.17g} -> {:.17g} (rel. {:.3g}); liquid {:.17g} -> {:.17g} "
                      "(rel. {:.3g}); mass {:.17g} -> {:.17g}\n",
@@ -238,6 +263,9 @@ class Observer {
     r.collisions = eng_.stats().collisions;
     r.subcycled = eng_.stats().subcycled;
     r.pm = pm_mass(eng_.particles(), V_, eng_.settings().motion.gas);
+    const SampleSet& p = eng_.particles();
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.w[i] > 0.0) r.largest_collision_diameter = std::max(r.largest_collision_diameter, p.d[i]);
     obs_.efficiency.push_back(r);
   }
 
@@ -367,7 +395,11 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
   obs.stats = eng.stats();
   obs.selection = eng.settings().selection;
   obs.dry_table = eng.settings().outcomes.dry_model == DryModel::table;
+  obs.coulomb_launch = obs.dry_table && eng.particles().carries_charge && eng.settings().outcomes.dry_table->has_launch_gap();
   obs.dsmc = true;
+  const auto& dom = eng.settings().motion.domain;
+  obs.min_cell_edge = std::min({dom.L[0] / dom.cells[0], dom.L[1] / dom.cells[1], dom.L[2] / dom.cells[2]});
+  if (const std::string w = cell_size_warning(obs); !w.empty() && hooks.warning) hooks.warning(w);
   obs.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   obs.log += closing_log(obs);
   return obs;

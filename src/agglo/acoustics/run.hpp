@@ -30,7 +30,14 @@ struct EfficiencyRow {
   double pure_droplet_fraction = 0.0;
   std::uint64_t collisions = 0, subcycled = 0;
   PmMass pm;                      // PM mass concentrations [kg/m^3] (DSMC; the sectional run leaves 0)
+  double largest_collision_diameter = 0.0;  // [m] max of the samples' collision diameters d (DSMC; else 0)
 };
+
+// The DSMC's cells assume particles much smaller than the cell (docs/acoustics.md §1.8 "Cell size"): a run
+// whose largest collision diameter (the fractal one of aggregate samples) exceeds this fraction of the
+// smallest cell edge at some efficiency row is reported (run.log warning and the run's warnings); the
+// parse-time check refuses a start with a diameter >= the edge.
+inline constexpr double kCellDiameterFraction = 0.1;
 
 struct PsdRecord {
   double t = 0.0;                              // [s]
@@ -56,7 +63,9 @@ struct AcousticObservations {
   CollisionStats stats;
   Selection selection = Selection::nanbu;
   bool dry_table = false;                      // outcomes.dry_model = "table": its counters are reported
+  bool coulomb_launch = false;                 // ... with charged samples and a launch gap (coulomb_launch.hpp)
   bool dsmc = false;                           // a DSMC run: PM columns and outcomes by pair type are written
+  double min_cell_edge = 0.0;                  // [m] smallest cell edge of the domain (DSMC)
   std::string log;                             // run.log without its last line (see io)
   double wall_time_s = 0.0;
   std::string interrupted;                     // non-empty: cancelled there; the rows so far are kept

@@ -40,6 +40,7 @@ struct StructureLaw {
   double primary_radius = 0.0;     // r_p [m]
   double fractal_dimension = 3.0;  // D_f
   double fractal_prefactor = 1.0;  // k_f
+  bool from_table = false;         // D_f, k_f from the dry outcome table (population.fractal_law = "table")
   MobilityRule mobility = MobilityRule::collision;
 };
 

@@ -19,6 +19,8 @@ inline constexpr std::string_view kDryTable = "table";
 inline constexpr std::string_view kStructureCompact = "compact";
 inline constexpr std::string_view kStructureFractal = "fractal";
 inline constexpr std::string_view kMobilityCollision = "collision";
+inline constexpr std::string_view kFractalLawGiven = "given";  // population.fractal_law
+inline constexpr std::string_view kFractalLawTable = "table";
 inline constexpr std::string_view kMobilitySorensen = "sorensen";
 
 struct AcousticSettings {
@@ -116,6 +118,13 @@ struct AcousticSettings {
                            std::nullopt, Range::open_closed(1.0, 3.0)};
     Real fractal_prefactor{t, {"population.fractal_prefactor", "", "structure = \"fractal\": fractal prefactor k_f"},
                            std::nullopt, Range::open_closed(0.0, 100.0)};
+    Choice fractal_law{t,
+                       {"population.fractal_law", "",
+                        "structure = \"fractal\": D_f and k_f given by fractal_dimension and fractal_prefactor, or "
+                        "taken from the dry outcome table's structures (its attributes fractal_dimension, "
+                        "fractal_prefactor)",
+                        "given (absent: read only when set)"},
+                       std::nullopt, {kFractalLawGiven, kFractalLawTable}};
     Choice mobility_radius{t,
                            {"population.mobility_radius", "",
                             "structure = \"fractal\": drag (mobility) radius: the collision radius, or "

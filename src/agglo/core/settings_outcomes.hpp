@@ -31,6 +31,12 @@ struct OutcomesSettings {
                           "relative permittivities kappa_p of both partners (increasing)",
                           "the case's permittivities (no permittivity axis)"},
                          std::nullopt, Range::open_closed(0.0, 1e6)};
+    Reals primary_radii{t,
+                        {"outcome_grid.primary_radii", "m",
+                         "primary radii a of the aggregate partners (increasing; with primaries: the counts at the first "
+                         "radius, each partner's radius from this axis)",
+                         "agglomerate.radius (one primary radius, no primary-radius axes)"},
+                        std::nullopt, Range::open_closed(0.0, 1e-2)};
     Integer impacts{t, {"outcome_grid.impacts", "", "impacts per grid node (sampled impact parameters)"}, 8, 1,
                     100000};
     Real max_offset{t, {"outcome_grid.max_offset", "", "largest impact parameter b / (r_1 + r_2); 0 = every impact head-on"},

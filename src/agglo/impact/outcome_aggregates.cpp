@@ -21,6 +21,24 @@ bool is_generated_shape(const std::string& shape) { return shape == "fractal" ||
 // A builder seed drawn from `rng` (non-negative, as agglomerate.seed).
 long long draw_seed(CounterRng& rng) { return static_cast<long long>(rng.bits() >> 2); }
 
+// ConfigError unless every primary radius a_m of outcome_grid.primary_radii gives every size d_k a whole
+// count N_k (a_0 / a_m)^3 >= 2 (within 1e-9 relative): the common size axis (outcome_grid.hpp).
+void check_whole_counts(const ConfigSection& root, const OutcomeGridSpec& s) {
+  const auto& k = settings::outcomes_settings().grid;
+  for (std::size_t m = 1; m < s.primary_radii.size(); ++m)
+    for (std::size_t i = 0; i < s.primaries.size(); ++i) {
+      const double ratio = s.primary_radii[0] / s.primary_radii[m];
+      const double n = s.primaries[i] * ratio * ratio * ratio;
+      if (std::abs(n - std::round(n)) > 1e-9 * n || std::round(n) < 2.0)
+        k.primary_radii.reject(
+            k.t.open(root),
+            fmt::format("value {} = {:g} m gives {:.6g} primaries at {} = {} (the volume-equivalent diameter "
+                        "2 a_0 N^(1/3) of {:g} m): allowed are radii a_0 (N / n)^(1/3) with n a whole number >= 2 "
+                        "for every N (e.g. a_0 2^(1/3) with even counts)",
+                        m, s.primary_radii[m], n, k.primaries.dotted(), s.primaries[i], s.primary_radii[0]));
+    }
+}
+
 }  // namespace
 
 void check_aggregate_pair(const ConfigSection& root, const ImpactCase& c, OutcomeGridSpec& s) {
@@ -40,9 +58,10 @@ void check_aggregate_pair(const ConfigSection& root, const ImpactCase& c, Outcom
                                                       "set 0 and choose {}",
                                                       k.time.steps_per_period.dotted()));
   if (!c.dem.walls.empty()) k.wall.t.fail(root, "agglo outcomes tabulates pair impacts: remove the [wall] table");
-  s.primary_radius = c.agglomerate.radius;
+  s.primary_radius = s.primary_radii.empty() ? c.agglomerate.radius : s.primary_radii[0];
   s.diameters.clear();
   for (int n : s.primaries) s.diameters.push_back(2.0 * s.primary_radius * std::cbrt(static_cast<double>(n)));
+  check_whole_counts(root, s);
 }
 
 ImpactCase aggregate_outcome_case(const ImpactCase& base, const OutcomeGridSpec& s, const OutcomeImpact& j) {
@@ -50,11 +69,13 @@ ImpactCase aggregate_outcome_case(const ImpactCase& base, const OutcomeGridSpec&
   // Keyed by the pair of sizes and the sample, not the speed: every speed hits the same structures.
   const std::uint64_t pair = j.i1 * s.sizes() + j.i2;
   CounterRng rng(s.seed, kPartnerStream, pair * static_cast<std::uint64_t>(s.impacts) + static_cast<std::uint64_t>(j.sample));
-  c.agglomerate.primaries = s.primaries[j.i1];
+  c.agglomerate.primaries = s.partner_primaries(j.i1, j.m1);
+  c.agglomerate.radius = s.partner_radius(j.m1);  // each partner's own primary radius
   c.agglomerate.seed = draw_seed(rng);
   c.agglomerate.structure = build_structure(c.agglomerate);
   auto& body = c.projectile.body;
-  body.primaries = s.primaries[j.i2];
+  body.primaries = s.partner_primaries(j.i2, j.m2);
+  body.radius = s.partner_radius(j.m2);
   body.seed = draw_seed(rng);
   body.structure = build_structure(body);
   c.projectile.rotation = projectile_orientation(c, 0);  // drawn from the body's seed

@@ -5,6 +5,9 @@
 // their D_f, k_f; one primary radius a for both, monodisperse), the target with N_1 and the projectile
 // with N_2 primaries of node (N_1, N_2). The table's size axes are the volume-equivalent diameters
 //   d = 2 a N^(1/3)  [m]
+// With outcome_grid.primary_radii a_0 < a_1 < ... each partner has its own primary radius a_m (node axes
+// primary_radius_1, primary_radius_2) on the common size axis d_k = 2 a_0 N_k^(1/3): N_k (a_0 / a_m)^3
+// primaries of a_m, a whole number >= 2 (else refused), so the nodes (d, a) are a product grid.
 // (the diameters of the DSMC's compact samples of that mass, which the DSMC table reader interpolates
 // over), and the impact parameter b is sampled as for spheres relative to r_1 + r_2 = a (N_1^(1/3) +
 // N_2^(1/3)), with the launch speed v_n / sqrt(1 - (b / (r_1 + r_2))^2) (the normal speed of the two
@@ -25,7 +28,8 @@
 namespace agglo::impact {
 
 // ConfigError unless both partners are builder aggregates (fractal, bpca or bcca) of one monodisperse
-// primary radius, without a wall, time.dt = 0; fills s.diameters with 2 a N^(1/3) of s.primaries.
+// primary radius, without a wall, time.dt = 0, and every primary radius gives whole counts; fills
+// s.diameters with 2 a N^(1/3) of s.primaries (a = primary_radii[0] when given).
 void check_aggregate_pair(const ConfigSection& root, const ImpactCase& c, OutcomeGridSpec& s);
 
 // The case of one aggregate impact of the grid: both structures built with the impact's seeds, the

@@ -56,6 +56,13 @@ OutcomeGridSpec parse_outcome_grid(const ConfigSection& root) {
     g.permittivities = k.permittivities.read(s);
     check_increasing(k.permittivities, s, g.permittivities);
   }
+  if (k.primary_radii.present(s)) {  // whole primary counts at every radius: outcome_aggregates.cpp
+    if (!g.aggregates())
+      k.primary_radii.reject(s, fmt::format("needs aggregate partners ({}); sphere tables have no primary radii",
+                                            k.primaries.dotted()));
+    g.primary_radii = k.primary_radii.read(s);
+    check_increasing(k.primary_radii, s, g.primary_radii);
+  }
   g.impacts = static_cast<int>(k.impacts.read(s));
   g.max_offset = k.max_offset.read(s);
   g.seed = static_cast<std::uint64_t>(k.seed.read(s));
@@ -83,27 +90,46 @@ void check_sphere_sphere(const ConfigSection& root, const ImpactCase& c) {
     k.wall.t.fail(root, "agglo outcomes tabulates sphere-sphere impacts: remove the [wall] table");
 }
 
+int OutcomeGridSpec::partner_primaries(std::size_t i, std::size_t m) const {
+  if (primary_radii.empty() || m == 0) return primaries[i];
+  const double ratio = primary_radii[0] / primary_radii[m];
+  return static_cast<int>(std::lround(primaries[i] * ratio * ratio * ratio));
+}
+
 std::size_t outcome_impacts_count(const OutcomeGridSpec& s) {
-  const std::size_t nd = s.sizes(), nc = s.charge_nodes();
-  // size pairs i1 < i2 take every charge pair, i1 = i2 those with c1 <= c2
-  const std::size_t pairs = nd * (nd - 1) / 2 * nc * nc + nd * nc * (nc + 1) / 2;
+  const std::size_t nd = s.sizes(), np = s.charge_nodes() * s.radius_nodes();
+  // a partner is (size, charge, radius): size pairs i1 < i2 take every pair of (charge, radius), i1 = i2
+  // those with (c1, m1) <= (c2, m2)
+  const std::size_t pairs = nd * (nd - 1) / 2 * np * np + nd * np * (np + 1) / 2;
   return s.speeds.size() * pairs * s.permittivity_nodes() * static_cast<std::size_t>(s.impacts);
 }
 
+namespace {
+
+// Node (i1, i2, c1, c2, m1, m2) is tabulated by its own runs (else it copies its mirror).
+bool canonical_node(std::size_t i1, std::size_t i2, std::size_t c1, std::size_t c2, std::size_t m1, std::size_t m2) {
+  return i1 < i2 || (i1 == i2 && (c1 < c2 || (c1 == c2 && m1 <= m2)));
+}
+
+}  // namespace
+
 std::vector<OutcomeImpact> outcome_impacts(const OutcomeGridSpec& s) {
   std::vector<OutcomeImpact> out;
-  const std::size_t nd = s.sizes(), nc = s.charge_nodes(), nk = s.permittivity_nodes();
+  const std::size_t nd = s.sizes(), nc = s.charge_nodes(), nk = s.permittivity_nodes(), nm = s.radius_nodes();
   for (std::size_t iv = 0; iv < s.speeds.size(); ++iv)
     for (std::size_t i1 = 0; i1 < nd; ++i1)
       for (std::size_t i2 = i1; i2 < nd; ++i2)
         for (std::size_t c1 = 0; c1 < nc; ++c1)
           for (std::size_t c2 = i1 == i2 ? c1 : 0; c2 < nc; ++c2)
-            for (std::size_t ik = 0; ik < nk; ++ik) {
-              // keyed by (speed, sizes) alone: every charge and permittivity sees the same impact parameters
-              CounterRng rng(s.seed, kOffsetStream, (iv * nd + i1) * nd + i2);
-              for (int k = 0; k < s.impacts; ++k)
-                out.push_back({iv, i1, i2, k, s.max_offset * std::sqrt(rng.uniform()), c1, c2, ik});
-            }
+            for (std::size_t ik = 0; ik < nk; ++ik)
+              for (std::size_t m1 = 0; m1 < nm; ++m1)
+                for (std::size_t m2 = 0; m2 < nm; ++m2) {
+                  if (!canonical_node(i1, i2, c1, c2, m1, m2)) continue;
+                  // keyed by (speed, sizes) alone: every charge, permittivity and radius sees the same offsets
+                  CounterRng rng(s.seed, kOffsetStream, (iv * nd + i1) * nd + i2);
+                  for (int k = 0; k < s.impacts; ++k)
+                    out.push_back({iv, i1, i2, k, s.max_offset * std::sqrt(rng.uniform()), c1, c2, ik, m1, m2});
+                }
   return out;
 }
 
@@ -163,20 +189,25 @@ Estimate outcomes_estimate(const ImpactCase& base, const OutcomeGridSpec& s, int
                                    std::string(g.impacts.dotted())};
   if (!s.charges.empty()) keys.emplace_back(g.charges.dotted());
   if (!s.permittivities.empty()) keys.emplace_back(g.permittivities.dotted());
+  if (!s.primary_radii.empty()) keys.emplace_back(g.primary_radii.dotted());
   Estimate e;
-  const std::size_t nd = s.sizes(), nc = s.charge_nodes();
+  const std::size_t nd = s.sizes(), nc = s.charge_nodes(), nm = s.radius_nodes();
   double memory = 0.0;
   for (std::size_t i1 = 0; i1 < nd; ++i1)
     for (std::size_t i2 = i1; i2 < nd; ++i2)
-      for (std::size_t iv = 0; iv < s.speeds.size(); ++iv) {
-        const OutcomeImpact worst{iv, i1, i2, 0, s.max_offset};  // fastest launch, widest approach
-        const ImpactCase c = outcome_case(base, s, worst);
-        const double particles = s.aggregates() ? s.primaries[i1] + s.primaries[i2] : 2.0;
-        // the charge and permittivity nodes of this size pair (outcome_impacts)
-        const double copies = static_cast<double>((i1 == i2 ? nc * (nc + 1) / 2 : nc * nc) * s.permittivity_nodes());
-        add_to(e.steps, particles * run_steps_bound(c, outcome_launch_speed(s, worst)) * s.impacts * copies, keys);
-        if (iv == 0) memory = std::max(memory, collide_estimate(c).memory.value);
-      }
+      for (std::size_t m1 = 0; m1 < nm; ++m1)
+        for (std::size_t m2 = i1 == i2 ? m1 : 0; m2 < nm; ++m2)
+          for (std::size_t iv = 0; iv < s.speeds.size(); ++iv) {
+            const OutcomeImpact worst{iv, i1, i2, 0, s.max_offset, 0, 0, 0, m1, m2};  // fastest launch, widest approach
+            const ImpactCase c = outcome_case(base, s, worst);
+            const double particles =
+                s.aggregates() ? s.partner_primaries(i1, m1) + s.partner_primaries(i2, m2) : 2.0;
+            // the charge and permittivity nodes of this pair of partners (outcome_impacts)
+            const bool same = i1 == i2 && m1 == m2;
+            const double copies = static_cast<double>((same ? nc * (nc + 1) / 2 : nc * nc) * s.permittivity_nodes());
+            add_to(e.steps, particles * run_steps_bound(c, outcome_launch_speed(s, worst)) * s.impacts * copies, keys);
+            if (iv == 0) memory = std::max(memory, collide_estimate(c).memory.value);
+          }
   add_to(e.steps, 0.0, {std::string(impact_keys().time.after_contact.dotted())});
   add_to(e.memory, std::max(1, threads) * memory, keys);
   const double nodes = static_cast<double>(s.nodes());
@@ -258,9 +289,10 @@ OutcomeGridResult tabulate_outcomes(const OutcomeGridSpec& spec, const std::vect
   const auto jobs = outcome_impacts(spec);
   for (std::size_t k = 0; k < jobs.size() && k < outcomes.size(); ++k) {
     const OutcomeImpact& j = jobs[k];
-    const std::size_t mirror = j.i1 == j.i2 && j.c1 == j.c2 ? 1 : 2;
+    const std::size_t mirror = j.i1 == j.i2 && j.c1 == j.c2 && j.m1 == j.m2 ? 1 : 2;
     for (std::size_t m = 0; m < mirror; ++m) {
-      const std::size_t i = m == 0 ? r.index(j.iv, j.i1, j.i2, j.c1, j.c2, j.ik) : r.index(j.iv, j.i2, j.i1, j.c2, j.c1, j.ik);
+      const std::size_t i = m == 0 ? r.index(j.iv, j.i1, j.i2, j.c1, j.c2, j.ik, j.m1, j.m2)
+                                   : r.index(j.iv, j.i2, j.i1, j.c2, j.c1, j.ik, j.m2, j.m1);
       ++r.impacts[i];
       ++(outcomes[k] == PairOutcome::stick ? r.sticks : outcomes[k] == PairOutcome::bounce ? r.bounces : r.breaks)[i];
       if (spec.aggregates() && outcomes[k] == PairOutcome::brk) {

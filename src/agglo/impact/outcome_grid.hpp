@@ -18,7 +18,8 @@
 // of both partners. Nodes (speed, d_1, d_2, sigma_1, sigma_2, kappa_p); symmetric: (d_1, d_2, sigma_1,
 // sigma_2) copies (d_2, d_1, sigma_2, sigma_1), so an equal-size pair runs sigma_1 <= sigma_2 only. Absent,
 // the partners keep the case's charges and permittivities and the table has no such axes.
-// Aggregate partners (outcome_grid.primaries instead of diameters): impact/outcome_aggregates.hpp; their
+// Aggregate partners (outcome_grid.primaries instead of diameters, optionally over outcome_grid.primary_radii):
+// impact/outcome_aggregates.hpp; their
 // tables also carry, per node, the mean number of fragments and the mean mass fraction of the largest
 // fragment over the impacts that broke (NaN where none broke), and the fragment mass distribution: per bin
 // b of the mass fraction f = m / M (kFragmentFractionEdges: e_b <= f < e_(b+1), the last bin also f = 1),
@@ -45,25 +46,36 @@ std::size_t fragment_fraction_bin(double f);
 
 struct OutcomeGridSpec {
   std::vector<double> speeds, diameters;  // [m/s], [m] (aggregates: volume-equivalent, from primaries)
-  std::vector<int> primaries;             // aggregate partners' primary counts; empty: sphere partners
+  std::vector<int> primaries;             // aggregate partners' primary counts (at primary_radii[0]); empty: spheres
   std::vector<double> charges;            // sigma [C/m^2] of each partner; empty: the case's charges
   std::vector<double> permittivities;     // kappa_p of both partners; empty: the case's
-  double primary_radius = 0.0;            // a [m] of the aggregate partners
+  // Primary radii a [m] of the aggregate partners (outcome_grid.primary_radii); empty: one radius,
+  // primary_radius, and no primary-radius axes. The size axis is common: d_k = 2 a_0 N_k^(1/3) with
+  // a_0 = primary_radii[0]; a partner of radius a_m at d_k has N_k (a_0 / a_m)^3 primaries (whole, >= 2).
+  std::vector<double> primary_radii;
+  double primary_radius = 0.0;            // a [m] of the aggregate partners without primary_radii
   int impacts = 8;
   double max_offset = 0.5;
   std::uint64_t seed = 1;
   bool aggregates() const { return !primaries.empty(); }
   std::size_t sizes() const { return aggregates() ? primaries.size() : diameters.size(); }
-  // Nodes along the charge and permittivity axes (1 when absent).
+  // Nodes along the charge, permittivity and primary-radius axes (1 when absent).
   std::size_t charge_nodes() const { return charges.empty() ? 1 : charges.size(); }
   std::size_t permittivity_nodes() const { return permittivities.empty() ? 1 : permittivities.size(); }
-  // Row-major node index over (speed, size_1, size_2, charge_1, charge_2, permittivity).
+  std::size_t radius_nodes() const { return primary_radii.empty() ? 1 : primary_radii.size(); }
+  // Primary radius [m] of a partner at radius node m, and its primary count at size node i.
+  double partner_radius(std::size_t m) const { return primary_radii.empty() ? primary_radius : primary_radii[m]; }
+  int partner_primaries(std::size_t i, std::size_t m) const;
+  // Row-major node index over (speed, size_1, size_2, charge_1, charge_2, permittivity, radius_1, radius_2).
   std::size_t node(std::size_t iv, std::size_t i1, std::size_t i2, std::size_t c1 = 0, std::size_t c2 = 0,
-                   std::size_t ik = 0) const {
-    const std::size_t nd = sizes(), nc = charge_nodes();
-    return ((((iv * nd + i1) * nd + i2) * nc + c1) * nc + c2) * permittivity_nodes() + ik;
+                   std::size_t ik = 0, std::size_t m1 = 0, std::size_t m2 = 0) const {
+    const std::size_t nd = sizes(), nc = charge_nodes(), nm = radius_nodes();
+    return ((((((iv * nd + i1) * nd + i2) * nc + c1) * nc + c2) * permittivity_nodes() + ik) * nm + m1) * nm + m2;
   }
-  std::size_t nodes() const { return speeds.size() * sizes() * sizes() * charge_nodes() * charge_nodes() * permittivity_nodes(); }
+  std::size_t nodes() const {
+    return speeds.size() * sizes() * sizes() * charge_nodes() * charge_nodes() * permittivity_nodes() *
+           radius_nodes() * radius_nodes();
+  }
 };
 
 // Reads [outcome_grid] (ConfigError naming the key: axes not strictly increasing, more than 1e6 impacts,
@@ -74,18 +86,19 @@ OutcomeGridSpec parse_outcome_grid(const ConfigSection& root);
 // (each node's step is T0 / time.steps_per_period of its own pair).
 void check_sphere_sphere(const ConfigSection& root, const ImpactCase& c);
 
-// One impact of the grid: node (iv, i1, i2, c1, c2, ik) with i1 <= i2 (and c1 <= c2 when i1 = i2),
-// sample k, b / (r_1 + r_2).
+// One impact of the grid: node (iv, i1, i2, c1, c2, ik, m1, m2) with i1 <= i2 (and (c1, m1) <= (c2, m2),
+// lexicographically, when i1 = i2), sample k, b / (r_1 + r_2).
 struct OutcomeImpact {
   std::size_t iv = 0, i1 = 0, i2 = 0;
   int sample = 0;
   double b_fraction = 0.0;
   std::size_t c1 = 0, c2 = 0, ik = 0;  // charge of partner 1, of partner 2, permittivity (0 when absent)
+  std::size_t m1 = 0, m2 = 0;          // primary radius of partner 1, of partner 2 (0 when absent)
   bool operator==(const OutcomeImpact&) const = default;
 };
-// Every impact, node by node (speed outermost, then sizes, charges, permittivity) then sample; fixed by
-// the spec alone. The impact parameters are drawn per (speed, size pair, sample): every charge and
-// permittivity node of a size pair sees the same ones (common random numbers).
+// Every impact, node by node (speed outermost, then sizes, charges, permittivity, primary radii) then sample;
+// fixed by the spec alone. The impact parameters are drawn per (speed, size pair, sample): every charge,
+// permittivity and primary-radius node of a size pair sees the same ones (common random numbers).
 std::vector<OutcomeImpact> outcome_impacts(const OutcomeGridSpec& s);
 std::size_t outcome_impacts_count(const OutcomeGridSpec& s);  // outcome_impacts(s).size()
 // The case of one impact (radii, offset, charges and permittivity) and its launch speed [m/s].
@@ -109,8 +122,8 @@ struct WilsonInterval {
 };
 WilsonInterval wilson_interval(std::int64_t k, std::int64_t n);
 
-// Counts per node over the full grid (speed, diameter_1, diameter_2[, charge_1, charge_2][, permittivity]),
-// row-major (OutcomeGridSpec::node), mirrored.
+// Counts per node over the full grid (speed, diameter_1, diameter_2[, charge_1, charge_2][, permittivity]
+// [, primary_radius_1, primary_radius_2]), row-major (OutcomeGridSpec::node), mirrored.
 struct OutcomeGridResult {
   OutcomeGridSpec spec;
   std::vector<std::int64_t> sticks, bounces, breaks, impacts;
@@ -122,8 +135,8 @@ struct OutcomeGridResult {
   // node-major with the kFragmentFractionEdges bins innermost; NaN where none broke.
   std::vector<double> fragment_number, fragment_mass;
   std::size_t index(std::size_t iv, std::size_t i1, std::size_t i2, std::size_t c1 = 0, std::size_t c2 = 0,
-                    std::size_t ik = 0) const {
-    return spec.node(iv, i1, i2, c1, c2, ik);
+                    std::size_t ik = 0, std::size_t m1 = 0, std::size_t m2 = 0) const {
+    return spec.node(iv, i1, i2, c1, c2, ik, m1, m2);
   }
 };
 // `outcomes[k]` is the outcome of impact k of outcome_impacts(spec); for aggregates `fragments[k]` and

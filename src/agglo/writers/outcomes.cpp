@@ -40,6 +40,10 @@ io::Table grid_columns(const OutcomeGridResult& r) {
     rows.emplace_back(ax[ac::kCharge2Axis], g.charges.size());
   }
   if (!g.permittivities.empty()) rows.emplace_back(ax[ac::kPermittivityAxis], g.permittivities.size());
+  if (!g.primary_radii.empty()) {
+    rows.emplace_back(ax[ac::kPrimaryRadius1Axis], g.primary_radii.size());
+    rows.emplace_back(ax[ac::kPrimaryRadius2Axis], g.primary_radii.size());
+  }
   io::Table t("outcomes.csv", rows, "{:.8g}");
   t.real(ax[0], ac::kOutcomeAxisUnits[0], ac::kOutcomeAxisMeanings[0], g.speeds).over({ax[0]});
   const bool agg = g.aggregates();
@@ -57,6 +61,9 @@ io::Table grid_columns(const OutcomeGridResult& r) {
     const auto& values = k == ac::kPermittivityAxis ? g.permittivities : g.charges;
     if (!values.empty()) t.real(ax[k], ac::kOutcomeAxisUnits[k], ac::kOutcomeAxisMeanings[k], values).over({ax[k]});
   }
+  for (std::size_t k = ac::kPrimaryRadius1Axis; k <= ac::kPrimaryRadius2Axis; ++k)
+    if (!g.primary_radii.empty())
+      t.real(ax[k], ac::kOutcomeAxisUnits[k], ac::kOutcomeAxisMeanings[k], g.primary_radii).over({ax[k]});
   return t;
 }
 

@@ -6,7 +6,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "agglo/acoustics/outcome_table.hpp"
 #include "agglo/impact/outcome_aggregates.hpp"
+#include "agglo/impact/outcome_fractal_law.hpp"
 #include "agglo/impact/outcome_grid.hpp"
 #include "agglo/run/commands.hpp"
 #include "agglo/run/ensemble.hpp"
@@ -40,16 +42,21 @@ std::string outcome_job_key(const impact::OutcomeGridSpec& g, const impact::Outc
   std::string extra;
   if (!g.charges.empty()) extra += fmt::format(" sigma1={} sigma2={}", g.charges[j.c1], g.charges[j.c2]);
   if (!g.permittivities.empty()) extra += fmt::format(" kappa={}", g.permittivities[j.ik]);
+  if (!g.primary_radii.empty()) extra += fmt::format(" a1={} a2={}", g.primary_radii[j.m1], g.primary_radii[j.m2]);
   if (g.aggregates())
-    return fmt::format("v_n={} n1={} n2={}{} sample={} b={}", g.speeds[j.iv], g.primaries[j.i1], g.primaries[j.i2],
-                       extra, j.sample, j.b_fraction);
+    return fmt::format("v_n={} n1={} n2={}{} sample={} b={}", g.speeds[j.iv], g.partner_primaries(j.i1, j.m1),
+                       g.partner_primaries(j.i2, j.m2), extra, j.sample, j.b_fraction);
   return fmt::format("v_n={} d1={} d2={}{} sample={} b={}", g.speeds[j.iv], g.diameters[j.i1], g.diameters[j.i2],
                      extra, j.sample, j.b_fraction);
 }
 
-// The charge and permittivity axes in the provenance ("" without them).
+// The charge, permittivity and primary-radius axes in the provenance ("" without them).
 std::string charge_provenance(const impact::OutcomeGridSpec& g) {
   std::string r;
+  if (!g.primary_radii.empty())
+    r += fmt::format("; primary radii [{}] m of each partner (axes primary_radius_1, primary_radius_2), the counts "
+                     "N (a_0 / a)^3 at the common volume-equivalent diameters 2 a_0 N^(1/3), a_0 = {:g} m",
+                     fmt::join(g.primary_radii, ", "), g.primary_radii[0]);
   if (!g.charges.empty())
     r += fmt::format("; partner charges sigma pi d^2 for sigma in [{}] C/m^2 (d volume-equivalent), with the "
                      "case's electrostatics",
@@ -102,6 +109,25 @@ std::string provenance(const OutcomesCase& c, std::size_t impacts) {
                      impacts, c.dem.name, c.grid.max_offset, c.grid.seed, charge_provenance(c.grid));
 }
 
+// results.nc: the table with its provenance and, for the DSMC, the fractal law of aggregate structures
+// (impact/outcome_fractal_law.hpp) and the launch gap of charged sphere tables (acoustics/outcome_table.hpp).
+io::Dataset table_dataset(const OutcomesCase& c, const impact::OutcomeGridResult& table, const std::string& prov) {
+  io::Dataset d = writers::outcomes_dataset(table, prov);
+  namespace ac = acoustics;
+  if (c.grid.aggregates()) {
+    const impact::TableFractalLaw law = impact::table_fractal_law(c.dem, c.grid);
+    if (law.known) {
+      d.attributes[ac::kFractalDimensionAttribute] = law.fractal_dimension;
+      d.attributes[ac::kFractalPrefactorAttribute] = law.fractal_prefactor;
+      d.attributes[ac::kFractalLawAttribute] = law.how;
+    }
+  } else if (!c.grid.charges.empty()) {  // the target is the smaller sphere: gap g r_1 (outcome_grid.hpp)
+    d.attributes[ac::kLaunchGapAttribute] = c.dem.projectile.gap_radii;
+    d.attributes[ac::kMediumPermittivityAttribute] = c.dem.medium_permittivity;
+  }
+  return d;
+}
+
 class Outcomes final : public Command {
  public:
   std::string_view name() const override { return "outcomes"; }
@@ -143,7 +169,7 @@ class Outcomes final : public Command {
     const auto table = impact::tabulate_outcomes(c.grid, outcomes, fragments, largest, fractions);
     if (ctx.formats.csv) writers::write_outcomes(out, table);
     CommandResult r;
-    r.data = std::make_shared<const io::Dataset>(writers::outcomes_dataset(table, provenance(c, impacts.size())));
+    r.data = std::make_shared<const io::Dataset>(table_dataset(c, table, provenance(c, impacts.size())));
     std::int64_t sticks = 0, breaks = 0;
     for (const auto& o : outcomes) {
       sticks += o == impact::PairOutcome::stick;
