@@ -61,6 +61,19 @@ Results& reference_results() {
 es::SolverOptions bench_options(const std::string& far_field) {
   es::SolverOptions o;
   o.far_field = far_field == "dense" ? "dense" : "fmm";
+  if (far_field.starts_with("fmm_pc_")) o.preconditioner = far_field.substr(7);
+  // "fmm_acc<target>[_tol<GMRES tolerance>][_L<fixed degree>]": the accuracy-cost rows
+  if (far_field.starts_with("fmm_acc")) {
+    std::size_t at = 4;
+    while (at < far_field.size()) {
+      const std::size_t end = std::min(far_field.find('_', at), far_field.size());
+      const std::string tok = far_field.substr(at, end - at);
+      if (tok.starts_with("acc")) o.target_accuracy = std::stod(tok.substr(3));
+      if (tok.starts_with("tol")) o.tolerance = std::stod(tok.substr(3));
+      if (tok.starts_with("L")) o.max_degree = std::stoi(tok.substr(1));
+      at = end + 1;
+    }
+  }
   if (far_field == "reference") o.target_accuracy = kReferenceTarget;
   if (far_field == "reference_check") o.target_accuracy = kReferenceCheckTarget;
   if (far_field == "bem") {
@@ -110,6 +123,10 @@ void solve(benchmark::State& st, const std::string& far_field, double kappa) {
     st.counters["near_pairs"] = sol.stats.extra["near_pairs"].get<double>();
     st.counters["m2l"] = sol.stats.extra["m2l"].get<double>();
     st.counters["order"] = sol.stats.extra["far_field_order"].get<double>();
+  }
+  if (sol.stats.extra.contains("preconditioner_inner_iterations")) {
+    st.counters["inner_iterations"] = sol.stats.extra["preconditioner_inner_iterations"].get<double>();
+    st.counters["matched_pairs"] = sol.stats.extra["matched_pairs"].get<double>();
   }
   if (far_field == "dense") dense_results()[{n, kappa}] = sol;
   if (far_field == "reference") reference_results()[{n, kappa}] = sol;
@@ -165,6 +182,66 @@ BENCHMARK_CAPTURE(solve, dense_k15, std::string("dense"), 15.0)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, fmm_k15, std::string("fmm"), 15.0)
     ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
+    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+
+BENCHMARK_CAPTURE(solve, fmm_acc1.5e-4_k2.5, std::string("fmm_acc1.5e-4"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc1.5e-4_k15, std::string("fmm_acc1.5e-4"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc2e-4_L47_k2.5, std::string("fmm_acc2e-4_L47"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc2e-4_L47_k15, std::string("fmm_acc2e-4_L47"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc5e-4_L47_k2.5, std::string("fmm_acc5e-4_L47"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc5e-4_L47_k15, std::string("fmm_acc5e-4_L47"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc5e-4_tol5e-6_L47_k2.5, std::string("fmm_acc5e-4_tol5e-6_L47"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc5e-4_tol5e-6_L47_k15, std::string("fmm_acc5e-4_tol5e-6_L47"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc1e-3_tol1e-5_L47_k2.5, std::string("fmm_acc1e-3_tol1e-5_L47"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc1e-3_tol1e-5_L47_k15, std::string("fmm_acc1e-3_tol1e-5_L47"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc2e-4_k2.5, std::string("fmm_acc2e-4"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc2e-4_k15, std::string("fmm_acc2e-4"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc2e-4_tol2e-6_k2.5, std::string("fmm_acc2e-4_tol2e-6"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc2e-4_tol2e-6_k15, std::string("fmm_acc2e-4_tol2e-6"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc5e-4_k2.5, std::string("fmm_acc5e-4"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc5e-4_k15, std::string("fmm_acc5e-4"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc5e-4_tol5e-6_k2.5, std::string("fmm_acc5e-4_tol5e-6"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc5e-4_tol5e-6_k15, std::string("fmm_acc5e-4_tol5e-6"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc1e-3_tol1e-5_k2.5, std::string("fmm_acc1e-3_tol1e-5"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_acc1e-3_tol1e-5_k15, std::string("fmm_acc1e-3_tol1e-5"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+
+BENCHMARK_CAPTURE(solve, fmm_pc_coarse_k2.5, std::string("fmm_pc_coarse"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
+    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_pc_coarse_k15, std::string("fmm_pc_coarse"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
+    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_pc_pair_k2.5, std::string("fmm_pc_pair"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
+    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_pc_pair_k15, std::string("fmm_pc_pair"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
+    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_pc_contact_k2.5, std::string("fmm_pc_contact"), 2.5)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
+    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(solve, fmm_pc_contact_k15, std::string("fmm_pc_contact"), 15.0)
+    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 
 BENCHMARK_CAPTURE(solve, bem_k2.5, std::string("bem"), 2.5)
