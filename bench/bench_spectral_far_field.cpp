@@ -12,6 +12,9 @@
 // (force_vs_reference), and "reference_check" (target kReferenceCheckTarget) the same against it: how far
 // the reference itself is from converged. "bem": the seed paper's method on the same aggregate (BEM,
 // FMM matvec, kBemPatches patches per sphere, GMRES to 1e-2 within 1000 iterations), against the reference as well.
+// "fmm_pc_<name>": the fast far field with a right preconditioner (SolverOptions::preconditioner, the
+// measuring tools of docs/electrostatics.md "Sixth session"); "fmm_acc<target>[_tol<GMRES tolerance>]
+// [_L<fixed degree>]": the accuracy-cost rows at other settings, against the reference.
 // bench/spectral_far_field.sh runs it and prints the per-solve and per-product ratios.
 #include <benchmark/benchmark.h>
 
@@ -19,6 +22,8 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "agglo/core/constants.hpp"
 #include "agglo/electrostatics/config.hpp"
@@ -184,65 +189,27 @@ BENCHMARK_CAPTURE(solve, fmm_k15, std::string("fmm"), 15.0)
     ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 
-BENCHMARK_CAPTURE(solve, fmm_acc1.5e-4_k2.5, std::string("fmm_acc1.5e-4"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc1.5e-4_k15, std::string("fmm_acc1.5e-4"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc2e-4_L47_k2.5, std::string("fmm_acc2e-4_L47"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc2e-4_L47_k15, std::string("fmm_acc2e-4_L47"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc5e-4_L47_k2.5, std::string("fmm_acc5e-4_L47"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc5e-4_L47_k15, std::string("fmm_acc5e-4_L47"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc5e-4_tol5e-6_L47_k2.5, std::string("fmm_acc5e-4_tol5e-6_L47"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc5e-4_tol5e-6_L47_k15, std::string("fmm_acc5e-4_tol5e-6_L47"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc1e-3_tol1e-5_L47_k2.5, std::string("fmm_acc1e-3_tol1e-5_L47"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc1e-3_tol1e-5_L47_k15, std::string("fmm_acc1e-3_tol1e-5_L47"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc2e-4_k2.5, std::string("fmm_acc2e-4"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc2e-4_k15, std::string("fmm_acc2e-4"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc2e-4_tol2e-6_k2.5, std::string("fmm_acc2e-4_tol2e-6"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc2e-4_tol2e-6_k15, std::string("fmm_acc2e-4_tol2e-6"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc5e-4_k2.5, std::string("fmm_acc5e-4"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc5e-4_k15, std::string("fmm_acc5e-4"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc5e-4_tol5e-6_k2.5, std::string("fmm_acc5e-4_tol5e-6"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc5e-4_tol5e-6_k15, std::string("fmm_acc5e-4_tol5e-6"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc1e-3_tol1e-5_k2.5, std::string("fmm_acc1e-3_tol1e-5"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_acc1e-3_tol1e-5_k15, std::string("fmm_acc1e-3_tol1e-5"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-
-BENCHMARK_CAPTURE(solve, fmm_pc_coarse_k2.5, std::string("fmm_pc_coarse"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
-    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_pc_coarse_k15, std::string("fmm_pc_coarse"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
-    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_pc_pair_k2.5, std::string("fmm_pc_pair"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
-    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_pc_pair_k15, std::string("fmm_pc_pair"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
-    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_pc_contact_k2.5, std::string("fmm_pc_contact"), 2.5)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
-    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(solve, fmm_pc_contact_k15, std::string("fmm_pc_contact"), 15.0)
-    ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(1000)
-    ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+// Issue 25, sixth session: the right preconditioners (measuring tools, SolverOptions::preconditioner) and
+// the accuracy-cost rows ("fmm_acc<target>[_tol<GMRES tolerance>][_L<fixed degree>]", bench_options),
+// both kappa_p, after the references and the default solves that they are compared with.
+const bool kSixthSessionRows = [] {
+  const char* const preconditioners[] = {"fmm_pc_coarse", "fmm_pc_pair", "fmm_pc_contact"};
+  const char* const accuracies[] = {"fmm_acc1.5e-4",           "fmm_acc2e-4",          "fmm_acc2e-4_tol2e-6",
+                                    "fmm_acc2e-4_L47",         "fmm_acc5e-4",          "fmm_acc5e-4_tol5e-6",
+                                    "fmm_acc5e-4_L47",         "fmm_acc5e-4_tol5e-6_L47", "fmm_acc1e-3_tol1e-5",
+                                    "fmm_acc1e-3_tol1e-5_L47"};
+  auto add = [](const std::string& row, const std::vector<int>& ns) {
+    for (const auto& [k, kappa] : {std::pair{"2.5", 2.5}, std::pair{"15", 15.0}}) {
+      auto* b = benchmark::RegisterBenchmark(("solve/" + row + "_k" + k).c_str(),
+                                             [row, kappa](benchmark::State& st) { solve(st, row, kappa); });
+      b->ArgName("N")->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+      for (int n : ns) b->Arg(n);
+    }
+  };
+  for (const char* row : preconditioners) add(row, {10, 100, 200, 1000});
+  for (const char* row : accuracies) add(row, {10, 100, 1000});
+  return true;
+}();
 
 BENCHMARK_CAPTURE(solve, bem_k2.5, std::string("bem"), 2.5)
     ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);

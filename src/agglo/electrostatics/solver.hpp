@@ -89,7 +89,7 @@ inline constexpr std::string_view kDefaultSolver = "spectral";
 // octree of sphere expansions ("fmm"). The key's allowed values are these names.
 inline constexpr std::array<std::string_view, 2> kFarFieldNames{"dense", "fmm"};
 // Right preconditioner P of the spectral solver's GMRES (A P^-1 u = b, x = P^-1 u: the residual is the
-// true one; docs/electrostatics.md, "Preconditioner"): "none"; "coarse", the two-level block of the
+// true one; docs/electrostatics.md, "Sixth session"): "none"; "coarse", the two-level block of the
 // low degrees (the system restricted to degrees <= 8, solved by an inner GMRES, identity above);
 // "pair", block Jacobi over a matching of the close pairs (each pair's two-sphere system solved by an
 // inner GMRES); "contact", the system of all close pairs at once (the contact network, inner GMRES).

@@ -48,10 +48,10 @@ constexpr double kParallelPairWork = 1e6;
 constexpr std::size_t kSpectralParallelLength = std::size_t(1) << 18;
 // choose_degree: pairs of spheres from this many spheres on are visited in parallel.
 constexpr int kParallelDegreeSpheres = 200;
-// The preconditioner's inner GMRES solves (coarse system, pair blocks): relative residual.
+// The preconditioner's inner GMRES solves (coarse system, pair blocks, contact network): relative residual.
 constexpr double kInnerTolerance = 1e-10;
 // preconditioner = "coarse": the degrees of the coarse system (measured at N = 100, kappa_p = 15: 16, 15,
-// 14, 11 GMRES iterations with 1, 2, 4, 8 against 17 unpreconditioned; docs/electrostatics.md).
+// 14, 11 GMRES iterations with 1, 2, 4, 8 against 17 unpreconditioned; docs/electrostatics.md, "Sixth session").
 constexpr int kCoarseDegree = 8;
 
 // Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
@@ -112,6 +112,7 @@ class SpectralSolver final : public Solver {
   void contact_inverse(const double* u, double* z);
   void add_contact_products(const double* x, double* alpha) const;
   void set_gamma(const Problem& p);
+  void add_gamma_times(const double* x, const double* a, double* y) const;
   std::size_t block_end(std::size_t b0, double& work) const;
   std::size_t slot_size(const Pair& pr) const;
   int choose_degree(const Problem& p, double& est_err);
@@ -396,16 +397,19 @@ void SpectralSolver::set_gamma(const Problem& p) {
 
 // y = x + gamma M x (sphere by sphere, degree by degree).
 void SpectralSolver::apply_system(std::span<const double> xs, std::span<double> ys) {
-  const double* x = xs.data();
-  double* y = ys.data();
+  matvec_M(xs.data(), alpha_.data());
+  add_gamma_times(xs.data(), alpha_.data(), ys.data());
+}
+
+// y = x + gamma a (a: N ncoef(L) numbers).
+void SpectralSolver::add_gamma_times(const double* x, const double* a, double* y) const {
   const int L = L_;
-  matvec_M(x, alpha_.data());
   // sphere by sphere: the same bits at any thread count
 #pragma omp parallel for schedule(static) if (std::size_t(N_) * nc_ >= kSpectralParallelLength)
   for (int i = 0; i < N_; ++i) {
     const double* g = &gamma_[i * (L + 1)];
     const double* xi = x + std::size_t(i) * nc_;
-    const double* ai = &alpha_[std::size_t(i) * nc_];
+    const double* ai = a + std::size_t(i) * nc_;
     double* yi = y + std::size_t(i) * nc_;
     for (int l = 0; l <= L; ++l)
       for (int m = -l; m <= l; ++m) yi[sh::idx(l, m)] = xi[sh::idx(l, m)] + g[l] * ai[sh::idx(l, m)];
@@ -636,9 +640,7 @@ void SpectralSolver::precondition_forward(const double* x, double* u) {
   if (pc_contact_) {
     std::vector<double> al(n, 0.0);
     add_contact_products(x, al.data());
-    for (int i = 0; i < N_; ++i)
-      for (int l = 0; l <= L_; ++l)
-        for (int m = -l; m <= l; ++m) u[i * nc + sh::idx(l, m)] += gamma_[i * (L_ + 1) + l] * al[i * nc + sh::idx(l, m)];
+    add_gamma_times(x, al.data(), u);
   }
   std::vector<double> s(4 * nc), o(2 * nc);
   for (std::size_t q : matched_) {
@@ -696,15 +698,12 @@ void SpectralSolver::add_contact_products(const double* x, double* alpha) const 
 // z = (I + gamma M_contact)^-1 u (inner GMRES to kInnerTolerance): every close pair at once, the
 // contact network's chains included.
 void SpectralSolver::contact_inverse(const double* u, double* z) {
-  const std::size_t n = std::size_t(N_) * nc_, nc = std::size_t(nc_);
+  const std::size_t n = std::size_t(N_) * nc_;
   std::vector<double> b(u, u + n), x(u, u + n), al(n);
   auto apply = [&](std::span<const double> xs, std::span<double> ys) {
     std::fill(al.begin(), al.end(), 0.0);
     add_contact_products(xs.data(), al.data());
-    for (int i = 0; i < N_; ++i)
-      for (int l = 0; l <= L_; ++l)
-        for (int m = -l; m <= l; ++m)
-          ys[i * nc + sh::idx(l, m)] = xs[i * nc + sh::idx(l, m)] + gamma_[i * (L_ + 1) + l] * al[i * nc + sh::idx(l, m)];
+    add_gamma_times(xs.data(), al.data(), ys.data());
   };
   const GmresResult r = gmres(apply, b, x, {}, GmresOptions{kInnerTolerance, 1000, 200, true});
   inner_iterations_ += r.iterations;
