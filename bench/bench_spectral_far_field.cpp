@@ -193,7 +193,7 @@ BENCHMARK_CAPTURE(solve, fmm_k15, std::string("fmm"), 15.0)
 // the accuracy-cost rows ("fmm_acc<target>[_tol<GMRES tolerance>][_L<fixed degree>]", bench_options),
 // both kappa_p, after the references and the default solves that they are compared with.
 const bool kSixthSessionRows = [] {
-  const char* const preconditioners[] = {"fmm_pc_coarse", "fmm_pc_pair", "fmm_pc_contact"};
+  const char* const preconditioners[] = {"fmm_pc_coarse", "fmm_pc_pair", "fmm_pc_contact", "fmm_pc_contact_low"};
   const char* const accuracies[] = {"fmm_acc1.5e-4",           "fmm_acc2e-4",          "fmm_acc2e-4_tol2e-6",
                                     "fmm_acc2e-4_L47",         "fmm_acc5e-4",          "fmm_acc5e-4_tol5e-6",
                                     "fmm_acc5e-4_L47",         "fmm_acc5e-4_tol5e-6_L47", "fmm_acc1e-3_tol1e-5",

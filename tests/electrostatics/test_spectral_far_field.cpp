@@ -311,8 +311,8 @@ TEST(SpectralFarField, DISABLED_ErrorVersusOrder) {
 // Right preconditioning (SolverOptions::preconditioner) keeps the true residual as GMRES's criterion, so
 // a preconditioned solve is the same solution to within the GMRES tolerance (1e-6 here: forces within
 // 1e-5 of the unpreconditioned twin). The contact network (every close pair's system at once) takes
-// fewer iterations at kappa_p = 15; block Jacobi over a matching of the close pairs, the negative
-// control, does not (the chains of touching spheres are not in its blocks; docs/electrostatics.md).
+// fewer iterations at kappa_p = 15, and so does its cheap form "contact_low"; block Jacobi over a
+// matching of the close pairs, the negative control, does not (the chains of touching spheres are not in its blocks; docs/electrostatics.md).
 TEST(SpectralPreconditioner, ContactNetworkGivesTheSameForcesInFewerIterations) {
   const Problem p = random_cluster(30, 1.0, 15.0, 11);
   SolverOptions ro = far_field_options("fmm");
@@ -331,6 +331,8 @@ TEST(SpectralPreconditioner, ContactNetworkGivesTheSameForcesInFewerIterations) 
   EXPECT_LE(sol["contact"].stats.iterations, none - 5);
   EXPECT_LE(sol["coarse"].stats.iterations, none);
   EXPECT_GT(sol["pair"].stats.iterations, none - 5);  // negative control: the matching is not enough
+  // one Neumann step of the contact system at degrees <= 20, frame orders <= 2 (the cheap one)
+  EXPECT_LE(sol["contact_low"].stats.iterations, none - 3);
   EXPECT_GT(sol["contact"].stats.extra["preconditioner_inner_iterations"].get<long>(), 0);
 }
 
@@ -338,7 +340,7 @@ TEST(SpectralPreconditioner, ContactNetworkGivesTheSameForcesInFewerIterations) 
 // cluster re-solved warm gives the cold solve's forces, in fewer iterations than cold.
 TEST(SpectralPreconditioner, WarmStartMatchesColdSolve) {
   Problem p = random_cluster(20, 1.0, 15.0, 12);
-  for (std::string_view name : {kPreconditionerNames[1], kPreconditionerNames[3]}) {
+  for (std::string_view name : {kPreconditionerNames[1], kPreconditionerNames[3], kPreconditionerNames[4]}) {
     SolverOptions o = far_field_options("fmm");
     o.preconditioner = std::string(name);
     auto warm = make_solver(o);

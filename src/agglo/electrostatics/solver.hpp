@@ -92,9 +92,11 @@ inline constexpr std::array<std::string_view, 2> kFarFieldNames{"dense", "fmm"};
 // true one; docs/electrostatics.md, "Sixth session"): "none"; "coarse", the two-level block of the
 // low degrees (the system restricted to degrees <= 8, solved by an inner GMRES, identity above);
 // "pair", block Jacobi over a matching of the close pairs (each pair's two-sphere system solved by an
-// inner GMRES); "contact", the system of all close pairs at once (the contact network, inner GMRES).
-// Measuring tools: each costs more than it saves (the inner solves are not optimised); not a case key.
-inline constexpr std::array<std::string_view, 4> kPreconditionerNames{"none", "coarse", "pair", "contact"};
+// inner GMRES); "contact", the system of all close pairs at once (the contact network, inner GMRES):
+// measuring tools that cost more than they save. "contact_low": one Neumann step of the contact system
+// truncated to degrees <= 20 and pair-frame orders <= 2, P^-1 = I - gamma M_low (cheap; not a case key).
+inline constexpr std::array<std::string_view, 5> kPreconditionerNames{"none", "coarse", "pair", "contact",
+                                                                      "contact_low"};
 
 struct SolverOptions {
   std::string solver{kDefaultSolver};  // a registered name (registry.hpp)

@@ -53,6 +53,10 @@ constexpr double kInnerTolerance = 1e-10;
 // preconditioner = "coarse": the degrees of the coarse system (measured at N = 100, kappa_p = 15: 16, 15,
 // 14, 11 GMRES iterations with 1, 2, 4, 8 against 17 unpreconditioned; docs/electrostatics.md, "Sixth session").
 constexpr int kCoarseDegree = 8;
+// preconditioner = "contact_low": the close pairs' products truncated to degrees <= kContactLowDegree and
+// pair-frame orders <= kContactLowOrder (what carries the contact network's effect; docs/electrostatics.md).
+constexpr int kContactLowDegree = 20;
+constexpr int kContactLowOrder = 2;
 
 // Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
 // sphere's own potential outside is sum B_lm I_l^m(x - x_i). The external potential at sphere i
@@ -111,6 +115,9 @@ class SpectralSolver final : public Solver {
   void pair_block_inverse(const Pair& pr, const double* u, double* z);
   void contact_inverse(const double* u, double* z);
   void add_contact_products(const double* x, double* alpha) const;
+  void build_contact_low(const Problem& p);
+  void contact_low_products(const double* x);
+  void apply_contact_low(const double* u, double* z, double sign);
   void set_gamma(const Problem& p);
   void add_gamma_times(const double* x, const double* a, double* y) const;
   std::size_t block_end(std::size_t b0, double& work) const;
@@ -144,7 +151,9 @@ class SpectralSolver final : public Solver {
   GmresWorkspace ws_;
   // preconditioner: the low-degree system (coarse), the matched pairs (indices of pairs_), P^-1 u of the
   // last operator application, coarse vectors
-  bool pc_coarse_ = false, pc_pair_ = false, pc_contact_ = false;
+  bool pc_coarse_ = false, pc_pair_ = false, pc_contact_ = false, pc_contact_low_ = false;
+  std::vector<Pair> low_pairs_;  // contact_low: the close pairs at kContactLowDegree, kContactLowOrder
+  std::vector<double> low_alpha_;  // contact_low: M_low x, ncoef(kContactLowDegree) per sphere
   std::unique_ptr<SpectralSolver> coarse_;
   std::vector<std::size_t> matched_;
   LargeVector z_;
@@ -444,7 +453,7 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector
   // always computed (1 + iterations + 1 operator applications for a single-cycle solve); without
   // it one application per solve is saved but the reported residual is the Givens estimate.
   const GmresOptions go{tol, opt_.max_iterations, std::min(opt_.max_iterations, 60), true};
-  if (pc_coarse_ || pc_pair_ || pc_contact_) {
+  if (pc_coarse_ || pc_pair_ || pc_contact_ || pc_contact_low_) {
     // right preconditioning: A P^-1 u = rhs, beta = P^-1 u; the residual is the true one, rhs - A beta.
     // The last application (GMRES's explicit residual at its solution) leaves z_ = P^-1 u = beta.
     LargeVector u(n);
@@ -554,7 +563,7 @@ Solution SpectralSolver::solve(const Problem& p) {
                      {"max_pair_order", maxorder},
                      {"gmres_tolerance", tol},
                      {"parallel_pair_blocks", parallel_blocks_}};
-  if (pc_coarse_ || pc_pair_ || pc_contact_) {
+  if (pc_coarse_ || pc_pair_ || pc_contact_ || pc_contact_low_) {
     sol.stats.extra["preconditioner_inner_iterations"] = inner_iterations_;
     sol.stats.extra["matched_pairs"] = matched_.size();
   }
@@ -591,8 +600,11 @@ void SpectralSolver::prepare_preconditioner(const Problem& p) {
   pc_coarse_ = name == kPreconditionerNames[1];
   pc_pair_ = name == kPreconditionerNames[2];
   pc_contact_ = name == kPreconditionerNames[3];
+  pc_contact_low_ = name == kPreconditionerNames[4];
   coarse_.reset();
   matched_.clear();
+  low_pairs_.clear();
+  if (pc_contact_low_) build_contact_low(p);
   if (pc_coarse_ && L_ > kCoarseDegree) {
     SolverOptions oc = opt_;
     oc.max_degree = kCoarseDegree;
@@ -629,14 +641,16 @@ void SpectralSolver::precondition(const double* u, double* z) {
   const std::size_t n = std::size_t(N_) * nc_;
   std::copy(u, u + n, z);
   if (pc_contact_) contact_inverse(u, z);
+  if (pc_contact_low_) apply_contact_low(u, z, -1.0);
   for (std::size_t q : matched_) pair_block_inverse(pairs_[q], u, z);
   if (coarse_) coarse_inverse(u, z);
 }
 
-// u = P x for the warm start's guess.
+// u = P x for the warm start's guess (contact_low: P = (I - gamma M_low)^-1, taken as I + gamma M_low).
 void SpectralSolver::precondition_forward(const double* x, double* u) {
   const std::size_t n = std::size_t(N_) * nc_, nc = std::size_t(nc_);
   std::copy(x, x + n, u);
+  if (pc_contact_low_) apply_contact_low(x, u, 1.0);
   if (pc_contact_) {
     std::vector<double> al(n, 0.0);
     add_contact_products(x, al.data());
@@ -678,6 +692,51 @@ void SpectralSolver::coarse_inverse(const double* u, double* z) {
   inner_iterations_ += r.iterations;
   for (int i = 0; i < N_; ++i)
     for (int c = 0; c < ncc; ++c) z[i * nc + c] = pc_zc_[std::size_t(i) * ncc + c];
+}
+
+// contact_low: each close pair (degree >= kPivotDegree) again at degree kContactLowDegree and frame order
+// kContactLowOrder, with its own stored rotation blocks (small at that degree and order).
+void SpectralSolver::build_contact_low(const Problem& p) {
+  for (const Pair& pr : pairs_) {
+    if (pr.L < kPivotDegree) continue;
+    Pair q;
+    q.i = pr.i;
+    q.k = pr.k;
+    q.ui = pr.ui;
+    q.uk = pr.uk;
+    q.L = std::min(pr.L, kContactLowDegree);
+    q.M = std::min(pr.M, kContactLowOrder);
+    q.R.build(p.spheres[pr.k].center - p.spheres[pr.i].center, q.L, q.M);
+    sh::AxialTranslation::source_powers(std::min(q.L, q.M), q.ui, q.uk, q.powers);
+    low_pairs_.push_back(std::move(q));
+  }
+}
+
+// low_alpha_ = M_low x (the pairs of low_pairs_, in pair order), ncoef(kContactLowDegree) per sphere.
+void SpectralSolver::contact_low_products(const double* x) {
+  const std::size_t nc = std::size_t(nc_), nl = std::size_t(sh::ncoef(kContactLowDegree));
+  low_alpha_.assign(std::size_t(N_) * nl, 0.0);
+  std::vector<double> s(4 * nl), o(2 * nl);
+  for (const Pair& pr : low_pairs_) {
+    const int np = sh::ncoef(pr.L);
+    pair_product_at(pr, x + pr.i * nc, x + pr.k * nc, o.data(), o.data() + np, s.data());
+    for (int c = 0; c < np; ++c) {
+      low_alpha_[pr.i * nl + c] += o[c];
+      low_alpha_[pr.k * nl + c] += o[np + c];
+    }
+  }
+}
+
+// z (= u on entry) += sign gamma M_low u, degrees <= kContactLowDegree: z = (I - gamma M_low) u, one
+// Neumann step of the low contact system's inverse (sign -1), or its forward form (sign +1).
+void SpectralSolver::apply_contact_low(const double* u, double* z, double sign) {
+  contact_low_products(u);
+  const std::size_t nc = std::size_t(nc_), nl = std::size_t(sh::ncoef(kContactLowDegree));
+  const int Lc = std::min(L_, kContactLowDegree);
+  for (int i = 0; i < N_; ++i)
+    for (int l = 1; l <= Lc; ++l)
+      for (int m = -l; m <= l; ++m)
+        z[i * nc + sh::idx(l, m)] += sign * gamma_[i * (L_ + 1) + l] * low_alpha_[i * nl + sh::idx(l, m)];
 }
 
 // alpha += M_contact x: the products of the close pairs (degree >= kPivotDegree) alone, in pair order.
