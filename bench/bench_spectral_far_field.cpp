@@ -67,7 +67,8 @@ es::SolverOptions bench_options(const std::string& far_field) {
   es::SolverOptions o;
   o.far_field = far_field == "dense" ? "dense" : "fmm";
   if (far_field.starts_with("fmm_pc_")) o.preconditioner = far_field.substr(7);
-  // "fmm_acc<target>[_tol<GMRES tolerance>][_L<fixed degree>]": the accuracy-cost rows
+  // "fmm_acc<target>[_tol<GMRES tolerance>][_L<fixed degree>][_pcl]": the accuracy-cost rows (_pcl: with
+  // the contact_low preconditioner)
   if (far_field.starts_with("fmm_acc")) {
     std::size_t at = 4;
     while (at < far_field.size()) {
@@ -76,6 +77,7 @@ es::SolverOptions bench_options(const std::string& far_field) {
       if (tok.starts_with("acc")) o.target_accuracy = std::stod(tok.substr(3));
       if (tok.starts_with("tol")) o.tolerance = std::stod(tok.substr(3));
       if (tok.starts_with("L")) o.max_degree = std::stoi(tok.substr(1));
+      if (tok == "pcl") o.preconditioner = "contact_low";
       at = end + 1;
     }
   }
@@ -197,7 +199,8 @@ const bool kSixthSessionRows = [] {
   const char* const accuracies[] = {"fmm_acc1.5e-4",           "fmm_acc2e-4",          "fmm_acc2e-4_tol2e-6",
                                     "fmm_acc2e-4_L47",         "fmm_acc5e-4",          "fmm_acc5e-4_tol5e-6",
                                     "fmm_acc5e-4_L47",         "fmm_acc5e-4_tol5e-6_L47", "fmm_acc1e-3_tol1e-5",
-                                    "fmm_acc1e-3_tol1e-5_L47"};
+                                    "fmm_acc1e-3_tol1e-5_L47", "fmm_acc1e-3_tol1e-5_pcl",
+                                    "fmm_acc5e-4_tol5e-6_L47_pcl"};
   auto add = [](const std::string& row, const std::vector<int>& ns) {
     for (const auto& [k, kappa] : {std::pair{"2.5", 2.5}, std::pair{"15", 15.0}}) {
       auto* b = benchmark::RegisterBenchmark(("solve/" + row + "_k" + k).c_str(),

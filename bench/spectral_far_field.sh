@@ -16,8 +16,9 @@
 # them with ONLY, e.g. ONLY='solve/(reference|fmm|bem)_k2.5'); and the growth exponent of the solve
 # between the smallest and the largest N of each far field.
 # Issue 25, sixth session: "fmm_pc_<name>" (the right preconditioners of SolverOptions::preconditioner,
-# measuring tools: coarse, pair, contact; N = 10, 100, 200, 1000) and "fmm_acc<target>[_tol<GMRES
-# tolerance>][_L<fixed degree>]" (the accuracy-cost curve at N = 1000 against the reference; e.g.
+# coarse, pair, contact (measuring tools) and contact_low; N = 10, 100, 200, 1000) and "fmm_acc<target>[_tol<GMRES
+# tolerance>][_L<fixed degree>][_pcl]" (the accuracy-cost curve at N = 1000 against the reference, _pcl with
+# the contact_low preconditioner; e.g.
 # ONLY='solve/(reference|fmm|fmm_acc[^/]*)_k(2.5|15)' NS=1000 REPS=1).
 #   bench/spectral_far_field.sh [BUILD_DIR]     NS="100 200 400 1000", THREADS=1, REPS=3, ONLY=regex
 # ONLY selects benchmarks by name (e.g. ONLY='solve/fmm' for the fast far field alone; N = 2000 and 3000
