@@ -12,6 +12,9 @@
 // (force_vs_reference), and "reference_check" (target kReferenceCheckTarget) the same against it: how far
 // the reference itself is from converged. "bem": the seed paper's method on the same aggregate (BEM,
 // FMM matvec, kBemPatches patches per sphere, GMRES to 1e-2 within 1000 iterations), against the reference as well.
+// "fmm_pc_<name>": the fast far field with a right preconditioner (SolverOptions::preconditioner, the
+// measuring tools of docs/electrostatics.md "Sixth session"); "fmm_acc<target>[_tol<GMRES tolerance>]
+// [_L<fixed degree>]": the accuracy-cost rows at other settings, against the reference.
 // bench/spectral_far_field.sh runs it and prints the per-solve and per-product ratios.
 #include <benchmark/benchmark.h>
 
@@ -19,6 +22,8 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "agglo/core/constants.hpp"
 #include "agglo/electrostatics/config.hpp"
@@ -61,6 +66,21 @@ Results& reference_results() {
 es::SolverOptions bench_options(const std::string& far_field) {
   es::SolverOptions o;
   o.far_field = far_field == "dense" ? "dense" : "fmm";
+  if (far_field.starts_with("fmm_pc_")) o.preconditioner = far_field.substr(7);
+  // "fmm_acc<target>[_tol<GMRES tolerance>][_L<fixed degree>][_pcl]": the accuracy-cost rows (_pcl: with
+  // the contact_low preconditioner)
+  if (far_field.starts_with("fmm_acc")) {
+    std::size_t at = 4;
+    while (at < far_field.size()) {
+      const std::size_t end = std::min(far_field.find('_', at), far_field.size());
+      const std::string tok = far_field.substr(at, end - at);
+      if (tok.starts_with("acc")) o.target_accuracy = std::stod(tok.substr(3));
+      if (tok.starts_with("tol")) o.tolerance = std::stod(tok.substr(3));
+      if (tok.starts_with("L")) o.max_degree = std::stoi(tok.substr(1));
+      if (tok == "pcl") o.preconditioner = "contact_low";
+      at = end + 1;
+    }
+  }
   if (far_field == "reference") o.target_accuracy = kReferenceTarget;
   if (far_field == "reference_check") o.target_accuracy = kReferenceCheckTarget;
   if (far_field == "bem") {
@@ -110,6 +130,10 @@ void solve(benchmark::State& st, const std::string& far_field, double kappa) {
     st.counters["near_pairs"] = sol.stats.extra["near_pairs"].get<double>();
     st.counters["m2l"] = sol.stats.extra["m2l"].get<double>();
     st.counters["order"] = sol.stats.extra["far_field_order"].get<double>();
+  }
+  if (sol.stats.extra.contains("preconditioner_inner_iterations")) {
+    st.counters["inner_iterations"] = sol.stats.extra["preconditioner_inner_iterations"].get<double>();
+    st.counters["matched_pairs"] = sol.stats.extra["matched_pairs"].get<double>();
   }
   if (far_field == "dense") dense_results()[{n, kappa}] = sol;
   if (far_field == "reference") reference_results()[{n, kappa}] = sol;
@@ -166,6 +190,29 @@ BENCHMARK_CAPTURE(solve, dense_k15, std::string("dense"), 15.0)
 BENCHMARK_CAPTURE(solve, fmm_k15, std::string("fmm"), 15.0)
     ->ArgName("N")->Arg(10)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)
     ->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+
+// Issue 25, sixth session: the right preconditioners (measuring tools, SolverOptions::preconditioner) and
+// the accuracy-cost rows ("fmm_acc<target>[_tol<GMRES tolerance>][_L<fixed degree>]", bench_options),
+// both kappa_p, after the references and the default solves that they are compared with.
+const bool kSixthSessionRows = [] {
+  const char* const preconditioners[] = {"fmm_pc_coarse", "fmm_pc_pair", "fmm_pc_contact", "fmm_pc_contact_low"};
+  const char* const accuracies[] = {"fmm_acc1.5e-4",           "fmm_acc2e-4",          "fmm_acc2e-4_tol2e-6",
+                                    "fmm_acc2e-4_L47",         "fmm_acc5e-4",          "fmm_acc5e-4_tol5e-6",
+                                    "fmm_acc5e-4_L47",         "fmm_acc5e-4_tol5e-6_L47", "fmm_acc1e-3_tol1e-5",
+                                    "fmm_acc1e-3_tol1e-5_L47", "fmm_acc1e-3_tol1e-5_pcl",
+                                    "fmm_acc5e-4_tol5e-6_L47_pcl"};
+  auto add = [](const std::string& row, const std::vector<int>& ns) {
+    for (const auto& [k, kappa] : {std::pair{"2.5", 2.5}, std::pair{"15", 15.0}}) {
+      auto* b = benchmark::RegisterBenchmark(("solve/" + row + "_k" + k).c_str(),
+                                             [row, kappa](benchmark::State& st) { solve(st, row, kappa); });
+      b->ArgName("N")->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+      for (int n : ns) b->Arg(n);
+    }
+  };
+  for (const char* row : preconditioners) add(row, {10, 100, 200, 1000});
+  for (const char* row : accuracies) add(row, {10, 100, 1000});
+  return true;
+}();
 
 BENCHMARK_CAPTURE(solve, bem_k2.5, std::string("bem"), 2.5)
     ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);

@@ -15,6 +15,11 @@
 # is), "bem" (BEM+FMM, 100 patches per sphere, GMRES to 1e-2); registered for N = 100 and 1000 (select
 # them with ONLY, e.g. ONLY='solve/(reference|fmm|bem)_k2.5'); and the growth exponent of the solve
 # between the smallest and the largest N of each far field.
+# Issue 25, sixth session: "fmm_pc_<name>" (the right preconditioners of SolverOptions::preconditioner,
+# coarse, pair, contact (measuring tools) and contact_low; N = 10, 100, 200, 1000) and "fmm_acc<target>[_tol<GMRES
+# tolerance>][_L<fixed degree>][_pcl]" (the accuracy-cost curve at N = 1000 against the reference, _pcl with
+# the contact_low preconditioner; e.g.
+# ONLY='solve/(reference|fmm|fmm_acc[^/]*)_k(2.5|15)' NS=1000 REPS=1).
 #   bench/spectral_far_field.sh [BUILD_DIR]     NS="100 200 400 1000", THREADS=1, REPS=3, ONLY=regex
 # ONLY selects benchmarks by name (e.g. ONLY='solve/fmm' for the fast far field alone; N = 2000 and 3000
 # are registered for the fmm solves and products and the dense kappa_p = 2.5 solve, so that
@@ -43,14 +48,16 @@ best, counters = {}, {}
 for b in json.load(open(sys.argv[1]))["benchmarks"]:
     if b.get("run_type") != "iteration":
         continue
-    kind, ff, kap, n, k = re.match(r"(\w+)/(\w+)_k([\d.]+)/N:(\d+)/(?:products:(\d+)/)?", b["name"]).groups()
+    kind, ff, kap, n, k = re.match(r"(\w+)/([\w.-]+)_k([\d.]+)/N:(\d+)/(?:products:(\d+)/)?", b["name"]).groups()
     key = (kap, int(n), ff, kind, int(k or 0))
     best[key] = min(best.get(key, float("inf")), b["cpu_time"])
     counters[key] = b
-print(f"{'kappa':>5} {'N':>5} {'far':>15} {'solve_s':>8} {'it':>3} {'product_s':>9} {'setup_s':>8} {'near':>7} {'m2l':>6} {'F_vs_dense':>10} {'F_vs_ref':>9}")
+print(f"{'kappa':>5} {'N':>5} {'far':>22} {'solve_s':>8} {'it':>3} {'product_s':>9} {'setup_s':>8} {'near':>7} {'m2l':>6} {'F_vs_dense':>10} {'F_vs_ref':>9}")
 def opt(c, key, width):  # a counter the run has, or "-" (no dense or reference run of that N)
     return f"{c[key]:>{width}.2e}" if key in c else f"{'-':>{width}}"
 kinds = ("reference", "reference_check", "dense", "fmm_stored", "fmm", "bem")
+# then the preconditioner rows (fmm_pc_<name>) and the accuracy-cost rows (fmm_acc<target>[_tol<t>][_L<L>])
+kinds += tuple(sorted({k[2] for k in best} - set(kinds)))
 for kap, n in sorted({k[:2] for k in best}, key=lambda t: (float(t[0]), t[1])):
     row = {}
     for ff in kinds:
@@ -62,7 +69,7 @@ for kap, n in sorted({k[:2] for k in best}, key=lambda t: (float(t[0]), t[1])):
         prod = (p6 - p1) / 5
         row[ff] = (s, prod)
         near = c.get('near_pairs', n * (n - 1) // 2 if ff != "bem" else 0)
-        print(f"{kap:>5} {n:>5} {ff:>15} {s:>8.3f} {int(c['gmres_iterations']):>3} {prod:>9.4f} {p1 - prod:>8.3f} "
+        print(f"{kap:>5} {n:>5} {ff:>22} {s:>8.3f} {int(c['gmres_iterations']):>3} {prod:>9.4f} {p1 - prod:>8.3f} "
               f"{near:>7.0f} {c.get('m2l', 0):>6.0f} {opt(c, 'force_vs_dense', 10)} {opt(c, 'force_vs_reference', 9)}")
     for ref in ("dense", "fmm_stored"):
         if ref in row and "fmm" in row:

@@ -60,6 +60,7 @@ TEST(PairTable, CacheKeyCoversEverySolverSetting) {
   vary("target_accuracy", [](es::SolverOptions& o) { o.target_accuracy = 1e-5; });
   vary("max_degree_limit", [](es::SolverOptions& o) { o.max_degree_limit = 3; });
   vary("far_field", [](es::SolverOptions& o) { o.far_field = "fmm"; });
+  vary("preconditioner", [](es::SolverOptions& o) { o.preconditioner = "coarse"; });
   vary("patches_per_sphere", [](es::SolverOptions& o) { o.patches_per_sphere = 500; });
   vary("tolerance", [](es::SolverOptions& o) { o.tolerance = 1e-3; });
   vary("max_iterations", [](es::SolverOptions& o) { o.max_iterations = 150; });

@@ -88,6 +88,15 @@ inline constexpr std::string_view kDefaultSolver = "spectral";
 // re-expanded directly ("dense", the default and the reference twin) or well-separated pairs through an
 // octree of sphere expansions ("fmm"). The key's allowed values are these names.
 inline constexpr std::array<std::string_view, 2> kFarFieldNames{"dense", "fmm"};
+// Right preconditioner P of the spectral solver's GMRES (A P^-1 u = b, x = P^-1 u: the residual is the
+// true one; docs/electrostatics.md, "Sixth session"): "none"; "coarse", the two-level block of the
+// low degrees (the system restricted to degrees <= 8, solved by an inner GMRES, identity above);
+// "pair", block Jacobi over a matching of the close pairs (each pair's two-sphere system solved by an
+// inner GMRES); "contact", the system of all close pairs at once (the contact network, inner GMRES):
+// measuring tools that cost more than they save. "contact_low": one Neumann step of the contact system
+// truncated to degrees <= 20 and pair-frame orders <= 2, P^-1 = I - gamma M_low (cheap; not a case key).
+inline constexpr std::array<std::string_view, 5> kPreconditionerNames{"none", "coarse", "pair", "contact",
+                                                                      "contact_low"};
 
 struct SolverOptions {
   std::string solver{kDefaultSolver};  // a registered name (registry.hpp)
@@ -96,6 +105,7 @@ struct SolverOptions {
   double target_accuracy = 1e-4;    // relative force accuracy used to pick L
   int max_degree_limit = 80;        // hard cap on automatically chosen L
   std::string far_field{kFarFieldNames[0]};  // a name of kFarFieldNames
+  std::string preconditioner{kPreconditionerNames[0]};  // a name of kPreconditionerNames
   // bem
   int patches_per_sphere = 2000;
   double tolerance = 1e-6;          // GMRES relative residual

@@ -48,6 +48,15 @@ constexpr double kParallelPairWork = 1e6;
 constexpr std::size_t kSpectralParallelLength = std::size_t(1) << 18;
 // choose_degree: pairs of spheres from this many spheres on are visited in parallel.
 constexpr int kParallelDegreeSpheres = 200;
+// The preconditioner's inner GMRES solves (coarse system, pair blocks, contact network): relative residual.
+constexpr double kInnerTolerance = 1e-10;
+// preconditioner = "coarse": the degrees of the coarse system (measured at N = 100, kappa_p = 15: 16, 15,
+// 14, 11 GMRES iterations with 1, 2, 4, 8 against 17 unpreconditioned; docs/electrostatics.md, "Sixth session").
+constexpr int kCoarseDegree = 8;
+// preconditioner = "contact_low": the close pairs' products truncated to degrees <= kContactLowDegree and
+// pair-frame orders <= kContactLowOrder (what carries the contact network's effect; docs/electrostatics.md).
+constexpr int kContactLowDegree = 20;
+constexpr int kContactLowOrder = 2;
 
 // Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
 // sphere's own potential outside is sum B_lm I_l^m(x - x_i). The external potential at sphere i
@@ -95,6 +104,22 @@ class SpectralSolver final : public Solver {
   void add_block(std::size_t b0, std::size_t b1, double* alpha, bool parallel) const;
   long count_parallel_blocks() const;
   void pair_product(const Pair& pr, const double* beta, double* out_i, double* out_k, double* s) const;
+  void pair_product_at(const Pair& pr, const double* b_i, const double* b_k, double* out_i, double* out_k,
+                       double* s) const;
+  // Right preconditioner (SolverOptions::preconditioner): z = P^-1 u, and u = P x (the warm start's
+  // GMRES guess); the set-up after prepare().
+  void prepare_preconditioner(const Problem& p);
+  void precondition(const double* u, double* z);
+  void precondition_forward(const double* x, double* u);
+  void coarse_inverse(const double* u, double* z);
+  void pair_block_inverse(const Pair& pr, const double* u, double* z);
+  void contact_inverse(const double* u, double* z);
+  void add_contact_products(const double* x, double* alpha) const;
+  void build_contact_low(const Problem& p);
+  void contact_low_products(const double* x);
+  void apply_contact_low(const double* u, double* z, double sign);
+  void set_gamma(const Problem& p);
+  void add_gamma_times(const double* x, const double* a, double* y) const;
   std::size_t block_end(std::size_t b0, double& work) const;
   std::size_t slot_size(const Pair& pr) const;
   int choose_degree(const Problem& p, double& est_err);
@@ -124,6 +149,16 @@ class SpectralSolver final : public Solver {
   bool alpha_current_ = false;
   Problem last_;
   GmresWorkspace ws_;
+  // preconditioner: the low-degree system (coarse), the matched pairs (indices of pairs_), P^-1 u of the
+  // last operator application, coarse vectors
+  bool pc_coarse_ = false, pc_pair_ = false, pc_contact_ = false, pc_contact_low_ = false;
+  std::vector<Pair> low_pairs_;  // contact_low: the close pairs at kContactLowDegree, kContactLowOrder
+  std::vector<double> low_alpha_;  // contact_low: M_low x, ncoef(kContactLowDegree) per sphere
+  std::unique_ptr<SpectralSolver> coarse_;
+  std::vector<std::size_t> matched_;
+  LargeVector z_;
+  std::vector<double> pc_uc_, pc_zc_;
+  long inner_iterations_ = 0;  // inner GMRES iterations of the preconditioner in the last solve
   // warm start
   LargeVector prev_beta_;
   int prev_L_ = -1, prev_N_ = -1;
@@ -171,9 +206,14 @@ int SpectralSolver::choose_degree(const Problem& p, double& est_err) {
 // written (not added) to out_i, out_k (ncoef(pr.L) each); s = 4 ncoef(pr.L) of scratch.
 void SpectralSolver::pair_product(const Pair& pr, const double* beta, double* out_i, double* out_k,
                                   double* s) const {
+  pair_product_at(pr, beta + std::size_t(pr.i) * nc_, beta + std::size_t(pr.k) * nc_, out_i, out_k, s);
+}
+
+// pair_product with the two spheres' coefficients at b_i and b_k.
+void SpectralSolver::pair_product_at(const Pair& pr, const double* b_i, const double* b_k, double* out_i,
+                                     double* out_k, double* s) const {
   const int np = sh::ncoef(pr.L);
   double *bi = s, *bk = s + np, *ai = s + 2 * np, *ak = s + 3 * np;
-  const double *b_k = beta + std::size_t(pr.k) * nc_, *b_i = beta + std::size_t(pr.i) * nc_;
   if (pr.pivot)
     pr.P.to_frame2(pivot_, pr.L, pr.M, b_k, b_i, bk, bi);
   else
@@ -329,11 +369,7 @@ void SpectralSolver::build_pairs(const Problem& p) {
 void SpectralSolver::applied_field(const Problem& p, LargeVector& alpha_ext, LargeVector& rhs) {
   const int N = N_, L = L_;
   const double k0 = p.medium_permittivity;
-  gamma_.assign(std::size_t(N) * (L + 1), 0.0);
-  for (int i = 0; i < N; ++i) {
-    double ki = p.spheres[i].permittivity;
-    for (int l = 1; l <= L; ++l) gamma_[i * (L + 1) + l] = (ki - k0) * l / ((ki + k0) * l + k0);
-  }
+  set_gamma(p);
   const std::size_t n = std::size_t(N) * nc_;
   alpha_ext.resize(n);  // every number is set below, sphere by sphere
   rhs.resize(n);  // (rhs: every number written, degree by degree)
@@ -357,18 +393,32 @@ void SpectralSolver::applied_field(const Problem& p, LargeVector& alpha_ext, Lar
   }
 }
 
+// gamma_l per sphere (l = 0: 0).
+void SpectralSolver::set_gamma(const Problem& p) {
+  const int N = N_, L = L_;
+  const double k0 = p.medium_permittivity;
+  gamma_.assign(std::size_t(N) * (L + 1), 0.0);
+  for (int i = 0; i < N; ++i) {
+    double ki = p.spheres[i].permittivity;
+    for (int l = 1; l <= L; ++l) gamma_[i * (L + 1) + l] = (ki - k0) * l / ((ki + k0) * l + k0);
+  }
+}
+
 // y = x + gamma M x (sphere by sphere, degree by degree).
 void SpectralSolver::apply_system(std::span<const double> xs, std::span<double> ys) {
-  const double* x = xs.data();
-  double* y = ys.data();
+  matvec_M(xs.data(), alpha_.data());
+  add_gamma_times(xs.data(), alpha_.data(), ys.data());
+}
+
+// y = x + gamma a (a: N ncoef(L) numbers).
+void SpectralSolver::add_gamma_times(const double* x, const double* a, double* y) const {
   const int L = L_;
-  matvec_M(x, alpha_.data());
   // sphere by sphere: the same bits at any thread count
 #pragma omp parallel for schedule(static) if (std::size_t(N_) * nc_ >= kSpectralParallelLength)
   for (int i = 0; i < N_; ++i) {
     const double* g = &gamma_[i * (L + 1)];
     const double* xi = x + std::size_t(i) * nc_;
-    const double* ai = &alpha_[std::size_t(i) * nc_];
+    const double* ai = a + std::size_t(i) * nc_;
     double* yi = y + std::size_t(i) * nc_;
     for (int l = 0; l <= L; ++l)
       for (int m = -l; m <= l; ++m) yi[sh::idx(l, m)] = xi[sh::idx(l, m)] + g[l] * ai[sh::idx(l, m)];
@@ -403,8 +453,25 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector
   // always computed (1 + iterations + 1 operator applications for a single-cycle solve); without
   // it one application per solve is saved but the reported residual is the Givens estimate.
   const GmresOptions go{tol, opt_.max_iterations, std::min(opt_.max_iterations, 60), true};
-  auto apply = [&](std::span<const double> xs, std::span<double> ys) { apply_system(xs, ys); };
-  gr = gmres(apply, rhs, beta_, {}, go, &ws_);
+  if (pc_coarse_ || pc_pair_ || pc_contact_ || pc_contact_low_) {
+    // right preconditioning: A P^-1 u = rhs, beta = P^-1 u; the residual is the true one, rhs - A beta.
+    // The last application (GMRES's explicit residual at its solution) leaves z_ = P^-1 u = beta.
+    LargeVector u(n);
+    if (prev_N_ == N && prev_L_ >= 0)
+      precondition_forward(beta_.data(), u.data());
+    else
+      u = rhs;
+    z_.resize(n);
+    auto apply_pc = [&](std::span<const double> us, std::span<double> ys) {
+      precondition(us.data(), z_.data());
+      apply_system(z_, ys);
+    };
+    gr = gmres(apply_pc, rhs, u, {}, go, &ws_);
+    beta_ = z_;
+  } else {
+    auto apply = [&](std::span<const double> xs, std::span<double> ys) { apply_system(xs, ys); };
+    gr = gmres(apply, rhs, beta_, {}, go, &ws_);
+  }
   if (!gr.converged)
     throw NumericalError(fmt::format(
         "spectral: GMRES did not converge in {} iterations (relative residual {:.3g} > {:.3g}); raise "
@@ -461,6 +528,7 @@ Solution SpectralSolver::solve(const Problem& p) {
   auto t0 = std::chrono::steady_clock::now();
   validate_spheres(p);
   const int N = static_cast<int>(p.spheres.size());
+  inner_iterations_ = 0;
   double est_err = 0.0;
   const int L = choose_degree(p, est_err);
   prepare(p, L);
@@ -495,6 +563,10 @@ Solution SpectralSolver::solve(const Problem& p) {
                      {"max_pair_order", maxorder},
                      {"gmres_tolerance", tol},
                      {"parallel_pair_blocks", parallel_blocks_}};
+  if (pc_coarse_ || pc_pair_ || pc_contact_ || pc_contact_low_) {
+    sol.stats.extra["preconditioner_inner_iterations"] = inner_iterations_;
+    sol.stats.extra["matched_pairs"] = matched_.size();
+  }
   if (far_) {
     sol.stats.extra["far_field_order"] = far_->order();
     sol.stats.extra["near_pairs"] = pairs_.size();
@@ -517,6 +589,208 @@ void SpectralSolver::prepare(const Problem& p, int L) {
     if (!far_options_.stored_rotations && pivot_.degree() != L) pivot_.build(L);
   }
   build_pairs(p);
+  prepare_preconditioner(p);
+}
+
+// The preconditioner's set-up: the coarse system (a solver at degree kCoarseDegree with its gamma), or
+// the matching of the close pairs (pairs of degree >= kPivotDegree, closest gap first, greedy); the
+// contact network needs none (the close pairs are those of pairs_ of degree >= kPivotDegree).
+void SpectralSolver::prepare_preconditioner(const Problem& p) {
+  const std::string& name = opt_.preconditioner;
+  pc_coarse_ = name == kPreconditionerNames[1];
+  pc_pair_ = name == kPreconditionerNames[2];
+  pc_contact_ = name == kPreconditionerNames[3];
+  pc_contact_low_ = name == kPreconditionerNames[4];
+  coarse_.reset();
+  matched_.clear();
+  low_pairs_.clear();
+  if (pc_contact_low_) build_contact_low(p);
+  if (pc_coarse_ && L_ > kCoarseDegree) {
+    SolverOptions oc = opt_;
+    oc.max_degree = kCoarseDegree;
+    oc.preconditioner = kPreconditionerNames[0];
+    coarse_ = std::make_unique<SpectralSolver>(oc, far_options_);
+    coarse_->prepare(p, kCoarseDegree);
+    coarse_->set_gamma(p);
+    coarse_->alpha_.resize(std::size_t(N_) * coarse_->nc_);
+  }
+  if (pc_pair_) {
+    std::vector<std::pair<double, std::size_t>> cand;
+    for (std::size_t q = 0; q < pairs_.size(); ++q) {
+      const Pair& pr = pairs_[q];
+      if (pr.L < kPivotDegree) continue;
+      const auto& a = p.spheres[pr.i];
+      const auto& b = p.spheres[pr.k];
+      const double gap = norm(b.center - a.center) - a.radius - b.radius;
+      cand.emplace_back(gap / std::min(a.radius, b.radius), q);
+    }
+    std::sort(cand.begin(), cand.end());
+    std::vector<char> used(N_, 0);
+    for (const auto& [g, q] : cand) {
+      const Pair& pr = pairs_[q];
+      if (used[pr.i] || used[pr.k]) continue;
+      used[pr.i] = used[pr.k] = 1;
+      matched_.push_back(q);
+    }
+  }
+}
+
+// z = P^-1 u: the contact network's system solved, or the matched pairs' two-sphere systems (block
+// Jacobi), or the degrees <= kCoarseDegree replaced by the coarse system's solution for u's low degrees.
+void SpectralSolver::precondition(const double* u, double* z) {
+  const std::size_t n = std::size_t(N_) * nc_;
+  std::copy(u, u + n, z);
+  if (pc_contact_) contact_inverse(u, z);
+  if (pc_contact_low_) apply_contact_low(u, z, -1.0);
+  for (std::size_t q : matched_) pair_block_inverse(pairs_[q], u, z);
+  if (coarse_) coarse_inverse(u, z);
+}
+
+// u = P x for the warm start's guess (contact_low: P = (I - gamma M_low)^-1, taken as I + gamma M_low).
+void SpectralSolver::precondition_forward(const double* x, double* u) {
+  const std::size_t n = std::size_t(N_) * nc_, nc = std::size_t(nc_);
+  std::copy(x, x + n, u);
+  if (pc_contact_low_) apply_contact_low(x, u, 1.0);
+  if (pc_contact_) {
+    std::vector<double> al(n, 0.0);
+    add_contact_products(x, al.data());
+    add_gamma_times(x, al.data(), u);
+  }
+  std::vector<double> s(4 * nc), o(2 * nc);
+  for (std::size_t q : matched_) {
+    const Pair& pr = pairs_[q];
+    const int np = sh::ncoef(pr.L);
+    pair_product_at(pr, x + pr.i * nc, x + pr.k * nc, o.data(), o.data() + np, s.data());
+    const double *gi = &gamma_[pr.i * (L_ + 1)], *gk = &gamma_[pr.k * (L_ + 1)];
+    for (int l = 0; l <= pr.L; ++l)
+      for (int m = -l; m <= l; ++m) {
+        u[pr.i * nc + sh::idx(l, m)] += gi[l] * o[sh::idx(l, m)];
+        u[pr.k * nc + sh::idx(l, m)] += gk[l] * o[np + sh::idx(l, m)];
+      }
+  }
+  if (!coarse_) return;
+  const int ncc = coarse_->nc_;
+  pc_zc_.resize(std::size_t(N_) * ncc);
+  pc_uc_.resize(pc_zc_.size());
+  for (int i = 0; i < N_; ++i)
+    for (int c = 0; c < ncc; ++c) pc_zc_[std::size_t(i) * ncc + c] = x[i * nc + c];
+  coarse_->apply_system(pc_zc_, pc_uc_);
+  for (int i = 0; i < N_; ++i)
+    for (int c = 0; c < ncc; ++c) u[i * nc + c] = pc_uc_[std::size_t(i) * ncc + c];
+}
+
+// z's degrees <= the coarse degree: the solution of the coarse system for u's (inner GMRES to kInnerTolerance).
+void SpectralSolver::coarse_inverse(const double* u, double* z) {
+  const int ncc = coarse_->nc_;
+  const std::size_t nc = std::size_t(nc_);
+  pc_uc_.resize(std::size_t(N_) * ncc);
+  for (int i = 0; i < N_; ++i)
+    for (int c = 0; c < ncc; ++c) pc_uc_[std::size_t(i) * ncc + c] = u[i * nc + c];
+  pc_zc_ = pc_uc_;
+  auto apply = [&](std::span<const double> xs, std::span<double> ys) { coarse_->apply_system(xs, ys); };
+  const GmresResult r = gmres(apply, pc_uc_, pc_zc_, {}, GmresOptions{kInnerTolerance, 1000, 200, true});
+  inner_iterations_ += r.iterations;
+  for (int i = 0; i < N_; ++i)
+    for (int c = 0; c < ncc; ++c) z[i * nc + c] = pc_zc_[std::size_t(i) * ncc + c];
+}
+
+// contact_low: each close pair (degree >= kPivotDegree) again at degree kContactLowDegree and frame order
+// kContactLowOrder, with its own stored rotation blocks (small at that degree and order).
+void SpectralSolver::build_contact_low(const Problem& p) {
+  for (const Pair& pr : pairs_) {
+    if (pr.L < kPivotDegree) continue;
+    Pair q;
+    q.i = pr.i;
+    q.k = pr.k;
+    q.ui = pr.ui;
+    q.uk = pr.uk;
+    q.L = std::min(pr.L, kContactLowDegree);
+    q.M = std::min(pr.M, kContactLowOrder);
+    q.R.build(p.spheres[pr.k].center - p.spheres[pr.i].center, q.L, q.M);
+    sh::AxialTranslation::source_powers(std::min(q.L, q.M), q.ui, q.uk, q.powers);
+    low_pairs_.push_back(std::move(q));
+  }
+}
+
+// low_alpha_ = M_low x (the pairs of low_pairs_, in pair order), ncoef(kContactLowDegree) per sphere.
+void SpectralSolver::contact_low_products(const double* x) {
+  const std::size_t nc = std::size_t(nc_), nl = std::size_t(sh::ncoef(kContactLowDegree));
+  low_alpha_.assign(std::size_t(N_) * nl, 0.0);
+  std::vector<double> s(4 * nl), o(2 * nl);
+  for (const Pair& pr : low_pairs_) {
+    const int np = sh::ncoef(pr.L);
+    pair_product_at(pr, x + pr.i * nc, x + pr.k * nc, o.data(), o.data() + np, s.data());
+    for (int c = 0; c < np; ++c) {
+      low_alpha_[pr.i * nl + c] += o[c];
+      low_alpha_[pr.k * nl + c] += o[np + c];
+    }
+  }
+}
+
+// z (= u on entry) += sign gamma M_low u, degrees <= kContactLowDegree: z = (I - gamma M_low) u, one
+// Neumann step of the low contact system's inverse (sign -1), or its forward form (sign +1).
+void SpectralSolver::apply_contact_low(const double* u, double* z, double sign) {
+  contact_low_products(u);
+  const std::size_t nc = std::size_t(nc_), nl = std::size_t(sh::ncoef(kContactLowDegree));
+  const int Lc = std::min(L_, kContactLowDegree);
+  for (int i = 0; i < N_; ++i)
+    for (int l = 1; l <= Lc; ++l)
+      for (int m = -l; m <= l; ++m)
+        z[i * nc + sh::idx(l, m)] += sign * gamma_[i * (L_ + 1) + l] * low_alpha_[i * nl + sh::idx(l, m)];
+}
+
+// alpha += M_contact x: the products of the close pairs (degree >= kPivotDegree) alone, in pair order.
+void SpectralSolver::add_contact_products(const double* x, double* alpha) const {
+  const std::size_t nc = std::size_t(nc_);
+  std::vector<double> s(4 * nc), o(2 * nc);
+  for (const Pair& pr : pairs_) {
+    if (pr.L < kPivotDegree) continue;
+    const int np = sh::ncoef(pr.L);
+    pair_product_at(pr, x + pr.i * nc, x + pr.k * nc, o.data(), o.data() + np, s.data());
+    for (int c = 0; c < np; ++c) {
+      alpha[pr.i * nc + c] += o[c];
+      alpha[pr.k * nc + c] += o[np + c];
+    }
+  }
+}
+
+// z = (I + gamma M_contact)^-1 u (inner GMRES to kInnerTolerance): every close pair at once, the
+// contact network's chains included.
+void SpectralSolver::contact_inverse(const double* u, double* z) {
+  const std::size_t n = std::size_t(N_) * nc_;
+  std::vector<double> b(u, u + n), x(u, u + n), al(n);
+  auto apply = [&](std::span<const double> xs, std::span<double> ys) {
+    std::fill(al.begin(), al.end(), 0.0);
+    add_contact_products(xs.data(), al.data());
+    add_gamma_times(xs.data(), al.data(), ys.data());
+  };
+  const GmresResult r = gmres(apply, b, x, {}, GmresOptions{kInnerTolerance, 1000, 200, true});
+  inner_iterations_ += r.iterations;
+  std::copy(x.begin(), x.end(), z);
+}
+
+// z_i, z_k (degrees <= the pair's) from the pair's two-sphere system
+//   z_i + gamma_i (M_ik z_k) = u_i,  z_k + gamma_k (M_ki z_i) = u_k  (inner GMRES to kInnerTolerance).
+void SpectralSolver::pair_block_inverse(const Pair& pr, const double* u, double* z) {
+  const int np = sh::ncoef(pr.L);
+  const std::size_t nc = std::size_t(nc_);
+  std::vector<double> b(2 * np), x, s(4 * np), o(2 * np);
+  std::copy(u + pr.i * nc, u + pr.i * nc + np, b.begin());
+  std::copy(u + pr.k * nc, u + pr.k * nc + np, b.begin() + np);
+  x = b;
+  const double *gi = &gamma_[pr.i * (L_ + 1)], *gk = &gamma_[pr.k * (L_ + 1)];
+  auto apply = [&](std::span<const double> xs, std::span<double> ys) {
+    pair_product_at(pr, xs.data(), xs.data() + np, o.data(), o.data() + np, s.data());
+    for (int l = 0; l <= pr.L; ++l)
+      for (int m = -l; m <= l; ++m) {
+        ys[sh::idx(l, m)] = xs[sh::idx(l, m)] + gi[l] * o[sh::idx(l, m)];
+        ys[np + sh::idx(l, m)] = xs[np + sh::idx(l, m)] + gk[l] * o[np + sh::idx(l, m)];
+      }
+  };
+  const GmresResult r = gmres(apply, b, x, {}, GmresOptions{kInnerTolerance, 1000, 200, true});
+  inner_iterations_ += r.iterations;
+  std::copy(x.begin(), x.begin() + np, z + pr.i * nc);
+  std::copy(x.begin() + np, x.end(), z + pr.k * nc);
 }
 
 std::vector<double> SpectralSolver::product(const Problem& p, const std::vector<double>& beta,
