@@ -51,7 +51,9 @@ class PairKernel final : public ContactKernel {
     });
   }
 
-  void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
+  // flatten: the sub-model calls (contact radius, tangential force, respond) are inlined into the loop, as
+  // GCC already does in the OpenMP-outlined block loop; without it they stay out of line (issue 27).
+  [[gnu::flatten]] void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
     std::fill(p.f.begin(), p.f.end(), Vec3{});
     std::fill(p.t.begin(), p.t.end(), Vec3{});
     for (Pair& pr : pairs) {
