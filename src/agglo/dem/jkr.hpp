@@ -38,31 +38,65 @@ struct JkrPair {
   double delta_equilibrium() const { return a0 * a0 / (3.0 * R); }
 };
 
-// Inline: the contact law calls them for every contact and step.
-inline double JkrPair::a_of_delta(double delta, double a_guess) const {
-  const double d = delta / (kJkrCbrt6 * deltaC);  // target of f(s) = 2 s^4 - 4/3 s
-  if (d <= -kJkrSMin) return kJkrSMin * kJkrSMin * a0;  // at/below the break point: the turning point
-  // f is convex and increasing for s >= s_min. From a warm start near the root Newton converges in a
-  // few steps from either side (from the left it lands right of the root, then decreases
-  // monotonically). Without a usable guess (or close to the turning point, where f' -> 0) start from
-  // an upper bound of the root.
-  double s;
-  if (a_guess > 0.0 && a_guess > 1.2 * kJkrSMin * kJkrSMin * a0) {
-    s = std::sqrt(a_guess / a0);
-  } else {
-    s = std::max(1.0, std::sqrt(std::sqrt(std::max(d, 0.0) / 2.0 + 1.0)) + 0.5);
-  }
-  // Quadratic convergence; near the turning point (d -> -s_min) it degrades to linear, hence the cap.
-  for (int it = 0; it < 100; ++it) {
+// The Newton iteration of a_of_delta in parts, so that a_of_delta and a_of_delta_pair run the same
+// operations: t = delta/(6^(1/3) delta_C), the start s, and one step.
+struct JkrNewton {
+  double t = 0.0;  // target of f(s) = 2 s^4 - 4/3 s
+  double s = 0.0;  // iterate s = (a/a0)^(1/2)
+  // One Newton step; false once the change is within 4e-16 s (converged).
+  [[gnu::always_inline]] bool step() {
     double s3 = s * s * s;
-    double f = 2.0 * s3 * s - 4.0 / 3.0 * s - d;
+    double f = 2.0 * s3 * s - 4.0 / 3.0 * s - t;
     double fp = 8.0 * s3 - 4.0 / 3.0;
     double s_new = std::max(s - f / fp, kJkrSMin);
     double change = std::abs(s_new - s);
     s = s_new;
-    if (change <= 4e-16 * s) break;
+    return !(change <= 4e-16 * s);
   }
-  return s * s * a0;
+};
+
+// Inline: the contact law calls them for every contact and step.
+// The start of a_of_delta: false when delta is at/below the break point (a is the turning point's radius).
+[[gnu::always_inline]] inline bool jkr_newton_start(const JkrPair& p, double delta, double a_guess, JkrNewton& n) {
+  n.t = delta / (kJkrCbrt6 * p.deltaC);
+  if (n.t <= -kJkrSMin) return false;
+  // f is convex and increasing for s >= s_min. From a warm start near the root Newton converges in a
+  // few steps from either side (from the left it lands right of the root, then decreases
+  // monotonically). Without a usable guess (or close to the turning point, where f' -> 0) start from
+  // an upper bound of the root.
+  if (a_guess > 0.0 && a_guess > 1.2 * kJkrSMin * kJkrSMin * p.a0) {
+    n.s = std::sqrt(a_guess / p.a0);
+  } else {
+    n.s = std::max(1.0, std::sqrt(std::sqrt(std::max(n.t, 0.0) / 2.0 + 1.0)) + 0.5);
+  }
+  return true;
+}
+
+// Quadratic convergence; near the turning point (t -> -s_min) it degrades to linear, hence the cap of
+// kJkrNewtonCap steps.
+inline constexpr int kJkrNewtonCap = 100;
+
+inline double JkrPair::a_of_delta(double delta, double a_guess) const {
+  JkrNewton n;
+  if (!jkr_newton_start(*this, delta, a_guess, n)) return kJkrSMin * kJkrSMin * a0;
+  for (int it = 0; it < kJkrNewtonCap && n.step(); ++it) {
+  }
+  return n.s * n.s * a0;
+}
+
+// a_p = p.a_of_delta(delta_p, a_p) and a_q = q.a_of_delta(delta_q, a_q), bit for bit, with the two Newton
+// iterations interleaved: two independent chains of divisions that the core overlaps.
+[[gnu::always_inline]] inline void a_of_delta_pair(const JkrPair& p, double delta_p, double& a_p, const JkrPair& q,
+                                                   double delta_q, double& a_q) {
+  JkrNewton np, nq;
+  const bool solve_p = jkr_newton_start(p, delta_p, a_p, np), solve_q = jkr_newton_start(q, delta_q, a_q, nq);
+  bool run_p = solve_p, run_q = solve_q;
+  for (int it = 0; it < kJkrNewtonCap && (run_p || run_q); ++it) {
+    if (run_p) run_p = np.step();
+    if (run_q) run_q = nq.step();
+  }
+  a_p = solve_p ? np.s * np.s * p.a0 : kJkrSMin * kJkrSMin * p.a0;
+  a_q = solve_q ? nq.s * nq.s * q.a0 : kJkrSMin * kJkrSMin * q.a0;
 }
 
 inline double JkrPair::force_of_a(double a) const {
