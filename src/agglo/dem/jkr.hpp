@@ -84,19 +84,26 @@ inline double JkrPair::a_of_delta(double delta, double a_guess) const {
   return n.s * n.s * a0;
 }
 
-// a_p = p.a_of_delta(delta_p, a_p) and a_q = q.a_of_delta(delta_q, a_q), bit for bit, with the two Newton
-// iterations interleaved: two independent chains of divisions that the core overlaps.
-[[gnu::always_inline]] inline void a_of_delta_pair(const JkrPair& p, double delta_p, double& a_p, const JkrPair& q,
-                                                   double delta_q, double& a_q) {
-  JkrNewton np, nq;
-  const bool solve_p = jkr_newton_start(p, delta_p, a_p, np), solve_q = jkr_newton_start(q, delta_q, a_q, nq);
-  bool run_p = solve_p, run_q = solve_q;
-  for (int it = 0; it < kJkrNewtonCap && (run_p || run_q); ++it) {
-    if (run_p) run_p = np.step();
-    if (run_q) run_q = nq.step();
+// a[l] = p[l]->a_of_delta(delta[l], a[l]) for the lanes l < L, bit for bit, with the L Newton iterations
+// interleaved: L independent chains of divisions that the core overlaps.
+template <int L>
+[[gnu::always_inline]] inline void a_of_delta_lanes(const JkrPair* const (&p)[L], const double (&delta)[L],
+                                                    double* const (&a)[L]) {
+  JkrNewton n[L];
+  bool solve[L], run[L];
+  bool any = false;
+  for (int l = 0; l < L; ++l) {
+    solve[l] = run[l] = jkr_newton_start(*p[l], delta[l], *a[l], n[l]);
+    any = any || run[l];
   }
-  a_p = solve_p ? np.s * np.s * p.a0 : kJkrSMin * kJkrSMin * p.a0;
-  a_q = solve_q ? nq.s * nq.s * q.a0 : kJkrSMin * kJkrSMin * q.a0;
+  for (int it = 0; it < kJkrNewtonCap && any; ++it) {
+    any = false;
+    for (int l = 0; l < L; ++l) {
+      if (run[l]) run[l] = n[l].step();
+      any = any || run[l];
+    }
+  }
+  for (int l = 0; l < L; ++l) *a[l] = solve[l] ? n[l].s * n[l].s * p[l]->a0 : kJkrSMin * kJkrSMin * p[l]->a0;
 }
 
 inline double JkrPair::force_of_a(double a) const {

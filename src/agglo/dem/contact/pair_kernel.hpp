@@ -55,7 +55,7 @@ class PairKernel final : public ContactKernel {
   // Serially in pair order, in chunks of kRadiusChunk pairs, two passes per chunk: first the overlap, the
   // hysteresis and the contact radius of every pair (update_radii), then the rest of the law with that radius
   // (Models::force_at_radius) and the sums. The same operations on the same operands as Models::force, pair
-  // by pair, so the same bits; the contact radii of two pairs are solved together, so that the core overlaps
+  // by pair, so the same bits; the contact radii of several pairs are solved together, so that the core overlaps
   // their Newton iterations (each a dependent chain of divisions). flatten: the sub-model calls are inlined
   // into the loop (without it GCC keeps the contact radius and the tangential force out of line).
   [[gnu::flatten]] void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
@@ -78,7 +78,7 @@ class PairKernel final : public ContactKernel {
   }
 
   // The first pass of accumulate_pairs over pairs [k0, k1): step 1 of every pair, then the contact radii of
-  // the engaged ones, two at a time where the normal model can (Normal::contact_radii).
+  // the engaged ones, Normal::kLanes at a time where the normal model can (Normal::contact_radii).
   [[gnu::always_inline]] void update_radii(std::vector<Pair>& pairs, const Particles& p, std::size_t k0,
                                            std::size_t k1) const {
     std::array<std::size_t, kRadiusChunk> engaged;
@@ -93,11 +93,19 @@ class PairKernel final : public ContactKernel {
       }
     }
     std::size_t e = 0;
-    if constexpr (requires(const JkrPair& j, double x, double& a) { Normal::contact_radii(j, x, a, j, x, a); }) {
-      for (; e + 1 < ne; e += 2) {
-        Pair& u = pairs[engaged[e]];
-        Pair& v = pairs[engaged[e + 1]];
-        Normal::contact_radii(u.jkr, delta[e], u.state.a, v.jkr, delta[e + 1], v.state.a);
+    if constexpr (requires { Normal::kLanes; }) {
+      constexpr int L = Normal::kLanes;
+      for (; e + L <= ne; e += L) {
+        const JkrPair* jkr[L];
+        double d[L];
+        double* a[L];
+        for (int l = 0; l < L; ++l) {
+          Pair& pr = pairs[engaged[e + l]];
+          jkr[l] = &pr.jkr;
+          d[l] = delta[e + l];
+          a[l] = &pr.state.a;
+        }
+        Normal::contact_radii(jkr, d, a);
       }
     }
     for (; e < ne; ++e) {
