@@ -84,26 +84,51 @@ inline double JkrPair::a_of_delta(double delta, double a_guess) const {
   return n.s * n.s * a0;
 }
 
-// a[l] = p[l]->a_of_delta(delta[l], a[l]) for the lanes l < L, bit for bit, with the L Newton iterations
-// interleaved: L independent chains of divisions that the core overlaps.
+// a[l] = p[l]->a_of_delta(delta[l], a[l]) for the lanes l < L (L even), bit for bit, with the L Newton
+// iterations interleaved in two-double vectors (GCC vector extensions; IEEE operations lane by lane, the same
+// as JkrNewton::step's): L independent chains of divisions, no branch per lane. A converged lane keeps its
+// s (selected by mask), as a_of_delta stops; the loop ends when every lane has converged.
 template <int L>
 [[gnu::always_inline]] inline void a_of_delta_lanes(const JkrPair* const (&p)[L], const double (&delta)[L],
                                                     double* const (&a)[L]) {
-  JkrNewton n[L];
-  bool solve[L], run[L];
-  bool any = false;
+  static_assert(L % 2 == 0);
+  typedef double v2d __attribute__((vector_size(16)));
+  typedef long long v2l __attribute__((vector_size(16)));
+  constexpr int V = L / 2;
+  v2d t[V], s[V];
+  v2l run[V];
+  bool solve[L];
   for (int l = 0; l < L; ++l) {
-    solve[l] = run[l] = jkr_newton_start(*p[l], delta[l], *a[l], n[l]);
-    any = any || run[l];
+    JkrNewton n;
+    solve[l] = jkr_newton_start(*p[l], delta[l], *a[l], n);
+    t[l / 2][l % 2] = n.t;
+    s[l / 2][l % 2] = solve[l] ? n.s : 1.0;
+    run[l / 2][l % 2] = solve[l] ? -1 : 0;
   }
-  for (int it = 0; it < kJkrNewtonCap && any; ++it) {
-    any = false;
-    for (int l = 0; l < L; ++l) {
-      if (run[l]) run[l] = n[l].step();
-      any = any || run[l];
+  const v2d smin = {kJkrSMin, kJkrSMin};
+  const v2l sign = {static_cast<long long>(1ULL << 63), static_cast<long long>(1ULL << 63)};
+  for (int it = 0; it < kJkrNewtonCap; ++it) {
+    v2l any = {0, 0};
+    for (int v = 0; v < V; ++v) {
+      const v2d sv = s[v];
+      const v2d s3 = sv * sv * sv;
+      const v2d f = 2.0 * s3 * sv - 4.0 / 3.0 * sv - t[v];
+      const v2d fp = 8.0 * s3 - 4.0 / 3.0;
+      const v2d x = sv - f / fp;
+      const v2l below = x < smin;  // std::max(x, s_min)
+      const v2d s_new = (v2d)(((v2l)smin & below) | ((v2l)x & ~below));
+      const v2d change = (v2d)((v2l)(s_new - sv) & ~sign);
+      const v2l converged = change <= 4e-16 * s_new;
+      s[v] = (v2d)(((v2l)s_new & run[v]) | ((v2l)sv & ~run[v]));
+      run[v] &= ~converged;
+      any |= run[v];
     }
+    if ((any[0] | any[1]) == 0) break;
   }
-  for (int l = 0; l < L; ++l) *a[l] = solve[l] ? n[l].s * n[l].s * p[l]->a0 : kJkrSMin * kJkrSMin * p[l]->a0;
+  for (int l = 0; l < L; ++l) {
+    const double sl = s[l / 2][l % 2];
+    *a[l] = solve[l] ? sl * sl * p[l]->a0 : kJkrSMin * kJkrSMin * p[l]->a0;
+  }
 }
 
 inline double JkrPair::force_of_a(double a) const {
