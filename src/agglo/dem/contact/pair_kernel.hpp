@@ -61,6 +61,10 @@ class PairKernel final : public ContactKernel {
   [[gnu::flatten]] void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
     std::fill(p.f.begin(), p.f.end(), Vec3{});
     std::fill(p.t.begin(), p.t.end(), Vec3{});
+    if (pairs.size() < kRadiusChunk) {  // a small system (the seed's agglomerates): one pass, nothing to overlap
+      for (Pair& pr : pairs) add_pair_force(pr, pair_force(pr, p, dt), p);
+      return;
+    }
     for (std::size_t k0 = 0; k0 < pairs.size(); k0 += kRadiusChunk) {
       const std::size_t k1 = std::min(pairs.size(), k0 + kRadiusChunk);
       update_radii(pairs, p, k0, k1);
@@ -68,11 +72,7 @@ class PairKernel final : public ContactKernel {
         Pair& pr = pairs[k];
         const PairKinematics kin{p.x[pr.i], p.x[pr.j], p.v[pr.i], p.v[pr.j], p.w[pr.i], p.w[pr.j],
                                  p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
-        const PairForce out = models_[pr.kind].force_at_radius(pr.jkr, kin, pr.state, dt);
-        p.f[pr.i] += out.f_on_i;
-        p.t[pr.i] += out.t_on_i;
-        p.f[pr.j] -= out.f_on_i;
-        p.t[pr.j] += out.t_on_j;
+        add_pair_force(pr, models_[pr.kind].force_at_radius(pr.jkr, kin, pr.state, dt), p);
       }
     }
   }
@@ -176,6 +176,14 @@ class PairKernel final : public ContactKernel {
     const PairKinematics kin{p.x[pr.i], p.x[pr.j], p.v[pr.i], p.v[pr.j], p.w[pr.i], p.w[pr.j],
                              p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
     return models_[pr.kind].force(pr.jkr, kin, pr.state, dt);
+  }
+
+  // Pair pr's force and torques added to its two particles, in the order of the gathered buffer.
+  [[gnu::always_inline]] static void add_pair_force(const Pair& pr, const PairForce& out, Particles& p) {
+    p.f[pr.i] += out.f_on_i;
+    p.t[pr.i] += out.t_on_i;
+    p.f[pr.j] -= out.f_on_i;
+    p.t[pr.j] += out.t_on_j;
   }
 
   // The sub-models of one pair of materials and the contact they compute.
