@@ -26,7 +26,8 @@ class JkrNormal {
   // kLanes contacts at once, bit for bit kLanes contact_radius calls (their Newton iterations interleaved);
   // a[l] holds the last radius on entry (independent of the break rule, hence static).
   static constexpr int kLanes = 8;
-  static void contact_radii(const JkrPair* const (&p)[kLanes], const double (&delta)[kLanes], double* const (&a)[kLanes]) {
+  static void contact_radii(const JkrPair* const (&p)[kLanes], const double (&delta)[kLanes],
+                            double* const (&a)[kLanes]) {
     a_of_delta_lanes<kLanes>(p, delta, a);
   }
   double force(const JkrPair& jkr, double a) const { return jkr.force_of_a(a); }
