@@ -18,6 +18,9 @@
 # "10000 100000"; BM_DemBlock has 1000, 10000, 100000), ROUNDS (3), STEPS (1000), WARM (200),
 # THREADS ("1 2"; "" skips the thread comparison), CG_SIZE (10000; "" skips callgrind), CG_STEPS (20),
 # AGG_N (primaries of the aggregate on the wall, 1000 or 100; default 1000, "" skips that system),
+# BEFORE=REV (a commit): the callgrind counts also for bench_dem_scaling built from REV (fast path; REV's files
+# exported to OUT/before_src (git archive) and built in OUT/before_src/build, with ccache when present; kept for
+# the next run), printed as before/after.
 # LMP (default lmp). LAMMPS is installed (Debian's `lammps`) and bench_dem_scaling built in BUILD if missing.
 #   SMOKE=1: the smoke test (ctest -L bench): SIZES=1000 ROUNDS=1 STEPS=20 WARM=10 AGG_N=100 unless set, no callgrind
 #   unless CG_SIZE is set (valgrind is not a test package; a callgrind run costs seconds), LAMMPS and
@@ -29,6 +32,8 @@ BUILD=${BUILD:-$SRC/build-bench}
 if [ "${SMOKE:-0}" = 1 ]; then
   SIZES=${SIZES:-1000} ROUNDS=${ROUNDS:-1} STEPS=${STEPS:-20} WARM=${WARM:-10} CG_SIZE=${CG_SIZE-} AGG_N=${AGG_N-100}
   [ -n "$CG_SIZE" ] || echo "smoke: callgrind skipped (no instruction counts)"
+  [ -z "${BEFORE:-}" ] || echo "smoke: BEFORE ignored (no rebuild of a previous commit)"
+  unset BEFORE
 fi
 SIZES=${SIZES-10000 100000}
 ROUNDS=${ROUNDS:-3}
@@ -107,19 +112,36 @@ if [ -n "$AGG_N" ]; then
     agglo_block "$AGG_N" 1 1 aggregate_wall | tee -a "$RES"
   done
 fi
+if [ -n "$CG_SIZE" ] && [ -n "${BEFORE:-}" ]; then
+  bsrc=$OUT/before_src
+  rev=$(git -C "$SRC" rev-parse --short "$BEFORE")
+  if [ ! -x "$bsrc/build/bench_dem_scaling" ] || [ "$(cat "$bsrc/build/rev" 2>/dev/null)" != "$rev" ]; then
+    rm -rf "$bsrc" && mkdir -p "$bsrc"
+    git -C "$SRC" archive "$rev" | tar -x -C "$bsrc"
+    launcher=()
+    command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+    cmake -S "$bsrc" -B "$bsrc/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=$PY \
+        -DAGGLO_BUILD_BENCH=ON "${launcher[@]}" >"$OUT/before_cmake.log"
+    cmake --build "$bsrc/build" -j2 --target bench_dem_scaling >"$OUT/before_build.log"
+    echo "$rev" >"$bsrc/build/rev"
+  fi
+fi
 if [ -n "$CG_SIZE" ]; then
-  # the block at CG_SIZE, and the aggregate on its wall layer (AGG_N primaries) when it ran
+  # the block at CG_SIZE, and the aggregate on its wall layer (AGG_N primaries) when it ran; kernel 0 = fast,
+  # 1 = reference twin, before = the fast path of BEFORE
   for cg in "block BM_DemBlock/$CG_SIZE $CG_SIZE" ${AGG_N:+"aggregate_wall BM_DemAggregateWall/$AGG_N"}; do
     set -- $cg
-    for ref in 0 1; do
-      log=$OUT/callgrind.$1.$ref.log
+    for ref in 0 1 ${BEFORE:+before}; do
+      log=$OUT/callgrind.$1.$ref.log bin=$BUILD/bench_dem_scaling kernel=fast
+      [ "$ref" = 1 ] && kernel=reference
+      [ "$ref" = before ] && bin=$OUT/before_src/build/bench_dem_scaling kernel=before
       AGGLO_BLOCK_STEPS=$CG_STEPS AGGLO_BLOCK_WARM=$WARM OMP_NUM_THREADS=1 valgrind --tool=callgrind \
           --callgrind-out-file="$OUT/callgrind.$1.$ref" --collect-atstart=no --toggle-collect='*block_steps*' \
-          "$BUILD/bench_dem_scaling" --benchmark_filter="^$2/$ref/" >/dev/null 2>"$log"
+          "$bin" --benchmark_filter="^$2/${ref/before/0}/" >/dev/null 2>"$log"
       ir=$(sed -n 's/.*Collected : \([0-9]*\).*/\1/p' "$log")
       # particles: the block's N; the aggregate's from its LAMMPS row (primaries + wall spheres)
       np=${3:-$(grep -m1 '"system": "aggregate_wall"' "$RES" | sed -n 's/.*"n": \([0-9]*\).*/\1/p')}
-      echo "{\"code\": \"callgrind\", \"system\": \"$1\", \"n\": $np, \"kernel\": \"$([ $ref = 1 ] && echo reference || echo fast)\", \"steps\": $CG_STEPS, \"instructions\": $ir}" | tee -a "$RES"
+      echo "{\"code\": \"callgrind\", \"system\": \"$1\", \"n\": $np, \"kernel\": \"$kernel\", \"steps\": $CG_STEPS, \"instructions\": $ir}" | tee -a "$RES"
     done
   done
 fi
@@ -155,4 +177,7 @@ for system in ("block", "aggregate_wall"):
         per = {k: v["instructions"] / (v["n"] * v["steps"]) for k, v in cg.items()}
         print(f"callgrind, {system}, N = {cg['fast']['n']}, {cg['fast']['steps']} steps: instructions per particle-step "
               f"fast {per['fast']:.0f}, reference {per['reference']:.0f} -> {per['reference'] / per['fast']:.3f}x")
+        if "before" in per:
+            print(f"callgrind, {system}: before (BEFORE's fast path) {per['before']:.0f} -> now {per['fast']:.0f} "
+                  f"instructions per particle-step ({per['before'] / per['fast']:.3f}x)")
 EOF

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "agglo/dem/contact/alpha_damping.hpp"
 #include "agglo/dem/jkr.hpp"
@@ -79,6 +80,44 @@ TEST(Jkr, InversionRoundTrip) {
         EXPECT_NEAR(a2, a, 1e-12 * p.a0);
       }
     }
+}
+
+// a_of_delta_lanes (the one-thread pair loop's radii, eight at a time) gives a_of_delta's bits in every lane:
+// lanes of different pairs, at or below the turning point delta = -delta_C (no Newton), cold starts, warm
+// starts on either side of the root and near the turning point (slow convergence), mixed in one call so that
+// lanes stop at different iterations.
+TEST(Jkr, LanesBitIdenticalToAOfDelta) {
+  const JkrPair pairs[2] = {seed_pair(), JkrPair::make(2.5e-6, 3e8, 0.03)};
+  constexpr int L = 8;
+  unsigned seed = 12345u;
+  auto uniform = [&seed] {
+    seed = seed * 1664525u + 1013904223u;
+    return (seed >> 8) * (1.0 / 16777216.0);
+  };
+  int compared = 0;
+  for (int call = 0; call < 400; ++call) {
+    const JkrPair* jkr[L];
+    double delta[L], guess[L], a[L];
+    double* out[L];
+    for (int l = 0; l < L; ++l) {
+      jkr[l] = &pairs[(call + l) % 2];
+      const double x = -1.3 + 21.3 * uniform();  // delta / delta_C, also below the turning point -1
+      delta[l] = (l == 0 && call % 4 == 0 ? -0.9999 : x) * jkr[l]->deltaC;  // -0.9999: slow Newton
+      const double exact = jkr[l]->a_of_delta(delta[l]);
+      const int kind = (call + 3 * l) % 4;  // none, left of the root, right of it, far off
+      guess[l] = kind == 0 ? 0.0 : exact * (kind == 1 ? 0.999 : kind == 2 ? 1.001 : 1.0 + 2.0 * uniform());
+      a[l] = guess[l];
+      out[l] = &a[l];
+    }
+    agglo::dem::a_of_delta_lanes<L>(jkr, delta, out);
+    for (int l = 0; l < L; ++l) {
+      const double ref = jkr[l]->a_of_delta(delta[l], guess[l]);
+      ASSERT_EQ(std::memcmp(&a[l], &ref, sizeof ref), 0)
+          << "call " << call << " lane " << l << ": " << a[l] << " vs " << ref;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 400 * L);
 }
 
 TEST(Jkr, DampingCoefficient) {

@@ -38,31 +38,97 @@ struct JkrPair {
   double delta_equilibrium() const { return a0 * a0 / (3.0 * R); }
 };
 
-// Inline: the contact law calls them for every contact and step.
-inline double JkrPair::a_of_delta(double delta, double a_guess) const {
-  const double d = delta / (kJkrCbrt6 * deltaC);  // target of f(s) = 2 s^4 - 4/3 s
-  if (d <= -kJkrSMin) return kJkrSMin * kJkrSMin * a0;  // at/below the break point: the turning point
-  // f is convex and increasing for s >= s_min. From a warm start near the root Newton converges in a
-  // few steps from either side (from the left it lands right of the root, then decreases
-  // monotonically). Without a usable guess (or close to the turning point, where f' -> 0) start from
-  // an upper bound of the root.
-  double s;
-  if (a_guess > 0.0 && a_guess > 1.2 * kJkrSMin * kJkrSMin * a0) {
-    s = std::sqrt(a_guess / a0);
-  } else {
-    s = std::max(1.0, std::sqrt(std::sqrt(std::max(d, 0.0) / 2.0 + 1.0)) + 0.5);
-  }
-  // Quadratic convergence; near the turning point (d -> -s_min) it degrades to linear, hence the cap.
-  for (int it = 0; it < 100; ++it) {
+// The Newton iteration of a_of_delta in parts, so that a_of_delta and a_of_delta_pair run the same
+// operations: t = delta/(6^(1/3) delta_C), the start s, and one step.
+struct JkrNewton {
+  double t = 0.0;  // target of f(s) = 2 s^4 - 4/3 s
+  double s = 0.0;  // iterate s = (a/a0)^(1/2)
+  // One Newton step; false once the change is within 4e-16 s (converged).
+  [[gnu::always_inline]] bool step() {
     double s3 = s * s * s;
-    double f = 2.0 * s3 * s - 4.0 / 3.0 * s - d;
+    double f = 2.0 * s3 * s - 4.0 / 3.0 * s - t;
     double fp = 8.0 * s3 - 4.0 / 3.0;
     double s_new = std::max(s - f / fp, kJkrSMin);
     double change = std::abs(s_new - s);
     s = s_new;
-    if (change <= 4e-16 * s) break;
+    return !(change <= 4e-16 * s);
   }
-  return s * s * a0;
+};
+
+// Inline: the contact law calls them for every contact and step.
+// The start of a_of_delta: false when delta is at/below the break point (a is the turning point's radius).
+[[gnu::always_inline]] inline bool jkr_newton_start(const JkrPair& p, double delta, double a_guess, JkrNewton& n) {
+  n.t = delta / (kJkrCbrt6 * p.deltaC);
+  if (n.t <= -kJkrSMin) return false;
+  // f is convex and increasing for s >= s_min. From a warm start near the root Newton converges in a
+  // few steps from either side (from the left it lands right of the root, then decreases
+  // monotonically). Without a usable guess (or close to the turning point, where f' -> 0) start from
+  // an upper bound of the root.
+  if (a_guess > 0.0 && a_guess > 1.2 * kJkrSMin * kJkrSMin * p.a0) {
+    n.s = std::sqrt(a_guess / p.a0);
+  } else {
+    n.s = std::max(1.0, std::sqrt(std::sqrt(std::max(n.t, 0.0) / 2.0 + 1.0)) + 0.5);
+  }
+  return true;
+}
+
+// Quadratic convergence; near the turning point (t -> -s_min) it degrades to linear, hence the cap of
+// kJkrNewtonCap steps.
+inline constexpr int kJkrNewtonCap = 100;
+
+inline double JkrPair::a_of_delta(double delta, double a_guess) const {
+  JkrNewton n;
+  if (!jkr_newton_start(*this, delta, a_guess, n)) return kJkrSMin * kJkrSMin * a0;
+  for (int it = 0; it < kJkrNewtonCap && n.step(); ++it) {
+  }
+  return n.s * n.s * a0;
+}
+
+// a[l] = p[l]->a_of_delta(delta[l], a[l]) for the lanes l < L (L even), bit for bit, with the L Newton
+// iterations interleaved in two-double vectors (GCC vector extensions; IEEE operations lane by lane, the same
+// as JkrNewton::step's): L independent chains of divisions, no branch per lane. A converged lane keeps its
+// s (selected by mask), as a_of_delta stops; the loop ends when every lane has converged.
+template <int L>
+[[gnu::always_inline]] inline void a_of_delta_lanes(const JkrPair* const (&p)[L], const double (&delta)[L],
+                                                    double* const (&a)[L]) {
+  static_assert(L % 2 == 0);
+  typedef double v2d __attribute__((vector_size(16)));
+  typedef long long v2l __attribute__((vector_size(16)));
+  constexpr int V = L / 2;
+  v2d t[V], s[V];
+  v2l run[V];
+  bool solve[L];
+  for (int l = 0; l < L; ++l) {
+    JkrNewton n;
+    solve[l] = jkr_newton_start(*p[l], delta[l], *a[l], n);
+    t[l / 2][l % 2] = n.t;
+    s[l / 2][l % 2] = solve[l] ? n.s : 1.0;
+    run[l / 2][l % 2] = solve[l] ? -1 : 0;
+  }
+  const v2d smin = {kJkrSMin, kJkrSMin};
+  const v2l sign = {static_cast<long long>(1ULL << 63), static_cast<long long>(1ULL << 63)};
+  for (int it = 0; it < kJkrNewtonCap; ++it) {
+    v2l any = {0, 0};
+    for (int v = 0; v < V; ++v) {
+      const v2d sv = s[v];
+      const v2d s3 = sv * sv * sv;
+      const v2d f = 2.0 * s3 * sv - 4.0 / 3.0 * sv - t[v];
+      const v2d fp = 8.0 * s3 - 4.0 / 3.0;
+      const v2d x = sv - f / fp;
+      const v2l below = x < smin;  // std::max(x, s_min)
+      const v2d s_new = (v2d)(((v2l)smin & below) | ((v2l)x & ~below));
+      const v2d change = (v2d)((v2l)(s_new - sv) & ~sign);
+      const v2l converged = change <= 4e-16 * s_new;
+      s[v] = (v2d)(((v2l)s_new & run[v]) | ((v2l)sv & ~run[v]));
+      run[v] &= ~converged;
+      any |= run[v];
+    }
+    if ((any[0] | any[1]) == 0) break;
+  }
+  for (int l = 0; l < L; ++l) {
+    const double sl = s[l / 2][l % 2];
+    *a[l] = solve[l] ? sl * sl * p[l]->a0 : kJkrSMin * kJkrSMin * p[l]->a0;
+  }
 }
 
 inline double JkrPair::force_of_a(double a) const {

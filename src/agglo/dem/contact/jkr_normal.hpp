@@ -23,6 +23,13 @@ class JkrNormal {
   }
   // Contact radius for overlap delta; `a_prev` (0: none) is the last step's radius (warm start) [m].
   double contact_radius(const JkrPair& jkr, double delta, double a_prev) const { return jkr.a_of_delta(delta, a_prev); }
+  // kLanes contacts at once, bit for bit kLanes contact_radius calls (their Newton iterations interleaved);
+  // a[l] holds the last radius on entry (independent of the break rule, hence static).
+  static constexpr int kLanes = 8;
+  static void contact_radii(const JkrPair* const (&p)[kLanes], const double (&delta)[kLanes],
+                            double* const (&a)[kLanes]) {
+    a_of_delta_lanes<kLanes>(p, delta, a);
+  }
   double force(const JkrPair& jkr, double a) const { return jkr.force_of_a(a); }
   double stiffness(const JkrPair& jkr, double a) const { return jkr.stiffness(a); }
 

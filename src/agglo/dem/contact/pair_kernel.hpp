@@ -13,6 +13,7 @@
 // evaluates pair k with the set Pair::kind names (a wall contact: WallContacts::kind); with a single
 // material there is one set. The interface each sub-model implements is the call made on it below.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -51,17 +52,65 @@ class PairKernel final : public ContactKernel {
     });
   }
 
-  void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
+  // Serially in pair order, in chunks of kRadiusChunk pairs, two passes per chunk: first the overlap, the
+  // hysteresis and the contact radius of every pair (update_radii), then the rest of the law with that radius
+  // (Models::force_at_radius) and the sums. The same operations on the same operands as Models::force, pair
+  // by pair, so the same bits; the contact radii of several pairs are solved together, so that the core overlaps
+  // their Newton iterations (each a dependent chain of divisions). flatten: the sub-model calls are inlined
+  // into the loop (without it GCC keeps the contact radius and the tangential force out of line).
+  [[gnu::flatten]] void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
     std::fill(p.f.begin(), p.f.end(), Vec3{});
     std::fill(p.t.begin(), p.t.end(), Vec3{});
-    for (Pair& pr : pairs) {
-      const PairKinematics kin{p.x[pr.i], p.x[pr.j], p.v[pr.i], p.v[pr.j], p.w[pr.i], p.w[pr.j],
-                               p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
-      const PairForce out = models_[pr.kind].force(pr.jkr, kin, pr.state, dt);
-      p.f[pr.i] += out.f_on_i;
-      p.t[pr.i] += out.t_on_i;
-      p.f[pr.j] -= out.f_on_i;
-      p.t[pr.j] += out.t_on_j;
+    if (pairs.size() < kRadiusChunk) {  // a small system (the seed's agglomerates): one pass, nothing to overlap
+      for (Pair& pr : pairs) add_pair_force(pr, pair_force(pr, p, dt), p);
+      return;
+    }
+    for (std::size_t k0 = 0; k0 < pairs.size(); k0 += kRadiusChunk) {
+      const std::size_t k1 = std::min(pairs.size(), k0 + kRadiusChunk);
+      update_radii(pairs, p, k0, k1);
+      for (std::size_t k = k0; k < k1; ++k) {
+        Pair& pr = pairs[k];
+        const PairKinematics kin{p.x[pr.i], p.x[pr.j], p.v[pr.i], p.v[pr.j], p.w[pr.i], p.w[pr.j],
+                                 p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
+        add_pair_force(pr, models_[pr.kind].force_at_radius(pr.jkr, kin, pr.state, dt), p);
+      }
+    }
+  }
+
+  // The first pass of accumulate_pairs over pairs [k0, k1): step 1 of every pair, then the contact radii of
+  // the engaged ones, Normal::kLanes at a time where the normal model can (Normal::contact_radii).
+  [[gnu::always_inline]] void update_radii(std::vector<Pair>& pairs, const Particles& p, std::size_t k0,
+                                           std::size_t k1) const {
+    std::array<std::size_t, kRadiusChunk> engaged;
+    std::array<double, kRadiusChunk> delta;
+    std::size_t ne = 0;
+    for (std::size_t k = k0; k < k1; ++k) {
+      Pair& pr = pairs[k];
+      const double dk = p.r[pr.i] + p.r[pr.j] - norm(p.x[pr.j] - p.x[pr.i]);
+      if (models_[pr.kind].engaged(pr.jkr, dk, pr.state)) {
+        engaged[ne] = k;
+        delta[ne++] = dk;
+      }
+    }
+    std::size_t e = 0;
+    if constexpr (requires { Normal::kLanes; }) {
+      constexpr int L = Normal::kLanes;
+      for (; e + L <= ne; e += L) {
+        const JkrPair* jkr[L];
+        double d[L];
+        double* a[L];
+        for (int l = 0; l < L; ++l) {
+          Pair& pr = pairs[engaged[e + l]];
+          jkr[l] = &pr.jkr;
+          d[l] = delta[e + l];
+          a[l] = &pr.state.a;
+        }
+        Normal::contact_radii(jkr, d, a);
+      }
+    }
+    for (; e < ne; ++e) {
+      Pair& pr = pairs[engaged[e]];
+      pr.state.a = models_[pr.kind].normal_.contact_radius(pr.jkr, delta[e], pr.state.a);
     }
   }
 
@@ -129,6 +178,14 @@ class PairKernel final : public ContactKernel {
     return models_[pr.kind].force(pr.jkr, kin, pr.state, dt);
   }
 
+  // Pair pr's force and torques added to its two particles, in the order of the gathered buffer.
+  [[gnu::always_inline]] static void add_pair_force(const Pair& pr, const PairForce& out, Particles& p) {
+    p.f[pr.i] += out.f_on_i;
+    p.t[pr.i] += out.t_on_i;
+    p.f[pr.j] -= out.f_on_i;
+    p.t[pr.j] += out.t_on_j;
+  }
+
   // The sub-models of one pair of materials and the contact they compute.
   struct Models {
     explicit Models(const ContactParams& p) : normal_(p), damping_(p), tangential_(p), rolling_(p), twisting_(p) {}
@@ -156,14 +213,17 @@ class PairKernel final : public ContactKernel {
       const double dist = norm(d);
       const double delta = k.ri + k.rj - dist;
       if (!engaged(jkr, delta, s)) return PairForce{};
-      Geometry g;
-      g.n = d / dist;  // from i to j
-      g.mstar = k.mi * k.mj / (k.mi + k.mj);
-      g.li = (dist * dist + k.ri * k.ri - k.rj * k.rj) / (2.0 * dist);
-      g.lj = dist - g.li;
-      g.vrel = k.vi - k.vj + cross(g.li * k.wi + g.lj * k.wj, g.n);
-      g.w_rel = k.wi - k.wj;
-      return respond(jkr, delta, g, s, dt);
+      return respond(jkr, delta, geometry(k, d, dist), s, dt);
+    }
+
+    // Models::force after step 1 and the contact radius (PairKernel::update_radii): the rest with s.a (on an
+    // engaged contact s.active is true after step 1, on any other false).
+    [[gnu::always_inline]] PairForce force_at_radius(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
+                                                     double dt) const {
+      if (!s.active) return PairForce{};
+      const Vec3 d = k.xj - k.xi;
+      const double dist = norm(d);
+      return respond_at_radius(jkr, geometry(k, d, dist), s, dt);
     }
 
     // A sphere against a wall (wall.hpp): the partner of infinite radius and mass, at rest.
@@ -189,11 +249,28 @@ class PairKernel final : public ContactKernel {
       Vec3 vrel, w_rel;
     };
 
+    // The geometry of a pair of spheres at centre distance dist = |d|, d = x_j - x_i.
+    [[gnu::always_inline]] static Geometry geometry(const PairKinematics& k, const Vec3& d, double dist) {
+      Geometry g;
+      g.n = d / dist;  // from i to j
+      g.mstar = k.mi * k.mj / (k.mi + k.mj);
+      g.li = (dist * dist + k.ri * k.ri - k.rj * k.rj) / (2.0 * dist);
+      g.lj = dist - g.li;
+      g.vrel = k.vi - k.vj + cross(g.li * k.wi + g.lj * k.wj, g.n);
+      g.w_rel = k.wi - k.wj;
+      return g;
+    }
+
     PairForce respond(const JkrPair& jkr, double delta, const Geometry& g, ContactState& s, double dt) const {
+      s.a = normal_.contact_radius(jkr, delta, s.a);
+      return respond_at_radius(jkr, g, s, dt);
+    }
+
+    // Steps 2-4 with the contact radius s.a already updated.
+    PairForce respond_at_radius(const JkrPair& jkr, const Geometry& g, ContactState& s, double dt) const {
       PairForce out;
       ContactPoint c;
       c.n = g.n;
-      s.a = normal_.contact_radius(jkr, delta, s.a);
       c.a = s.a;
       c.f_ne = normal_.force(jkr, c.a);
       c.eta_n = damping_.coefficient(g.mstar, normal_.stiffness(jkr, c.a));
@@ -228,6 +305,9 @@ class PairKernel final : public ContactKernel {
     Rolling rolling_;
     Twisting twisting_;
   };
+
+  // Pairs per chunk of accumulate_pairs' two passes (their states stay in the L1 cache between the passes).
+  static constexpr std::size_t kRadiusChunk = 64;
 
   std::vector<Models> models_;
 };
