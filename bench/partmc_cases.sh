@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # PartMC's three coagulation benchmarks side by side (issue 10 item 5; bench/README.md "PartMC's
 # coagulation benchmarks"): cases/partmc_constant.toml, partmc_additive.toml, partmc_brownian.toml,
-# each at 1e4, 3e4 and 1e5 samples (3e4: the equal-accuracy point against PartMC's 1e5), with both
+# each at 1e4, 3e4, 5e4 and 1e5 samples (3e4 and 5e4: the equal-accuracy points against PartMC's 1e5), with both
 # collision selections. Outputs as PartMC's timing runs: N(t) at 11 times, size distributions at the case's
 # psd_times, no particle snapshots. Per run: N(T) error against the closed
 # form (constant, additive) or `agglo sectional` (Brownian), size-distribution relative L2 error
@@ -18,7 +18,7 @@
 # Environment (defaults in brackets; QUICK=1 changes the ones marked *):
 #   AGGLO            agglo binary [build/agglo]
 #   JOBS             runs at a time [2]; every run uses one thread (--threads 1, OMP_NUM_THREADS=1)
-#   SAMPLES*         sample counts [10000 30000 100000]; quick: 10000
+#   SAMPLES*         sample counts [10000 30000 50000 100000]; quick: 10000
 #   SELECTIONS       collision selections, passed as --set time.selection=NAME [binned nanbu]
 #   SELECTION_KEY    1: pass time.selection [1]; 0: pass nothing (an agglo without the key): SELECTIONS
 #                    must then be one name, the label of the built-in method (e.g. SELECTIONS=nanbu)
@@ -35,6 +35,11 @@
 #   SECT_BPD         sectional.bins_per_decade of the Brownian reference [80]
 #   CALLGRIND*       1: instruction counts with valgrind --tool=callgrind, 1e4 samples, seed 1, constant
 #                    and additive full, Brownian shortened [1 if valgrind is installed]; quick: 0
+#   CG_SAMPLES       sample counts of the callgrind runs [10000]; with more than 1e4 the Brownian one runs the
+#                    full 4 h (BROWN_END) as well, e.g. CG_SAMPLES="50000 100000" SAMPLES=10000 SEEDS=2 SHORT_SEEDS=1
+#                    (callgrind only: the three cases' instructions at the equal-accuracy sample counts)
+#   BEFORE_AGGLO     an agglo built from an earlier commit: every callgrind run also with it (name _before),
+#                    the instruction ratio after/before printed (bit-identical changes: same N(T))
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 OUT=${1:-$SRC/results/partmc_cases}
@@ -48,7 +53,7 @@ fi
 if [[ $QUICK == 1 ]]; then
   q_samples=10000 q_seeds=2 q_nb_seeds=2 q_brown_end=600 q_short_seeds=2 q_callgrind=0
 else
-  q_samples="10000 30000 100000" q_seeds=10 q_nb_seeds=3 q_brown_end=14400 q_short_seeds=3
+  q_samples="10000 30000 50000 100000" q_seeds=10 q_nb_seeds=3 q_brown_end=14400 q_short_seeds=3
   q_callgrind=$(command -v valgrind > /dev/null && echo 1 || echo 0)
 fi
 JOBS=${JOBS:-2}
@@ -64,8 +69,12 @@ SHORT_RANGE=${SHORT_RANGE:-3.5}
 SHORT_SEEDS=${SHORT_SEEDS:-$q_short_seeds}
 SECT_BPD=${SECT_BPD:-80}
 CALLGRIND=${CALLGRIND:-$q_callgrind}
+CG_SAMPLES=${CG_SAMPLES:-10000}
+BEFORE_AGGLO=${BEFORE_AGGLO:-}
+[[ -z $BEFORE_AGGLO || -x $BEFORE_AGGLO ]] || die_early=1
 
 die() { echo "partmc_cases.sh: $*" >&2; exit 1; }
+[[ -z ${die_early:-} ]] || die "BEFORE_AGGLO=$BEFORE_AGGLO is not an executable"
 [[ -x $AGGLO ]] || die "no agglo binary at $AGGLO (build it: cmake --build build --target agglo)"
 [[ -x /usr/bin/time ]] || die "/usr/bin/time is missing (apt-get install time)"
 read -r -a sel_list <<< "$SELECTIONS"
@@ -89,7 +98,8 @@ $("$AGGLO" --version 2>/dev/null | tail -1), script commit $(git -C "$SRC" rev-p
 host $(uname -n), $(nproc) cores, JOBS=$JOBS runs at a time, one thread each, QUICK=$QUICK
 SELECTIONS="${sel_list[*]}" SELECTION_KEY=$SELECTION_KEY SEEDS=$SEEDS
 NANBU_BROWN_SAMPLES="$NANBU_BROWN_SAMPLES" NANBU_BROWN_SEEDS=$NANBU_BROWN_SEEDS BROWN_END=$BROWN_END
-SHORT_END=$SHORT_END SHORT_SEEDS=$SHORT_SEEDS SECT_BPD=$SECT_BPD CALLGRIND=$CALLGRIND
+SHORT_END=$SHORT_END SHORT_SEEDS=$SHORT_SEEDS SECT_BPD=$SECT_BPD CALLGRIND=$CALLGRIND CG_SAMPLES="$CG_SAMPLES"
+${BEFORE_AGGLO:+BEFORE_AGGLO: $("$BEFORE_AGGLO" --version 2>/dev/null | tail -1)}
 END_SETTINGS
 jobs_file="$OUT/jobs.txt"
 : > "$jobs_file"
@@ -111,9 +121,15 @@ for sel in "${sel_list[@]}"; do
     for seed in $(seq 1 "$SHORT_SEEDS"); do add_job run "brownian_short_n${n}_${sel}_s${seed}" brownian "$sel" "$n" "$seed" "$SHORT_END"; done
   done
   if [[ $CALLGRIND == 1 ]]; then
-    add_job cg "constant_full_n10000_${sel}" constant "$sel" 10000 1 -
-    add_job cg "additive_full_n10000_${sel}" additive "$sel" 10000 1 -
-    add_job cg "brownian_short_n10000_${sel}" brownian "$sel" 10000 1 "$SHORT_END"
+    for n in $CG_SAMPLES; do
+      for kind in cg ${BEFORE_AGGLO:+cgb}; do
+        sfx=$([[ $kind == cgb ]] && echo _before || true)
+        add_job "$kind" "constant_full_n${n}_${sel}$sfx" constant "$sel" "$n" 1 -
+        add_job "$kind" "additive_full_n${n}_${sel}$sfx" additive "$sel" "$n" 1 -
+        add_job "$kind" "brownian_short_n${n}_${sel}$sfx" brownian "$sel" "$n" 1 "$SHORT_END"
+        [[ $n -gt 10000 ]] && add_job "$kind" "brownian_full_n${n}_${sel}$sfx" brownian "$sel" "$n" 1 "$BROWN_END"
+      done
+    done
   fi
 done
 add_job sect brownian_full brownian - 0 1 "$BROWN_END"
@@ -130,7 +146,7 @@ run_job() {
     args+=(--set "sectional.bins_per_decade=$SECT_BPD")
     cmd=(sectional)
   else
-    dir="$OUT/$([[ $kind == cg ]] && echo callgrind || echo runs)/$name"
+    dir="$OUT/$([[ $kind == cg* ]] && echo callgrind || echo runs)/$name"
     args+=(--set "population.0.samples=$n" --set "output.snapshot_times=[]")
     local t_end=$end
     [[ $t_end == - ]] && t_end=$(sed -n 's/^end = \([0-9.e+]*\).*/\1/p' "$SRC/cases/partmc_$case.toml" | head -1)
@@ -141,8 +157,10 @@ run_job() {
   fi
   mkdir -p "$dir"
   local pre=(/usr/bin/time -o "$dir/time.txt" -f '%e %U %S %M')
-  [[ $kind == cg ]] && pre=(valgrind --tool=callgrind --callgrind-out-file="$dir/callgrind.out" --log-file="$dir/callgrind.log")
-  if ! OMP_NUM_THREADS=1 "${pre[@]}" "$AGGLO" -q --no-plots "${cmd[@]}" "$SRC/cases/partmc_$case.toml" \
+  [[ $kind == cg* ]] && pre=(valgrind --tool=callgrind --callgrind-out-file="$dir/callgrind.out" --log-file="$dir/callgrind.log")
+  local bin=$AGGLO
+  [[ $kind == cgb ]] && bin=$BEFORE_AGGLO
+  if ! OMP_NUM_THREADS=1 "${pre[@]}" "$bin" -q --no-plots "${cmd[@]}" "$SRC/cases/partmc_$case.toml" \
       --out "$dir/out" "${args[@]}" > "$dir/stdout.txt" 2> "$dir/stderr.txt"; then
     echo "FAILED: $name ($AGGLO -q --no-plots ${cmd[*]} cases/partmc_$case.toml ${args[*]}): $(tail -1 "$dir/stderr.txt")" >&2
     return 1
@@ -150,13 +168,13 @@ run_job() {
   rm -f "$dir/callgrind.out"  # the total is in callgrind.log; the profile itself is large
 }
 export -f run_job
-export OUT SRC AGGLO SECT_BPD SELECTION_KEY SHORT_RANGE
+export OUT SRC AGGLO BEFORE_AGGLO SECT_BPD SELECTION_KEY SHORT_RANGE
 
 n_jobs=$(wc -l < "$jobs_file")
 echo "partmc_cases.sh: $n_jobs jobs, $JOBS at a time, into $OUT (selections: ${sel_list[*]}; samples: ${samples_list[*]}; seeds: $SEEDS)" >&2
 t0=$(date +%s)
 # References and timed runs first, callgrind after them (slow; it would share the cores with timed runs).
-for kinds in 'sect|run' 'cg'; do
+for kinds in 'sect|run' 'cg|cgb'; do
   if ! { grep -E "^($kinds) " "$jobs_file" || true; } | xargs -r -P "$JOBS" -L 1 bash -c 'run_job "$@"' _; then
     die "some runs failed (lines FAILED above; each run's stderr.txt is in its folder under $OUT)"
   fi

@@ -85,3 +85,34 @@ TEST(KernelPartmc, MechanismSelectedByNameAndBounded) {
     }
   }
 }
+
+// The cached form (per-thread factors by sample index) is the direct formula bit for bit: on first use,
+// on reuse, after a sample's size and density change (a merge) and under another gas on the same thread.
+TEST(KernelPartmc, CachedFactorsGiveTheDirectKernelExactly) {
+  const Gas gas = Gas::air(298.0, 101325.0, false);
+  const Sound snd = Sound::make(gas, false, 140.0, 2000.0);
+  SampleSet p;
+  for (int i = 0; i < 6; ++i) {
+    const double d = 1e-8 * std::pow(3.0, i), v = pi * d * d * d / 6;
+    p.add(0, 0, 0, 0, v, (900.0 + 50.0 * i) * v, 1, 0, gas, snd);
+  }
+  const auto check_all = [&](const PartmcGas& g) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (std::size_t j = 0; j < p.size(); ++j)
+        EXPECT_EQ(beta_brownian_partmc_cached(g, p, i, j), beta_brownian_partmc(g, p.d[i], p.d[j], p.rho[i], p.rho[j]))
+            << i << " " << j;
+  };
+  const PartmcGas warm = PartmcGas::air(298.0, 101325.0), cold = PartmcGas::air(250.0, 80000.0);
+  check_all(warm);
+  check_all(warm);  // from the cache
+  const double d2 = p.d[2], rho2 = p.rho[2];
+  const double v = p.volume(2) + p.volume(4);  // sample 2 takes sample 4 in: new d and rho
+  p.vol_l[2] = v;
+  p.mass[2] += p.mass[4];
+  p.refresh(2, gas, snd);
+  ASSERT_NE(p.d[2], d2);
+  ASSERT_NE(p.rho[2], rho2);
+  check_all(warm);  // sample 2's cached factors are stale and must not be used
+  check_all(cold);  // another gas: every entry recomputed
+  check_all(warm);
+}

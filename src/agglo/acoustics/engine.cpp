@@ -118,16 +118,23 @@ void Engine::bin() {
   cell_of_.resize(n);
   order_.resize(n);
   compute_cells(0, n);
-  sort_cells();
+  sort_cells(0);
 }
 
 // Counting sort by cell; a cell's samples in canonical order (stored order when that is canonical).
-void Engine::sort_cells() {
+// counted_team > 0: the cell counts are the sums of thread_counts_[0, counted_team) (move_pass counted them
+// in parallel; integer sums, so the same counts); 0: counted here.
+void Engine::sort_cells(int counted_team) {
   const std::size_t n = p_.size();
   const std::size_t nc = static_cast<std::size_t>(s_.motion.domain.num_cells());
   start_.assign(nc + 1, 0);
   // (Unrolled: the loop overhead is a third of these loops' instructions; the same order of updates.)
-  if (by_rank_.empty()) {
+  if (counted_team > 0) {
+    for (std::size_t t = 0; t < static_cast<std::size_t>(counted_team); ++t) {
+      const std::uint32_t* cnt = thread_counts_[t].data();
+      for (std::size_t c = 0; c < nc; ++c) start_[c + 1] += cnt[c];
+    }
+  } else if (by_rank_.empty()) {
     AGGLO_SORT_UNROLL4
     for (std::size_t i = 0; i < n; ++i) ++start_[cell_of_[i] + 1];
   } else {  // (in canonical order also the counts: in stored order runs of one cell chain the increments)
@@ -287,6 +294,10 @@ void Engine::step() {
   if (!blocks_fixed_ || block_samples_.back() != n ||
       block_cells_.size() != static_cast<std::size_t>(std::max(1, omp_get_max_threads())) + 1)
     split_blocks();
+  if (move && thread_counts_.size() < static_cast<std::size_t>(nt))
+    thread_counts_.resize(static_cast<std::size_t>(nt));
+  for (std::size_t t = 0; move && t < static_cast<std::size_t>(nt); ++t)
+    thread_counts_[t].resize(static_cast<std::size_t>(nc));
   for (std::size_t b = 0; b < move_claims_.size(); ++b)
     move_claims_[b].reset(static_cast<std::uint32_t>((block_samples_[b + 1] - block_samples_[b] + kMotionChunk - 1) /
                                                      kMotionChunk));
@@ -298,7 +309,7 @@ void Engine::step() {
 #pragma omp single
     {
       try {
-        reuse = bin_step(move, bad_state);
+        reuse = bin_step(move, bad_state, team);
       } catch (...) {
         serial_error = std::current_exception();
       }
@@ -320,6 +331,8 @@ void Engine::move_pass(int thread, int team, bool& bad_state) {
   const Motion& M = s_.motion;
   const bool moving = M.integrator != Integrator::none;
   bool ok = true;
+  std::vector<std::uint32_t>& counts = thread_counts_[static_cast<std::size_t>(thread)];
+  std::fill(counts.begin(), counts.end(), 0u);
   share_blocks(move_claims_, thread, team, [&](std::size_t block, std::size_t piece) {
     const std::size_t b = block_samples_[block] + piece * kMotionChunk;
     const std::size_t e = std::min<std::size_t>(block_samples_[block + 1], b + kMotionChunk);
@@ -328,7 +341,10 @@ void Engine::move_pass(int thread, int team, bool& bad_state) {
       M.advance(p_, b, e, t0, s_.collision_dt, substeps_);
       chunk_ok = state_ok(b, e);
     }
-    if (chunk_ok) compute_cells(b, e);  // only for valid positions (otherwise the step throws)
+    if (chunk_ok) {  // only for valid positions (otherwise the step throws)
+      compute_cells(b, e);
+      for (std::size_t i = b; i < e; ++i) ++counts[cell_of_[i]];  // the sort's counts, in parallel
+    }
     ok = ok && chunk_ok;
   });
   if (!ok) {
@@ -338,9 +354,9 @@ void Engine::move_pass(int thread, int team, bool& bad_state) {
 }
 
 // The serial part of a step (one thread): advances the step counter, throws on a bad state, sorts the
-// samples by cell, reorders large sets every kReorderEvery steps; returns what the binned selection
-// does with its groups this step.
-GroupReuse Engine::bin_step(bool moved, bool bad_state) {
+// samples by cell (from the cell counts of the team's move_pass), reorders large sets every kReorderEvery
+// steps; returns what the binned selection does with its groups this step.
+GroupReuse Engine::bin_step(bool moved, bool bad_state, int team) {
   const std::size_t n = p_.size();
   const bool moving = s_.motion.integrator != Integrator::none;
   ++step_;
@@ -348,7 +364,7 @@ GroupReuse Engine::bin_step(bool moved, bool bad_state) {
     check_state();        // throws with the message naming the first bad particle
     compute_cells(0, n);  // (not reached unless the fast test gave a false alarm)
   }
-  if (moved) sort_cells();
+  if (moved) sort_cells(bad_state ? 0 : team);
   if (n >= kReorderMinSamples && step_ % kReorderEvery == 1 && (moving || step_ == 1))
     reorder_by_cell(false);  // large sets: a new canonical order (as before the canonical order was kept)
   else if (sorts_storage() && (!blocks_fixed_ || (moving && step_ - sorted_at_ >= kResortEvery)))

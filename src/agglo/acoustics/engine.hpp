@@ -90,7 +90,7 @@ class Engine {
   void bin();
   // The parts of step(), called inside its parallel region (engine.cpp).
   void move_pass(int thread, int team, bool& bad_state);  // motion, state check, cell index of the thread's block
-  GroupReuse bin_step(bool moved, bool bad_state);         // serial: step counter, checks, sort by cell
+  GroupReuse bin_step(bool moved, bool bad_state, int team);  // serial: step counter, checks, sort by cell
   void collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::vector<std::string>& errors, int thread,
                     int team);  // the cells of the thread's block
   // Storage order (engine.cpp): samples stored in the cell order of order_; keep_canonical: the canonical
@@ -103,7 +103,7 @@ class Engine {
   void split_blocks();        // blocks of cells by the present counts, of samples evenly (unsorted storage)
   CollisionContext collision_context() const;
   void compute_cells(std::size_t begin, std::size_t end);  // cell_of_ for samples [begin, end)
-  void sort_cells();                                        // order_, start_ from cell_of_
+  void sort_cells(int counted_team);  // order_, start_ from cell_of_ (counts from move_pass's threads if > 0)
   bool state_ok(std::size_t begin, std::size_t end) const;  // fast test of check_state's conditions
   EngineSettings s_;
   mutable SampleSet p_;  // (mutable: the storage order, not the samples, changes in canonicalize())
@@ -114,6 +114,7 @@ class Engine {
   int substeps_ = 1;
   mutable std::vector<std::uint32_t> cell_of_, order_;
   std::vector<std::uint32_t> start_, fill_;
+  std::vector<std::vector<std::uint32_t>> thread_counts_;  // by thread of a step's team: samples per cell (move_pass)
   mutable std::vector<std::uint32_t> rank_, by_rank_;  // canonical position of stored sample i, and inverse
                                                        // (both empty: stored in canonical order)
   mutable bool blocks_fixed_ = false;  // blocks from a sort of the present storage

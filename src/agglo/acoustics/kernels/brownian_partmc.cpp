@@ -1,6 +1,9 @@
 #include "agglo/acoustics/kernels/brownian_partmc.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "agglo/core/constants.hpp"
 
@@ -31,6 +34,37 @@ PartmcParticle partmc_particle(const PartmcGas& g, double d, double rho) {
   s.delta = (std::pow(2.0 * s.r + l, 3) - std::pow(4.0 * s.r * s.r + l * l, 1.5)) / (6.0 * s.r * l) - 2.0 * s.r;
   return s;
 }
+
+// beta of the header's pair formula from the two particles' factors.
+double partmc_pair(const PartmcParticle& a, const PartmcParticle& b) {
+  const double rs = a.r + b.r, Ds = a.D + b.D;
+  const double ds = std::sqrt(a.delta * a.delta + b.delta * b.delta), cs = std::sqrt(a.c2 + b.c2);
+  return 4.0 * pi * rs * Ds / (rs / (rs + ds) + 4.0 * Ds / (rs * cs));
+}
+
+// The factors of every sample index a thread has evaluated, with the (d, rho) and the gas they were
+// computed from: an entry is used only while all of them are bit for bit the same, so a merge or a
+// split (new d or rho) recomputes it and the kernel is that of partmc_particle exactly.
+struct PartmcFactorCache {
+  struct Entry {
+    double d = std::numeric_limits<double>::quiet_NaN(), rho = 0.0;  // NaN: empty (never equal)
+    PartmcParticle f{};
+  };
+  double temperature = 0.0, viscosity = 0.0, mean_free_path = 0.0;
+  std::vector<Entry> entries;
+};
+
+const PartmcParticle& cached_partmc_particle(PartmcFactorCache& c, std::size_t i, double d, double rho,
+                                             const PartmcGas& g) {
+  if (i >= c.entries.size()) c.entries.resize(std::max(i + 1, 2 * c.entries.size()));
+  PartmcFactorCache::Entry& e = c.entries[i];
+  if (!(e.d == d && e.rho == rho)) {
+    e.d = d;
+    e.rho = rho;
+    e.f = partmc_particle(g, d, rho);
+  }
+  return e.f;
+}
 }  // namespace
 
 PartmcGas PartmcGas::air(double temperature, double pressure) {
@@ -44,10 +78,21 @@ PartmcGas PartmcGas::air(double temperature, double pressure) {
 }
 
 double beta_brownian_partmc(const PartmcGas& gas, double di, double dj, double rhoi, double rhoj) {
-  const PartmcParticle a = partmc_particle(gas, di, rhoi), b = partmc_particle(gas, dj, rhoj);
-  const double rs = a.r + b.r, Ds = a.D + b.D;
-  const double ds = std::sqrt(a.delta * a.delta + b.delta * b.delta), cs = std::sqrt(a.c2 + b.c2);
-  return 4.0 * pi * rs * Ds / (rs / (rs + ds) + 4.0 * Ds / (rs * cs));
+  return partmc_pair(partmc_particle(gas, di, rhoi), partmc_particle(gas, dj, rhoj));
+}
+
+double beta_brownian_partmc_cached(const PartmcGas& gas, const SampleSet& p, std::size_t i, std::size_t j) {
+  thread_local PartmcFactorCache cache;
+  if (cache.temperature != gas.temperature || cache.viscosity != gas.viscosity ||
+      cache.mean_free_path != gas.mean_free_path) {  // another kernel's gas on this thread: start afresh
+    cache.entries.assign(cache.entries.size(), PartmcFactorCache::Entry{});
+    cache.temperature = gas.temperature;
+    cache.viscosity = gas.viscosity;
+    cache.mean_free_path = gas.mean_free_path;
+  }
+  const PartmcParticle a = cached_partmc_particle(cache, i, p.d[i], p.rho[i], gas);  // copies: the next call
+  const PartmcParticle b = cached_partmc_particle(cache, j, p.d[j], p.rho[j], gas);  // may grow the cache
+  return partmc_pair(a, b);
 }
 
 double partmc_thermal_speed_ratio() { return std::sqrt(kBoltzmann / constants::k_B); }

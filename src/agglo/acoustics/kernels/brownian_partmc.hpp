@@ -31,6 +31,11 @@ struct PartmcGas {
 
 // beta for spheres of diameters d_i, d_j [m] and densities rho_i, rho_j [kg/m^3].
 double beta_brownian_partmc(const PartmcGas& gas, double di, double dj, double rhoi, double rhoj);
+// The same for samples i and j of p (d and rho from its caches), bit for bit, with each sample's particle
+// factors (r, D, c^2, delta: two pow, one exp, one sqrt) kept per thread and sample index and recomputed
+// only when the sample's d or rho (a merge, a split) or the gas changed: the DSMC evaluates a sample
+// against many partners between its merges.
+double beta_brownian_partmc_cached(const PartmcGas& gas, const SampleSet& p, std::size_t i, std::size_t j);
 // sqrt(k_B(PartMC) / k_B(agglo)): turns agglo's thermal speeds into PartMC's.
 double partmc_thermal_speed_ratio();
 // Sets cb.diff_max (PartMC's D at cb.d_min) and cb.gap_max (8 D_max / (pi c_min), c_min PartMC's thermal speed
@@ -49,7 +54,7 @@ struct BrownianPartmc {
       : gas(g), pgas(PartmcGas::air(g.temperature, g.pressure)), speed_ratio(partmc_thermal_speed_ratio()) {}
   KernelNeeds needs() const { return {.thermal_speed = true}; }
   double beta(const SampleSet& p, std::size_t i, std::size_t j, double) const {
-    return beta_brownian_partmc(pgas, p.d[i], p.d[j], p.rho[i], p.rho[j]);
+    return beta_brownian_partmc_cached(pgas, p, i, j);
   }
   double bound(const SampleSet& p, std::size_t i, const CellBounds& cb) const {
     return speed_ratio * fuchs_bound(gas, p, i, cb);
