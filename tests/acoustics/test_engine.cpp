@@ -146,7 +146,7 @@ TEST(Engine, SortedStorageGivesEveryBitOfTheUnsortedRun) {
 }
 
 // The counting sort and the re-sort of the storage run on every thread of a step's team (engine.cpp:
-// move_pass counts by range of canonical ranks, sort_pass places each range, reorder_pass shares out the
+// move_pass counts by range of canonical ranks, sort_range places each range (by whichever thread claims it), reorder_pass shares out the
 // arrays): every bit of the one-thread run at two and three threads (three: ranges of unequal size), every
 // step at the full team (AGGLO_THREAD_PROBE=off), for the sorted storage (re-sorts at steps 1, 65 and 129,
 // the last two from a kept canonical order), the unsorted reference twin and a set of 100 000 samples (the

@@ -147,7 +147,7 @@ void Engine::bin() {
 
 // Counting sort by cell; a cell's samples in canonical order (stored order when that is canonical). The
 // serial form (start, a false alarm of the state check, tests): a step's team sorts in move_pass and
-// sort_pass, with the same result.
+// sort_range, with the same result.
 void Engine::sort_cells() {
   const std::size_t n = p_.size();
   const std::size_t nc = static_cast<std::size_t>(s_.motion.domain.num_cells());
@@ -173,32 +173,33 @@ void Engine::sort_cells() {
   }
 }
 
-// The counting sort of a step, on thread `thread` of its team (after move_pass counted every sample by
-// rank range and cell): the thread places the samples of its range of canonical ranks (RankRanges). A
-// cell's slots go to the ranges in order, so cell c's samples of range q start at start_[c] plus the cell's
-// samples of the ranges before q, and within a range they are placed in rank order: the same order_ and
-// start_ as sort_cells for any team (integer sums). Thread 0 writes start_.
-void Engine::sort_pass(int thread, int team) {
+// The counting sort of a step, range q of canonical ranks (RankRanges of a team of `team`; after move_pass
+// counted every sample by range and cell): the samples of the range, placed with `fill` (nc slots of
+// scratch). A cell's slots go to the ranges in order, so cell c's samples of range q start at start_[c]
+// plus the cell's samples of the ranges before q, and within a range they are placed in rank order: the
+// same order_ and start_ as sort_cells for any team (integer sums), whichever thread places a range.
+// Range 0 writes start_.
+void Engine::sort_range(std::size_t q, int team, std::uint32_t* fill) {
   const std::size_t n = p_.size();
   const std::size_t nc = static_cast<std::size_t>(s_.motion.domain.num_cells());
-  const std::size_t t = static_cast<std::size_t>(thread), tm = static_cast<std::size_t>(team);
-  std::uint32_t* fill = thread_fill_[t].data();
+  const std::size_t tm = static_cast<std::size_t>(team);
+  if (q >= tm) return;  // (a team smaller than the step's claims)
   std::uint32_t run = 0;  // samples in the cells before c
   for (std::size_t c = 0; c < nc; ++c) {
-    std::uint32_t total = 0, before = 0;  // cell c's samples: all, and those of the ranges before t
+    std::uint32_t total = 0, before = 0;  // cell c's samples: all, and those of the ranges before q
     for (std::size_t u = 0; u < tm; ++u)
-      for (std::size_t q = 0; q < tm; ++q) {
-        const std::uint32_t k = thread_counts_[u][q * nc + c];
+      for (std::size_t v = 0; v < tm; ++v) {
+        const std::uint32_t k = thread_counts_[u][v * nc + c];
         total += k;
-        before += q < t ? k : 0;
+        before += v < q ? k : 0;
       }
     fill[c] = run + before;
-    if (t == 0) start_[c] = run;
+    if (q == 0) start_[c] = run;
     run += total;
   }
-  if (t == 0) start_[nc] = run;
+  if (q == 0) start_[nc] = run;
   const RankRanges ranges(n, team);
-  const std::size_t r0 = ranges.first(t), r1 = ranges.first(t + 1);
+  const std::size_t r0 = ranges.first(q), r1 = ranges.first(q + 1);
   const std::uint32_t* cell_of = cell_of_.data();
   std::uint32_t* order = order_.data();
   if (by_rank_.empty()) {
@@ -218,34 +219,39 @@ bool Engine::sorts_storage() const {
 
 // Stores the samples in the order of order_ (cells in turn; a cell's samples in canonical order), so that
 // order_ becomes the identity and a block of cells holds a contiguous range of samples. Serial form: a
-// step's team runs reorder_pass on every thread, then finish_reorder on one.
+// step's team runs every part of reorder_pass, then finish_reorder on one thread.
 void Engine::reorder_by_cell(bool keep_canonical) {
-  reorder_pass(0, 1, keep_canonical);
-  finish_reorder(keep_canonical);
+  reorder_pass(0, 1, keep_canonical, 1);
+  finish_reorder(keep_canonical, 1);
 }
 
-// The thread's part of a re-sort: its share of the sample arrays (SampleSet::permute), and for its range of
-// new positions k the cell index and (keep_canonical) the canonical rank of the sample moved to k and the
-// inverse; into the *_next_ arrays (sized n by step()), as the team still reads rank_ and cell_of_.
-void Engine::reorder_pass(int thread, int team, bool keep_canonical) {
-  const std::size_t n = p_.size(), t = static_cast<std::size_t>(thread), tm = static_cast<std::size_t>(team);
-  p_.permute(order_, thread, team);
+// Part `part` of `parts` of a re-sort: its share of the sample arrays (SampleSet::permute), and for its
+// range of new positions k the cell index and (keep_canonical) the canonical rank of the sample moved to k,
+// the inverse and range_base_ for a team of `team`; into the *_next_ arrays (sized n by prepare_step), as
+// the other parts still read rank_ and cell_of_.
+void Engine::reorder_pass(int part, int parts, bool keep_canonical, int team) {
+  const std::size_t n = p_.size(), t = static_cast<std::size_t>(part), tm = static_cast<std::size_t>(parts);
+  p_.permute(order_, part, parts);
   const std::size_t k0 = t * n / tm, k1 = (t + 1) * n / tm;
   for (std::size_t k = k0; k < k1; ++k) cell_next_[k] = cell_of_[order_[k]];
   if (!keep_canonical) return;
+  const RankRanges ranges(n, team);
+  const std::uint64_t nc = static_cast<std::uint64_t>(s_.motion.domain.num_cells());
   for (std::size_t k = k0; k < k1; ++k) {
     const std::uint32_t r = rank_.empty() ? order_[k] : rank_[order_[k]];
     rank_next_[k] = r;
     by_rank_next_[r] = static_cast<std::uint32_t>(k);
+    range_base_[k] = static_cast<std::uint32_t>(ranges.of(r) * nc);
   }
 }
 
 // The serial end of a re-sort (after every part of reorder_pass): keep_canonical: the canonical order stays
 // (rank_), else the new storage order becomes the canonical order (large sets, as before).
-void Engine::finish_reorder(bool keep_canonical) {
+void Engine::finish_reorder(bool keep_canonical, int team) {
   if (keep_canonical) {
     rank_.swap(rank_next_);
     by_rank_.swap(by_rank_next_);
+    range_team_ = team;
   } else {
     forget_storage_order();
   }
@@ -271,6 +277,7 @@ void Engine::canonicalize() const {
 void Engine::forget_storage_order() const {
   rank_.clear();
   by_rank_.clear();
+  range_team_ = 0;
   blocks_fixed_ = false;
 }
 
@@ -357,12 +364,21 @@ Engine::Resort Engine::prepare_step(bool move, int nt) {
   for (std::size_t b = 0; b < move_claims_.size(); ++b)
     move_claims_[b].reset(static_cast<std::uint32_t>((block_samples_[b + 1] - block_samples_[b] + kMotionChunk - 1) /
                                                      kMotionChunk));
+  if (sort_claims_.size() != tn) {
+    sort_claims_ = std::vector<BlockClaims>(tn);
+    resort_claims_ = std::vector<BlockClaims>(tn);
+  }
+  for (std::size_t t = 0; t < tn; ++t) {
+    sort_claims_[t].reset(1);
+    resort_claims_[t].reset(1);
+  }
   const Resort resort = resort_due(step_ + 1);
   if (resort != Resort::none) {
     cell_next_.resize(n);
     if (resort == Resort::keep_canonical) {
       rank_next_.resize(n);
       by_rank_next_.resize(n);
+      range_base_.resize(n);
     }
   }
   return resort;
@@ -417,24 +433,39 @@ void Engine::step() {
     bool bad = false;
 #pragma omp atomic read
     bad = bad_state;
-    if (move && !bad) sort_pass(thread, team);  // (after a bad state thread 0 sorts in bin_step)
-    const bool resorting = resort != Resort::none && !bad;
-    if (resorting) {
-#pragma omp barrier
+    const bool sorting = move && !bad, resorting = resort != Resort::none && !bad;
+    auto serial = [&] {
+      if (serial_error) return;
       try {
-        reorder_pass(thread, team, resort == Resort::keep_canonical);
-      } catch (...) {
-#pragma omp critical(agglo_engine_error)
-        if (!serial_error) serial_error = std::current_exception();
-      }
-#pragma omp barrier
-    }
-    if (thread == 0 && !serial_error) {  // (thread 0 wrote start_ in sort_pass)
-      try {
-        reuse = bin_step(move, bad, resort, resorting);
+        reuse = bin_step(move, bad, resort, resorting, team);
       } catch (...) {
         serial_error = std::current_exception();
       }
+    };
+    // The sort's ranges and the re-sort's parts go to whichever thread claims them (block_claims.hpp: its
+    // own first), so a thread the OS holds back does not hold up the step; the claimer of range 0 (which
+    // wrote start_) runs the serial part unless a re-sort follows.
+    if (sorting)
+      share_blocks(sort_claims_, thread, team, [&](std::size_t q, std::size_t) {
+        sort_range(q, team, thread_fill_[static_cast<std::size_t>(thread)].data());
+        if (q == 0 && !resorting) serial();
+      });
+    if (resorting) {
+#pragma omp barrier
+      share_blocks(resort_claims_, thread, team, [&](std::size_t part, std::size_t) {
+        try {
+          reorder_pass(static_cast<int>(part), static_cast<int>(resort_claims_.size()),
+                       resort == Resort::keep_canonical, team);
+        } catch (...) {
+#pragma omp critical(agglo_engine_error)
+          if (!serial_error) serial_error = std::current_exception();
+        }
+      });
+#pragma omp barrier
+    }
+    if (!sorting || resorting) {
+#pragma omp single nowait
+      serial();
     }
 #pragma omp barrier
     if (!serial_error) collide_pass(ctx, reuse, errors, thread, team);
@@ -460,6 +491,7 @@ void Engine::move_pass(int thread, int team, bool& bad_state) {
   std::uint32_t* counts = cnt.data();
   const RankRanges ranges(p_.size(), team);
   const std::uint32_t* rank = rank_.empty() ? nullptr : rank_.data();
+  const std::uint32_t* base = rank && range_team_ == team ? range_base_.data() : nullptr;
   share_blocks(move_claims_, thread, team, [&](std::size_t block, std::size_t piece) {
     const std::size_t b = block_samples_[block] + piece * kMotionChunk;
     const std::size_t e = std::min<std::size_t>(block_samples_[block + 1], b + kMotionChunk);
@@ -471,8 +503,10 @@ void Engine::move_pass(int thread, int team, bool& bad_state) {
     if (chunk_ok) {  // only for valid positions (otherwise the step throws)
       compute_cells(b, e);
       const std::uint32_t* cell = cell_of_.data();
-      if (team == 1)  // the sort's counts, by rank range (sort_pass) and cell
+      if (team == 1)  // the sort's counts, by rank range (sort_range) and cell
         for (std::size_t i = b; i < e; ++i) ++counts[cell[i]];
+      else if (base != nullptr)  // (q(rank) * cells precomputed at the re-sort)
+        for (std::size_t i = b; i < e; ++i) ++counts[base[i] + cell[i]];
       else if (rank == nullptr)
         for (std::size_t i = b; i < e; ++i) ++counts[ranges.of(i) * nc + cell[i]];
       else
@@ -486,11 +520,11 @@ void Engine::move_pass(int thread, int team, bool& bad_state) {
   }
 }
 
-// The serial part of a step (thread 0, after sort_pass): advances the step counter, throws on a bad state
+// The serial part of a step (one thread: the one that sorted range 0, or after a re-sort): advances the step counter, throws on a bad state
 // (after a false alarm of the fast test: the cells and the sort here), ends a re-sort (all of it here when
 // the team did not run reorder_pass), else fixes the blocks; returns what the binned selection does with its
 // groups this step.
-GroupReuse Engine::bin_step(bool moved, bool bad_state, Resort resort, bool resorted) {
+GroupReuse Engine::bin_step(bool moved, bool bad_state, Resort resort, bool resorted, int team) {
   const std::size_t n = p_.size();
   const bool moving = s_.motion.integrator != Integrator::none;
   ++step_;
@@ -501,8 +535,8 @@ GroupReuse Engine::bin_step(bool moved, bool bad_state, Resort resort, bool reso
   }
   if (resort != Resort::none) {
     const bool keep = resort == Resort::keep_canonical;
-    if (!resorted) reorder_pass(0, 1, keep);
-    finish_reorder(keep);
+    if (!resorted) reorder_pass(0, 1, keep, 1);
+    finish_reorder(keep, resorted ? team : 1);
   } else if (!blocks_fixed_) {
     split_blocks();  // cells by this step's counts
   }
