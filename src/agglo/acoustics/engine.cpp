@@ -396,9 +396,11 @@ Engine::Resort Engine::resort_due(std::uint64_t step) const {
   return Resort::none;
 }
 
-// One collision step in one OpenMP parallel region (one fork/join per step; the serial binning between
-// motion and collisions is an `omp single`): motion, state check and cell index of each sample; then
-// the counting sort by cell (and the periodic re-sort of the storage); then the collision step of every
+// One collision step in one OpenMP parallel region (one fork/join and two barriers per step; two more on
+// the steps that re-sort the storage): motion, state check, cell index and the sort's counts of each
+// sample; then the counting sort by cell, one range of canonical ranks per thread (sort_range), and every
+// kResortEvery steps the re-sort of the storage, its arrays shared out (reorder_pass); the little left
+// serial (bin_step) runs on one thread while the other ranges are placed; then the collision step of every
 // cell. Each thread takes the same block in both passes: the stored samples of its cells at the last sort
 // and those cells (a static partition, so a sample stays in one core's cache between the passes). Each
 // part does the same per sample and per cell, in the same order, so results are bitwise the same for any
