@@ -24,12 +24,11 @@ import re
 import subprocess
 
 
-def inclusive(path):
-    """(total, {function name: largest inclusive count}) of one callgrind output file."""
-    text = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", path],
-                          capture_output=True, text=True, check=True).stdout
+def parse_annotate(lines):
+    """(total, {function name: largest inclusive count}) from the lines of `callgrind_annotate
+    --inclusive=yes` (also used by bench/dsmc_sample_cost.sh)."""
     total, inc = 0, {}
-    for line in text.splitlines():
+    for line in lines:
         m = re.match(r"\s*([\d,]+) \(\s*[\d.]+%\)\s+(.*)$", line)
         if not m:
             continue
@@ -40,6 +39,13 @@ def inclusive(path):
             name = rest.split(":", 1)[1]
             inc[name] = max(inc.get(name, 0), n)
     return total, inc
+
+
+def inclusive(path):
+    """parse_annotate of one callgrind output file."""
+    text = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", path],
+                          capture_output=True, text=True, check=True).stdout
+    return parse_annotate(text.splitlines())
 
 
 def count(inc, key):
