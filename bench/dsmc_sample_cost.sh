@@ -146,8 +146,10 @@ if [ -n "${BEFORE:-}" ]; then
   labels=("before ($rev)" "${labels[0]}")
 fi
 callgrind_runs "$AGGLO" "$OUT"
-/usr/bin/python3 - "$CG_T1" "$CG_T2" "$DT" "${#dirs[@]}" "${dirs[@]}" "${labels[@]}" <<'EOF'
-import json, re, sys
+/usr/bin/python3 - "$SRC/bench" "$CG_T1" "$CG_T2" "$DT" "${#dirs[@]}" "${dirs[@]}" "${labels[@]}" <<'EOF'
+import json, sys
+sys.path.insert(0, sys.argv.pop(1))
+from callgrind_threads import parse_annotate
 a1, a2, dt, k = sys.argv[1], sys.argv[2], float(sys.argv[3]), int(sys.argv[4])
 dirs, labels = sys.argv[5:5 + k], sys.argv[5 + k:5 + 2 * k]
 phases = [  # (label, function name prefix in callgrind_annotate's inclusive listing; None: the total)
@@ -155,25 +157,16 @@ phases = [  # (label, function name prefix in callgrind_annotate's inclusive lis
     ("motion (Motion::advance)", "agglo::acoustics::Motion::advance("),
     ("state check (Engine::state_ok)", "agglo::acoustics::Engine::state_ok("),
     ("cell index (Engine::compute_cells)", "agglo::acoustics::Engine::compute_cells("),
-    ("counting sort by cell (Engine::sort_cells)", "agglo::acoustics::Engine::sort_cells("),
+    ("counting sort by cell (Engine::sort_range; sort_cells before h50)",
+     "agglo::acoustics::Engine::sort_range(|agglo::acoustics::Engine::sort_cells("),
     ("collisions (Engine::collide_pass)", "agglo::acoustics::Engine::collide_pass("),
     ("output rows (Observer::observe)", "agglo::acoustics::(anonymous namespace)::Observer::observe("),
 ]
 def load(out, t):
-    tot, inc = 0, {}
-    for line in open(f"{out}/callgrind_{t}.txt"):
-        m = re.match(r"\s*([\d,]+) \(\s*[\d.]+%\)\s+(.*)$", line)
-        if not m:
-            continue
-        n, rest = int(m.group(1).replace(",", "")), m.group(2)
-        if rest.startswith("PROGRAM TOTALS"):
-            tot = n
-        elif ":" in rest:
-            name = rest.split(":", 1)[1]
-            inc[name] = max(inc.get(name, 0), n)
-    return tot, inc
-def get(inc, key):  # largest inclusive count of the function (its OpenMP and AVX2 clones are inside it)
-    return max([v for k, v in inc.items() if k.startswith(key)] or [0])
+    with open(f"{out}/callgrind_{t}.txt") as f:
+        return parse_annotate(f)
+def get(inc, keys):  # largest inclusive count of the function (its OpenMP and AVX2 clones are inside it),
+    return sum(max([v for k, v in inc.items() if k.startswith(key)] or [0]) for key in keys.split("|"))  # summed over |-alternatives
 steps = round((float(a2) - float(a1)) / dt)
 cols = []
 for out in dirs:

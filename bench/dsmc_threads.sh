@@ -7,6 +7,8 @@
 #             step's thread count chosen by timed probes, src/agglo/acoustics/thread_choice.hpp)
 #   j2_fixed  --threads 2 with AGGLO_THREAD_PROBE=off: two threads at every step (agglo before the probes)
 #   j2_spin   --threads 2 with GOMP_SPINCOUNT=300000, libgomp's own default (agglo before passive waits)
+#   V_before  variant V (j1, j2, ...) of the agglo at BEFORE_AGGLO (another build, e.g. of the previous
+#             commit: before and after in the same rounds); ratios and efficiency against j1_before
 # under /usr/bin/time (wall and user CPU of the whole process), the variants' order rotated each round.
 # Prints `uptime` before and after, every run (with the 1-min load average), then per case the median
 # wall and user CPU of each variant, the ratios to j1 (> 1: slower than one thread) and, for the two-thread
@@ -41,15 +43,16 @@ common=(--no-plots --quiet --format csv --overwrite --set time.end="$T" --set "o
         --set "output.snapshot_times=[]" --set output.efficiency_interval="$T" "${smoke[@]}")
 run() {  # run CASE_LABEL CASE_FILE VARIANT ROUND [extra args]
   local label=$1 file=$2 v=$3 r=$4; shift 4
-  local j=2 envs=(-u OMP_WAIT_POLICY -u GOMP_SPINCOUNT -u AGGLO_THREAD_PROBE)
-  case $v in
+  local j=2 envs=(-u OMP_WAIT_POLICY -u GOMP_SPINCOUNT -u AGGLO_THREAD_PROBE) agglo=$AGGLO
+  [ "${v%_before}" = "$v" ] || agglo=${BEFORE_AGGLO:?variant $v needs BEFORE_AGGLO}
+  case ${v%_before} in
     j1) j=1 ;;
     j2) ;;
     j2_fixed) envs+=(AGGLO_THREAD_PROBE=off) ;;
     j2_spin) envs+=(GOMP_SPINCOUNT=300000 AGGLO_THREAD_PROBE=off) ;;
     *) echo "unknown variant $v" >&2; exit 2 ;;
   esac
-  env "${envs[@]}" /usr/bin/time -f "%e %U" -o "$OUT/time" "$AGGLO" acoustic "$file" --out "$OUT/run_${label}_$v" \
+  env "${envs[@]}" /usr/bin/time -f "%e %U" -o "$OUT/time" "$agglo" acoustic "$file" --out "$OUT/run_${label}_$v" \
     --threads "$j" "${common[@]}" "$@" > /dev/null
   read -r wall user < "$OUT/time"
   printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$label" "$v" "$r" "$wall" "$user" "$(cut -d' ' -f1 /proc/loadavg)" | tee -a "$table"
@@ -71,12 +74,13 @@ for case in dict.fromkeys(r["case"] for r in rows):
     for v in dict.fromkeys(r["variant"] for r in rows):
         rs = [r for r in rows if r["case"] == case and r["variant"] == v]
         med[v] = (statistics.median(float(r["wall_s"]) for r in rs), statistics.median(float(r["user_s"]) for r in rs))
-    base = med.get("j1")
+    j1 = med.get("j1")
     loads = [float(r["load"]) for r in rows if r["case"] == case]
     print(f"{case}: median over {len(rs)} rounds (1-min load average {min(loads):.1f}-{max(loads):.1f})")
     for v, (w, u) in med.items():
+        base = med.get("j1_before") if v.endswith("_before") else j1
         div = lambda a, b: f"{a / b:.2f}x" if b > 0 else "-"  # - : j1 under 0.01 s
         ratio = f"  wall {div(w, base[0])}, user {div(u, base[1])} of j1" if base else ""
-        eff = f"; parallel efficiency {base[0] / (2 * w):.2f}" if base and v != "j1" and w > 0 else ""
+        eff = f"; parallel efficiency {base[0] / (2 * w):.2f}" if base and not v.startswith("j1") and w > 0 else ""
         print(f"  {v:8s} wall {w:6.2f} s  user {u:6.2f} s{ratio}{eff}")
 PY

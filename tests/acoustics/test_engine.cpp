@@ -2,6 +2,7 @@
 // bookkeeping of split-merge with compensation at e = 1 (C.7.4), thread-count independence, the
 // Nanbu guard (sub-cycling keeps every evaluated P_ij <= 1/N; strict mode refuses), lost particles.
 #include <cmath>
+#include <cstdlib>
 #include <random>
 #include <string>
 
@@ -142,6 +143,46 @@ TEST(Engine, SortedStorageGivesEveryBitOfTheUnsortedRun) {
   // samples that changed cells since the last sort meet the others of their new cell in canonical order
   expect_same_samples(unsorted, sorted);
   expect_same_samples(unsorted, peeked);
+}
+
+// The counting sort and the re-sort of the storage run on every thread of a step's team (engine.cpp:
+// move_pass counts by range of canonical ranks, sort_range places each range (by whichever thread claims it), reorder_pass shares out the
+// arrays): every bit of the one-thread run at two and three threads (three: ranges of unequal size), every
+// step at the full team (AGGLO_THREAD_PROBE=off), for the sorted storage (re-sorts at steps 1, 65 and 129,
+// the last two from a kept canonical order), the unsorted reference twin and a set of 100 000 samples (the
+// large sets' re-sort, a new canonical order, at steps 1 and 65).
+TEST(Engine, ParallelSortAndResortGiveEveryBitOfOneThread) {
+  const char* probe = std::getenv("AGGLO_THREAD_PROBE");
+  const std::string saved_probe = probe ? probe : "";
+  setenv("AGGLO_THREAD_PROBE", "off", 1);
+  const int saved = omp_get_max_threads();
+  auto run = [](EngineSettings es, int threads, int steps) {
+    omp_set_num_threads(threads);
+    Engine e(std::move(es));
+    for (int s = 0; s < steps; ++s) e.step();
+    return e;
+  };
+  EngineSettings es = test::parse_case(mini_baseline(0.002, "", 4000)).engine;
+  const Engine one = run(es, 1, 150);
+  EXPECT_EQ(one.resorts(), 3u);
+  for (int t : {2, 3}) {
+    const Engine many = run(es, t, 150);
+    EXPECT_EQ(many.thread_choice().steps_at_max(), 150u);  // (not vacuous: every step on t threads)
+    EXPECT_EQ(many.resorts(), 3u);
+    expect_same_samples(one, many);
+  }
+  es.sort_storage = false;
+  const Engine unsorted = run(es, 3, 150);
+  EXPECT_EQ(unsorted.resorts(), 0u);
+  expect_same_samples(one, unsorted);
+  // 98 400 fines + 200 droplets cloned to 1600: 100 000 samples, the large sets' re-sort every 64 steps
+  const EngineSettings big = test::parse_case(mini_baseline(0.001, "", 98400)).engine;
+  const Engine big_one = run(big, 1, 66), big_three = run(big, 3, 66);
+  omp_set_num_threads(saved);
+  if (probe) setenv("AGGLO_THREAD_PROBE", saved_probe.c_str(), 1); else unsetenv("AGGLO_THREAD_PROBE");
+  EXPECT_EQ(big_one.particles().size(), 100000u);
+  EXPECT_EQ(big_three.resorts(), 2u);
+  expect_same_samples(big_one, big_three);
 }
 
 // The binned selection's groups follow the moving samples (binned.hpp); each cell reads the cell index of

@@ -74,10 +74,12 @@ case $name in
   dsmc_table_cost)
     run "$AGGLO" "$T/out"
     expect '^  break +dry collisions [0-9]+: stuck [0-9]+, bounced [0-9]+, broke [1-9][0-9]*$' ;;
-  dsmc_threads)
-    run "$AGGLO" "$T/out"
-    [ "$(grep -Ec '^  j2       wall +[0-9.]+ s  user +[0-9.]+ s  wall ([0-9.]+x|-), user ([0-9.]+x|-) of j1(; parallel efficiency [0-9.]+)?$' "$log")" = 2 ] ||
-      { cat "$log"; echo "FAIL: bench/$name.sh: no j2 line for each case"; exit 1; } ;;
+  dsmc_threads)  # (the before/after variants with this agglo as BEFORE_AGGLO)
+    BEFORE_AGGLO=$AGGLO VARIANTS="j1 j2 j1_before j2_before" run "$AGGLO" "$T/out"
+    for v in "j2      " "j2_before"; do
+      [ "$(grep -Ec "^  $v wall +[0-9.]+ s  user +[0-9.]+ s  wall ([0-9.]+x|-), user ([0-9.]+x|-) of j1(; parallel efficiency [0-9.]+)?$" "$log")" = 2 ] ||
+        { cat "$log"; echo "FAIL: bench/$name.sh: no $v line for each case"; exit 1; }
+    done ;;
   lammps_compare)
     lammps_singleton
     AGGLO=$AGGLO run "$T/out"

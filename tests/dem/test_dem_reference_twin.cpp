@@ -115,6 +115,30 @@ TEST(DemReferenceTwin, ParallelBlocksBitIdentical) {
   omp_set_num_threads(saved);
 }
 
+// The neighbour list's rebuild test folded into the parallel drift loop (DemSystem::step, parallel_any)
+// against the reference twin on one thread, which tests in needs_rebuild's serial pass (it fails when the
+// folded test never asks for a rebuild: 1 build against 6): a 17^3 block
+// (4913 particles, above kParallelThreshold: the drift loop runs on the team) fast enough that the list is
+// rebuilt during the run (not vacuous: more builds than the first), 2 and 3 threads; the same rebuild steps
+// and every bit of the state.
+TEST(DemReferenceTwin, RebuildTestInTheParallelDriftBitIdentical) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  DemSystem ref(twin_block(17, 2.0), twin_params(true));
+  ref.set_reference_kernel(true);
+  ref.run(40);
+  ASSERT_GT(ref.neighbors().builds(), 2);
+  for (int threads : {2, 3}) {
+    omp_set_num_threads(threads);
+    DemSystem fast(twin_block(17, 2.0), twin_params(true));
+    fast.run(40);
+    ASSERT_TRUE(runs_parallel(static_cast<std::int64_t>(fast.particles().size())));
+    EXPECT_EQ(fast.neighbors().builds(), ref.neighbors().builds()) << threads << " threads";
+    EXPECT_EQ(twin_differences(fast, ref), 0) << threads << " threads";
+  }
+  omp_set_num_threads(saved);
+}
+
 TEST(DemReferenceTwin, ImpactOnWallBitIdentical) {
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);

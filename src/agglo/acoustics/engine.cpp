@@ -30,6 +30,30 @@ constexpr std::size_t kMotionChunk = 512;
 // store them sorted by cell, re-sorted every kResortEvery steps of a moving run, the canonical order kept.
 constexpr std::size_t kSortMinSamples = kParallelMinSamples;
 constexpr std::uint64_t kResortEvery = 64;
+
+// The canonical ranks [0, n) shared out between the `team` threads of a step's counting sort: range
+// of(r) = min(team - 1, floor(r mul / 2^32)) with mul = floor(team 2^32 / n), a multiply and a shift per
+// sample instead of a division (r mul < team 2^32 fits 64 bits). Any split into contiguous ranges gives
+// the same sort; this one is monotone in r and near n / team ranks each.
+class RankRanges {
+ public:
+  RankRanges(std::size_t n, int team)
+      : n_(n), last_(static_cast<std::uint64_t>(team - 1)), mul_(n > 0 ? (std::uint64_t(team) << 32) / n : 0) {}
+  std::uint64_t of(std::uint64_t r) const { return std::min(last_, (r * mul_) >> 32); }
+  // The first rank of range q (n for q = team): the smallest r with of(r) >= q (binary search).
+  std::size_t first(std::uint64_t q) const {
+    std::size_t lo = 0, hi = n_;
+    while (lo < hi) {
+      const std::size_t mid = lo + (hi - lo) / 2;
+      if (of(mid) >= q) hi = mid; else lo = mid + 1;
+    }
+    return lo;
+  }
+
+ private:
+  std::size_t n_;
+  std::uint64_t last_, mul_;
+};
 }  // namespace
 
 // The per-sample loops of the motion pass (state check, cell index) also compiled for AVX2 with GCC on
@@ -118,23 +142,18 @@ void Engine::bin() {
   cell_of_.resize(n);
   order_.resize(n);
   compute_cells(0, n);
-  sort_cells(0);
+  sort_cells();
 }
 
-// Counting sort by cell; a cell's samples in canonical order (stored order when that is canonical).
-// counted_team > 0: the cell counts are the sums of thread_counts_[0, counted_team) (move_pass counted them
-// in parallel; integer sums, so the same counts); 0: counted here.
-void Engine::sort_cells(int counted_team) {
+// Counting sort by cell; a cell's samples in canonical order (stored order when that is canonical). The
+// serial form (start, a false alarm of the state check, tests): a step's team sorts in move_pass and
+// sort_range, with the same result.
+void Engine::sort_cells() {
   const std::size_t n = p_.size();
   const std::size_t nc = static_cast<std::size_t>(s_.motion.domain.num_cells());
   start_.assign(nc + 1, 0);
   // (Unrolled: the loop overhead is a third of these loops' instructions; the same order of updates.)
-  if (counted_team > 0) {
-    for (std::size_t t = 0; t < static_cast<std::size_t>(counted_team); ++t) {
-      const std::uint32_t* cnt = thread_counts_[t].data();
-      for (std::size_t c = 0; c < nc; ++c) start_[c + 1] += cnt[c];
-    }
-  } else if (by_rank_.empty()) {
+  if (by_rank_.empty()) {
     AGGLO_SORT_UNROLL4
     for (std::size_t i = 0; i < n; ++i) ++start_[cell_of_[i] + 1];
   } else {  // (in canonical order also the counts: in stored order runs of one cell chain the increments)
@@ -154,29 +173,90 @@ void Engine::sort_cells(int counted_team) {
   }
 }
 
+// The counting sort of a step, range q of canonical ranks (RankRanges of a team of `team`; after move_pass
+// counted every sample by range and cell): the samples of the range, placed with `fill` (nc slots of
+// scratch). A cell's slots go to the ranges in order, so cell c's samples of range q start at start_[c]
+// plus the cell's samples of the ranges before q, and within a range they are placed in rank order: the
+// same order_ and start_ as sort_cells for any team (integer sums), whichever thread places a range.
+// Range 0 writes start_.
+void Engine::sort_range(std::size_t q, int team, std::uint32_t* fill) {
+  const std::size_t n = p_.size();
+  const std::size_t nc = static_cast<std::size_t>(s_.motion.domain.num_cells());
+  const std::size_t tm = static_cast<std::size_t>(team);
+  if (q >= tm) return;  // (a team smaller than the step's claims)
+  std::uint32_t run = 0;  // samples in the cells before c
+  for (std::size_t c = 0; c < nc; ++c) {
+    std::uint32_t total = 0, before = 0;  // cell c's samples: all, and those of the ranges before q
+    for (std::size_t u = 0; u < tm; ++u)
+      for (std::size_t v = 0; v < tm; ++v) {
+        const std::uint32_t k = thread_counts_[u][v * nc + c];
+        total += k;
+        before += v < q ? k : 0;
+      }
+    fill[c] = run + before;
+    if (q == 0) start_[c] = run;
+    run += total;
+  }
+  if (q == 0) start_[nc] = run;
+  const RankRanges ranges(n, team);
+  const std::size_t r0 = ranges.first(q), r1 = ranges.first(q + 1);
+  const std::uint32_t* cell_of = cell_of_.data();
+  std::uint32_t* order = order_.data();
+  if (by_rank_.empty()) {
+    AGGLO_SORT_UNROLL4
+    for (std::size_t r = r0; r < r1; ++r) order[fill[cell_of[r]]++] = static_cast<std::uint32_t>(r);
+  } else {
+    const std::uint32_t* by_rank = by_rank_.data();
+    AGGLO_SORT_UNROLL4
+    for (std::size_t r = r0; r < r1; ++r) order[fill[cell_of[by_rank[r]]]++] = by_rank[r];
+  }
+}
+
 bool Engine::sorts_storage() const {
   const std::size_t n = p_.size();
   return s_.sort_storage && n >= kSortMinSamples && n < kReorderMinSamples && s_.selection == Selection::nanbu;
 }
 
 // Stores the samples in the order of order_ (cells in turn; a cell's samples in canonical order), so that
-// order_ becomes the identity and a block of cells holds a contiguous range of samples.
+// order_ becomes the identity and a block of cells holds a contiguous range of samples. Serial form: a
+// step's team runs every part of reorder_pass, then finish_reorder on one thread.
 void Engine::reorder_by_cell(bool keep_canonical) {
-  const std::size_t n = p_.size();
-  p_.permute(order_);
+  reorder_pass(0, 1, keep_canonical, 1);
+  finish_reorder(keep_canonical, 1);
+}
+
+// Part `part` of `parts` of a re-sort: its share of the sample arrays (SampleSet::permute), and for its
+// range of new positions k the cell index and (keep_canonical) the canonical rank of the sample moved to k,
+// the inverse and range_base_ for a team of `team`; into the *_next_ arrays (sized n by prepare_step), as
+// the other parts still read rank_ and cell_of_.
+void Engine::reorder_pass(int part, int parts, bool keep_canonical, int team) {
+  const std::size_t n = p_.size(), t = static_cast<std::size_t>(part), tm = static_cast<std::size_t>(parts);
+  p_.permute(order_, part, parts);
+  const std::size_t k0 = t * n / tm, k1 = (t + 1) * n / tm;
+  for (std::size_t k = k0; k < k1; ++k) cell_next_[k] = cell_of_[order_[k]];
+  if (!keep_canonical) return;
+  const RankRanges ranges(n, team);
+  const std::uint64_t nc = static_cast<std::uint64_t>(s_.motion.domain.num_cells());
+  for (std::size_t k = k0; k < k1; ++k) {
+    const std::uint32_t r = rank_.empty() ? order_[k] : rank_[order_[k]];
+    rank_next_[k] = r;
+    by_rank_next_[r] = static_cast<std::uint32_t>(k);
+    range_base_[k] = static_cast<std::uint32_t>(ranges.of(r) * nc);
+  }
+}
+
+// The serial end of a re-sort (after every part of reorder_pass): keep_canonical: the canonical order stays
+// (rank_), else the new storage order becomes the canonical order (large sets, as before).
+void Engine::finish_reorder(bool keep_canonical, int team) {
   if (keep_canonical) {
-    std::vector<std::uint32_t> rank(n);
-    for (std::size_t k = 0; k < n; ++k) rank[k] = rank_.empty() ? order_[k] : rank_[order_[k]];
-    rank_ = std::move(rank);
-    by_rank_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) by_rank_[rank_[k]] = static_cast<std::uint32_t>(k);
+    rank_.swap(rank_next_);
+    by_rank_.swap(by_rank_next_);
+    range_team_ = team;
   } else {
     forget_storage_order();
   }
-  std::vector<std::uint32_t> cells(n);
-  for (std::size_t k = 0; k < n; ++k) cells[k] = cell_of_[order_[k]];
-  cell_of_ = std::move(cells);
-  for (std::size_t k = 0; k < n; ++k) order_[k] = static_cast<std::uint32_t>(k);
+  cell_of_.swap(cell_next_);
+  for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = static_cast<std::uint32_t>(k);
   regroup_ = true;
   sorted_at_ = step_;
   ++resorts_;
@@ -197,6 +277,7 @@ void Engine::canonicalize() const {
 void Engine::forget_storage_order() const {
   rank_.clear();
   by_rank_.clear();
+  range_team_ = 0;
   blocks_fixed_ = false;
 }
 
@@ -263,9 +344,63 @@ void Engine::check_state() const {
   }
 }
 
-// One collision step in one OpenMP parallel region (one fork/join per step; the serial binning between
-// motion and collisions is an `omp single`): motion, state check and cell index of each sample; then
-// the counting sort by cell (and the periodic re-sort of the storage); then the collision step of every
+// The shared state of a step's region, set before it: the blocks, the thread counts and fills of the sort
+// (nt threads at most), the move claims and the result arrays of a re-sort; returns the re-sort due.
+Engine::Resort Engine::prepare_step(bool move, int nt) {
+  const std::size_t n = p_.size(), nc = static_cast<std::size_t>(s_.motion.domain.num_cells());
+  if (!blocks_fixed_ || block_samples_.back() != n ||
+      block_cells_.size() != static_cast<std::size_t>(std::max(1, omp_get_max_threads())) + 1)
+    split_blocks();
+  const std::size_t tn = static_cast<std::size_t>(nt);
+  if (move && thread_counts_.size() < tn) {
+    thread_counts_.resize(tn);
+    thread_fill_.resize(tn);
+  }
+  for (std::size_t t = 0; move && t < tn; ++t) {
+    thread_counts_[t].resize(tn * nc);
+    thread_fill_[t].resize(nc);
+  }
+  if (move) start_.resize(nc + 1);
+  for (std::size_t b = 0; b < move_claims_.size(); ++b)
+    move_claims_[b].reset(static_cast<std::uint32_t>((block_samples_[b + 1] - block_samples_[b] + kMotionChunk - 1) /
+                                                     kMotionChunk));
+  if (sort_claims_.size() != tn) {
+    sort_claims_ = std::vector<BlockClaims>(tn);
+    resort_claims_ = std::vector<BlockClaims>(tn);
+  }
+  for (std::size_t t = 0; t < tn; ++t) {
+    sort_claims_[t].reset(1);
+    resort_claims_[t].reset(1);
+  }
+  const Resort resort = resort_due(step_ + 1);
+  if (resort != Resort::none) {
+    cell_next_.resize(n);
+    if (resort == Resort::keep_canonical) {
+      rank_next_.resize(n);
+      by_rank_next_.resize(n);
+      range_base_.resize(n);
+    }
+  }
+  return resort;
+}
+
+// The re-sort of the storage at step `step` (the step counter after its increment): large sets every
+// kReorderEvery steps (a new canonical order), sorted storage after blocks from another order and every
+// kResortEvery steps of a moving run.
+Engine::Resort Engine::resort_due(std::uint64_t step) const {
+  const bool moving = s_.motion.integrator != Integrator::none;
+  if (p_.size() >= kReorderMinSamples && step % kReorderEvery == 1 && (moving || step == 1))
+    return Resort::new_canonical;
+  if (sorts_storage() && (!blocks_fixed_ || (moving && step - sorted_at_ >= kResortEvery)))
+    return Resort::keep_canonical;
+  return Resort::none;
+}
+
+// One collision step in one OpenMP parallel region (one fork/join and two barriers per step; two more on
+// the steps that re-sort the storage): motion, state check, cell index and the sort's counts of each
+// sample; then the counting sort by cell, one range of canonical ranks per thread (sort_range), and every
+// kResortEvery steps the re-sort of the storage, its arrays shared out (reorder_pass); the little left
+// serial (bin_step) runs on one thread while the other ranges are placed; then the collision step of every
 // cell. Each thread takes the same block in both passes: the stored samples of its cells at the last sort
 // and those cells (a static partition, so a sample stays in one core's cache between the passes). Each
 // part does the same per sample and per cell, in the same order, so results are bitwise the same for any
@@ -291,29 +426,50 @@ void Engine::step() {
   const int nt = parallel ? threads_.next(omp_get_max_threads()) : 1;
   const bool timed = parallel && threads_.measuring();
   const auto wall0 = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-  if (!blocks_fixed_ || block_samples_.back() != n ||
-      block_cells_.size() != static_cast<std::size_t>(std::max(1, omp_get_max_threads())) + 1)
-    split_blocks();
-  if (move && thread_counts_.size() < static_cast<std::size_t>(nt))
-    thread_counts_.resize(static_cast<std::size_t>(nt));
-  for (std::size_t t = 0; move && t < static_cast<std::size_t>(nt); ++t)
-    thread_counts_[t].resize(static_cast<std::size_t>(nc));
-  for (std::size_t b = 0; b < move_claims_.size(); ++b)
-    move_claims_[b].reset(static_cast<std::uint32_t>((block_samples_[b + 1] - block_samples_[b] + kMotionChunk - 1) /
-                                                     kMotionChunk));
+  const Resort resort = prepare_step(move, nt);
 #pragma omp parallel num_threads(nt) if (parallel)
   {
     const int thread = omp_get_thread_num(), team = omp_get_num_threads();
     if (move) move_pass(thread, team, bad_state);
 #pragma omp barrier
-#pragma omp single
-    {
+    bool bad = false;
+#pragma omp atomic read
+    bad = bad_state;
+    const bool sorting = move && !bad, resorting = resort != Resort::none && !bad;
+    auto serial = [&] {
+      if (serial_error) return;
       try {
-        reuse = bin_step(move, bad_state, team);
+        reuse = bin_step(move, bad, resort, resorting, team);
       } catch (...) {
         serial_error = std::current_exception();
       }
-    }  // implicit barrier: every thread sees serial_error
+    };
+    // The sort's ranges and the re-sort's parts go to whichever thread claims them (block_claims.hpp: its
+    // own first), so a thread the OS holds back does not hold up the step; the claimer of range 0 (which
+    // wrote start_) runs the serial part unless a re-sort follows.
+    if (sorting)
+      share_blocks(sort_claims_, thread, team, [&](std::size_t q, std::size_t) {
+        sort_range(q, team, thread_fill_[static_cast<std::size_t>(thread)].data());
+        if (q == 0 && !resorting) serial();
+      });
+    if (resorting) {
+#pragma omp barrier
+      share_blocks(resort_claims_, thread, team, [&](std::size_t part, std::size_t) {
+        try {
+          reorder_pass(static_cast<int>(part), static_cast<int>(resort_claims_.size()),
+                       resort == Resort::keep_canonical, team);
+        } catch (...) {
+#pragma omp critical(agglo_engine_error)
+          if (!serial_error) serial_error = std::current_exception();
+        }
+      });
+#pragma omp barrier
+    }
+    if (!sorting || resorting) {
+#pragma omp single nowait
+      serial();
+    }
+#pragma omp barrier
     if (!serial_error) collide_pass(ctx, reuse, errors, thread, team);
   }
   if (timed) threads_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
@@ -331,8 +487,13 @@ void Engine::move_pass(int thread, int team, bool& bad_state) {
   const Motion& M = s_.motion;
   const bool moving = M.integrator != Integrator::none;
   bool ok = true;
-  std::vector<std::uint32_t>& counts = thread_counts_[static_cast<std::size_t>(thread)];
-  std::fill(counts.begin(), counts.end(), 0u);
+  std::vector<std::uint32_t>& cnt = thread_counts_[static_cast<std::size_t>(thread)];
+  const std::size_t nc = static_cast<std::size_t>(M.domain.num_cells());
+  std::fill(cnt.begin(), cnt.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(team) * nc), 0u);
+  std::uint32_t* counts = cnt.data();
+  const RankRanges ranges(p_.size(), team);
+  const std::uint32_t* rank = rank_.empty() ? nullptr : rank_.data();
+  const std::uint32_t* base = rank && range_team_ == team ? range_base_.data() : nullptr;
   share_blocks(move_claims_, thread, team, [&](std::size_t block, std::size_t piece) {
     const std::size_t b = block_samples_[block] + piece * kMotionChunk;
     const std::size_t e = std::min<std::size_t>(block_samples_[block + 1], b + kMotionChunk);
@@ -343,7 +504,15 @@ void Engine::move_pass(int thread, int team, bool& bad_state) {
     }
     if (chunk_ok) {  // only for valid positions (otherwise the step throws)
       compute_cells(b, e);
-      for (std::size_t i = b; i < e; ++i) ++counts[cell_of_[i]];  // the sort's counts, in parallel
+      const std::uint32_t* cell = cell_of_.data();
+      if (team == 1)  // the sort's counts, by rank range (sort_range) and cell
+        for (std::size_t i = b; i < e; ++i) ++counts[cell[i]];
+      else if (base != nullptr)  // (q(rank) * cells precomputed at the re-sort)
+        for (std::size_t i = b; i < e; ++i) ++counts[base[i] + cell[i]];
+      else if (rank == nullptr)
+        for (std::size_t i = b; i < e; ++i) ++counts[ranges.of(i) * nc + cell[i]];
+      else
+        for (std::size_t i = b; i < e; ++i) ++counts[ranges.of(rank[i]) * nc + cell[i]];
     }
     ok = ok && chunk_ok;
   });
@@ -353,24 +522,26 @@ void Engine::move_pass(int thread, int team, bool& bad_state) {
   }
 }
 
-// The serial part of a step (one thread): advances the step counter, throws on a bad state, sorts the
-// samples by cell (from the cell counts of the team's move_pass), reorders large sets every kReorderEvery
-// steps; returns what the binned selection does with its groups this step.
-GroupReuse Engine::bin_step(bool moved, bool bad_state, int team) {
+// The serial part of a step (one thread: the one that sorted range 0, or after a re-sort): advances the step counter, throws on a bad state
+// (after a false alarm of the fast test: the cells and the sort here), ends a re-sort (all of it here when
+// the team did not run reorder_pass), else fixes the blocks; returns what the binned selection does with its
+// groups this step.
+GroupReuse Engine::bin_step(bool moved, bool bad_state, Resort resort, bool resorted, int team) {
   const std::size_t n = p_.size();
   const bool moving = s_.motion.integrator != Integrator::none;
   ++step_;
   if (bad_state) {
     check_state();        // throws with the message naming the first bad particle
     compute_cells(0, n);  // (not reached unless the fast test gave a false alarm)
+    if (moved) sort_cells();
   }
-  if (moved) sort_cells(bad_state ? 0 : team);
-  if (n >= kReorderMinSamples && step_ % kReorderEvery == 1 && (moving || step_ == 1))
-    reorder_by_cell(false);  // large sets: a new canonical order (as before the canonical order was kept)
-  else if (sorts_storage() && (!blocks_fixed_ || (moving && step_ - sorted_at_ >= kResortEvery)))
-    reorder_by_cell(true);
-  else if (!blocks_fixed_)
+  if (resort != Resort::none) {
+    const bool keep = resort == Resort::keep_canonical;
+    if (!resorted) reorder_pass(0, 1, keep, 1);
+    finish_reorder(keep, resorted ? team : 1);
+  } else if (!blocks_fixed_) {
     split_blocks();  // cells by this step's counts
+  }
   const bool binned = s_.selection == Selection::binned;
   // Binned groups are kept while only collisions change the samples (no motion, same order) and follow the
   // samples that move between cells otherwise; rebuilt after a new order and every kRegroupEvery steps of

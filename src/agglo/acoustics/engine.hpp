@@ -90,7 +90,15 @@ class Engine {
   void bin();
   // The parts of step(), called inside its parallel region (engine.cpp).
   void move_pass(int thread, int team, bool& bad_state);  // motion, state check, cell index of the thread's block
-  GroupReuse bin_step(bool moved, bool bad_state, int team);  // serial: step counter, checks, sort by cell
+  void sort_range(std::size_t q, int team, std::uint32_t* fill);  // the counting sort of rank range q (scatter)
+  enum class Resort { none, keep_canonical, new_canonical };  // what reorder_by_cell does this step
+  Resort resort_due(std::uint64_t step) const;               // (before the step's region: all threads agree)
+  Resort prepare_step(bool move, int nt);  // shared state of the step's region, set before it
+  void reorder_pass(int part, int parts, bool keep_canonical, int team);  // a part of reorder_by_cell
+  void finish_reorder(bool keep_canonical, int team);  // its serial end (one thread, after the team's)
+  // serial (thread 0): step counter, checks, the end of a re-sort, the blocks; `resorted`: the team ran
+  // reorder_pass
+  GroupReuse bin_step(bool moved, bool bad_state, Resort resort, bool resorted, int team);
   void collide_pass(const CollisionContext& ctx, GroupReuse reuse, std::vector<std::string>& errors, int thread,
                     int team);  // the cells of the thread's block
   // Storage order (engine.cpp): samples stored in the cell order of order_; keep_canonical: the canonical
@@ -103,7 +111,7 @@ class Engine {
   void split_blocks();        // blocks of cells by the present counts, of samples evenly (unsorted storage)
   CollisionContext collision_context() const;
   void compute_cells(std::size_t begin, std::size_t end);  // cell_of_ for samples [begin, end)
-  void sort_cells(int counted_team);  // order_, start_ from cell_of_ (counts from move_pass's threads if > 0)
+  void sort_cells();  // order_, start_ from cell_of_, serial (the reference twin of move_pass + sort_range)
   bool state_ok(std::size_t begin, std::size_t end) const;  // fast test of check_state's conditions
   EngineSettings s_;
   mutable SampleSet p_;  // (mutable: the storage order, not the samples, changes in canonicalize())
@@ -114,13 +122,20 @@ class Engine {
   int substeps_ = 1;
   mutable std::vector<std::uint32_t> cell_of_, order_;
   std::vector<std::uint32_t> start_, fill_;
-  std::vector<std::vector<std::uint32_t>> thread_counts_;  // by thread of a step's team: samples per cell (move_pass)
+  // By thread of a step's team: samples per rank range q (the team's sort_range ranges) and cell c at
+  // [q * cells + c] (move_pass); and the sort's next slot per cell of the thread's range (sort_range).
+  std::vector<std::vector<std::uint32_t>> thread_counts_, thread_fill_;
+  std::vector<std::uint32_t> rank_next_, by_rank_next_, cell_next_;  // reorder_pass's results (finish_reorder)
+  // With rank_: the first count of stored sample i's rank range for a team of range_team_ threads,
+  // q(rank_[i]) * cells (set by reorder_pass; move_pass counts through it when its team is range_team_)
+  std::vector<std::uint32_t> range_base_;
+  mutable int range_team_ = 0;
   mutable std::vector<std::uint32_t> rank_, by_rank_;  // canonical position of stored sample i, and inverse
                                                        // (both empty: stored in canonical order)
   mutable bool blocks_fixed_ = false;  // blocks from a sort of the present storage
   std::vector<std::uint32_t> block_cells_, block_samples_;  // bounds of the blocks (cells; stored samples)
   std::uint64_t sorted_at_ = 0, resorts_ = 0;
-  std::vector<BlockClaims> move_claims_, cell_claims_;  // the blocks' pieces and cells shared out (block_claims.hpp)
+  std::vector<BlockClaims> move_claims_, cell_claims_, sort_claims_, resort_claims_;  // the blocks' pieces and cells shared out (block_claims.hpp)
   std::vector<CollisionStats> cell_stats_;
   std::vector<std::uint32_t> local_of_;  // scratch of the binned selection
   std::vector<BinnedGroups> groups_;     // binned selection: groups of each cell

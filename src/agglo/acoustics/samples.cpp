@@ -141,8 +141,10 @@ void SampleSet::copy_sample(std::size_t from, std::size_t to) {
 
 namespace agglo::acoustics {
 
-void SampleSet::permute(const std::vector<std::uint32_t>& order) {
+void SampleSet::permute(const std::vector<std::uint32_t>& order, int part, int parts) {
+  int j = 0;  // the array's number
   auto apply = [&](auto& v) {
+    if (j++ % parts != part) return;
     auto old = v;
     for (std::size_t k = 0; k < order.size(); ++k) v[k] = old[order[k]];
   };

@@ -69,8 +69,10 @@ struct SampleSet {
   // The derived caches of `to` from those of `from` (both with the same volumes and mass).
   void copy_derived(std::size_t from, std::size_t to);
   void copy_sample(std::size_t from, std::size_t to);
-  // Reorders the samples: new sample k = old sample order[k] (memory locality of cells).
-  void permute(const std::vector<std::uint32_t>& order);
+  // Reorders the samples: new sample k = old sample order[k] (memory locality of cells). With parts > 1,
+  // only the per-sample arrays j with j % parts == part (the arrays shared out between the threads of a
+  // team, engine.cpp; every part of 0..parts-1 once gives the whole permutation).
+  void permute(const std::vector<std::uint32_t>& order, int part = 0, int parts = 1);
   double volume(std::size_t i) const { return vol_s[i] + vol_l[i]; }
 
   bool structured() const { return !structure_laws.empty(); }

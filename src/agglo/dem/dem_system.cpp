@@ -142,8 +142,8 @@ JkrPair DemSystem::jkr_for(std::uint32_t i, std::uint32_t j) const {
   return JkrPair::make(R, c.estar(), c.surface_energy);
 }
 
-void DemSystem::compute_forces() {
-  if (nl_.needs_rebuild(p_.x, skin_))
+void DemSystem::compute_forces(int rebuild) {
+  if (rebuild < 0 ? nl_.needs_rebuild(p_.x, skin_) : rebuild == 1)
     nl_.build(p_.x, p_.r, skin_, [this](Pair& pr) {
       pr.kind = mats_.kind(p_.mat[pr.i], p_.mat[pr.j]);
       pr.jkr = jkr_for(pr.i, pr.j);
@@ -198,14 +198,19 @@ void DemSystem::gather_pair_forces() {
 void DemSystem::step() {
   if (!forces_ready_) compute_forces();
   const std::int64_t n = static_cast<std::int64_t>(p_.size());
+  // The neighbour list's rebuild test (NeighborList::needs_rebuild) in the drift loop, in parallel: the
+  // same test of the same positions, not a serial pass of its own (the reference twin: the serial pass).
+  const bool tracked = !reference_ && nl_.built_for(p_.size());
+  const double lim2 = 0.25 * skin_ * skin_;
   auto kick_drift = [&](std::int64_t q) {
     kick(q);
     p_.x[q] += dt_ * p_.v[q];
+    return tracked && nl_.moved_beyond(static_cast<std::size_t>(q), p_.x[q], lim2);
   };
-  parallel_for(n, kick_drift);
+  const bool far = parallel_any(n, kick_drift);
   time_ += dt_;
   ++step_;
-  compute_forces();
+  compute_forces(tracked ? (far ? 1 : 0) : -1);
   parallel_for(n, [&](std::int64_t q) { kick(q); });
   if (step_ % 256 == 0) check_state();
 }

@@ -97,8 +97,10 @@ class DemSystem {
   // before they record or classify a state.
   void check_state() const;
 
-  // Compute forces for the current state without advancing (first call of step() does it).
-  void compute_forces();
+  // Compute forces for the current state without advancing (first call of step() does it). rebuild:
+  // -1 tests whether the neighbour list needs a rebuild, 0 / 1 is that test's answer already known (step()
+  // takes it in its parallel drift loop; the reference twin tests here, serially).
+  void compute_forces(int rebuild = -1);
   JkrPair jkr_for(std::uint32_t i, std::uint32_t j) const;
   // JKR constants of particle i against `w` (R* = r_i, E* of the wall's material; wall.hpp).
   JkrPair wall_jkr(std::uint32_t i, const Wall& w) const;

@@ -9,7 +9,7 @@ bool NeighborList::needs_rebuild(const std::vector<Vec3>& x, double skin) const 
   if (x.size() != x_at_build_.size()) return true;
   const double lim2 = 0.25 * skin * skin;
   for (std::size_t p = 0; p < x.size(); ++p)
-    if (norm2(x[p] - x_at_build_[p]) > lim2) return true;
+    if (moved_beyond(p, x[p], lim2)) return true;
   return false;
 }
 

@@ -28,6 +28,10 @@ class NeighborList {
   void build(const std::vector<Vec3>& x, const std::vector<double>& r, double skin,
              const std::function<void(Pair&)>& init_pair);  // sets kind and jkr of a new pair (i, j)
   bool needs_rebuild(const std::vector<Vec3>& x, double skin) const;
+  // The same test one particle at a time (DemSystem::step folds it into its drift loop): whether the list
+  // was built for n particles, and whether particle p at x moved more than sqrt(lim2) = skin / 2 since.
+  bool built_for(std::size_t n) const { return x_at_build_.size() == n; }
+  bool moved_beyond(std::size_t p, const Vec3& x, double lim2) const { return norm2(x - x_at_build_[p]) > lim2; }
 
   std::vector<Pair>& pairs() { return pairs_; }
   const std::vector<Pair>& pairs() const { return pairs_; }

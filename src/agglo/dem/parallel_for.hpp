@@ -40,4 +40,18 @@ void parallel_for(std::int64_t n, const F& f) {
   }
 }
 
+// Whether f(k) is true for any k in [0, n), f called for every k (as parallel_for; an OR reduction, so the
+// answer does not depend on the thread count).
+template <class F>
+bool parallel_any(std::int64_t n, const F& f) {
+  int any = 0;
+  if (n > kParallelThreshold) {
+#pragma omp parallel for schedule(static) reduction(| : any)
+    for (std::int64_t k = 0; k < n; ++k) any |= f(k) ? 1 : 0;
+  } else {
+    for (std::int64_t k = 0; k < n; ++k) any |= f(k) ? 1 : 0;
+  }
+  return any != 0;
+}
+
 }  // namespace agglo::dem
