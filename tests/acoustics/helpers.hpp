@@ -33,6 +33,21 @@ cells_x = 1
 min_cells_per_wavelength = 1
 )";
 
+// [time] and [kernels] of the constant-kernel tests: collisions only (no motion), steps of 0.1 ms to `end` [s]
+// (`time_extra`: more [time] lines), K = 5e-10 m^3/s.
+inline std::string constant_kernel_steps(const std::string& end, const std::string& time_extra = "") {
+  return "[time]\nend = " + end + "\ncollision_dt = 1e-4\nintegrator = \"none\"\n" + time_extra +
+         "[kernels]\nmodel = \"constant\"\nconstant_coefficient = 5e-10\n";
+}
+
+// Fractal soot: `samples` samples of a lognormal population around d_v = 0.2 um (sigma_g 1.8, 2e12 m^-3) with
+// primaries of radius `primary_radius` [m]; the population's fractal-law lines follow it.
+inline std::string soot_population(int samples, const std::string& primary_radius) {
+  return "[[population]]\nname = \"soot\"\nphase = \"solid\"\ndistribution = \"lognormal\"\n"
+         "geometric_mean_diameter = 2e-7\ngeometric_std = 1.8\nbins = 10\nnumber_concentration = 2e12\n"
+         "samples = " + std::to_string(samples) + "\nstructure = \"fractal\"\nprimary_radius = " + primary_radius + "\n";
+}
+
 // docs/model.md §C.7.3: mean orthokinetic kernel of fine sample f and droplet sample d in the wave [m^3/s],
 //   <beta> = (pi/4)(d_d+d_f)^2 (2/pi) u_amp w |tau_d - tau_f| / sqrt((1 + w^2 tau_d^2)(1 + w^2 tau_f^2)).
 inline double mean_orthokinetic_kernel(const Engine& e, std::size_t f, std::size_t d) {

@@ -30,14 +30,7 @@ length_y = {}
 length_z = {}
 cells_x = 4
 min_cells_per_wavelength = 1
-[time]
-end = 5e-4
-collision_dt = 1e-4
-integrator = "none"
-[kernels]
-model = "constant"
-constant_coefficient = 5e-10
-[output]
+{}[output]
 efficiency_interval = 1e-4
 [[population]]
 name = "soot"
@@ -50,7 +43,7 @@ number_concentration = 1e12
 samples = 200
 {}
 )",
-                     4.0 * edge, edge, edge, structure);
+                     4.0 * edge, edge, edge, test::constant_kernel_steps("5e-4"), structure);
 }
 
 const std::string kFractal = "structure = \"fractal\"\nprimary_radius = 2.5e-8\nfractal_dimension = 1.8\n"

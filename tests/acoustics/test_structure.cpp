@@ -209,29 +209,9 @@ TEST(Structure, BreakageGivesFragmentsPrimariesByMass) {
 namespace {
 // Constant kernel, no motion: a fractal population and droplets coalescing in one cell.
 std::string fractal_box(const std::string& extra_population, const std::string& extra = "") {
-  return "seed = 3\n" + std::string(test::kCoagulationBox) + R"(
-[time]
-end = 2e-3
-collision_dt = 1e-4
-integrator = "none"
-initial_velocity = "rest"
-[kernels]
-model = "constant"
-constant_coefficient = 5e-10
-[outcomes]
-always_coalesce = true
-[[population]]
-name = "soot"
-phase = "solid"
-distribution = "lognormal"
-geometric_mean_diameter = 2e-7
-geometric_std = 1.8
-bins = 10
-number_concentration = 2e12
-samples = 400
-structure = "fractal"
-primary_radius = 2e-8
-fractal_dimension = 1.8
+  return "seed = 3\n" + std::string(test::kCoagulationBox) +
+         test::constant_kernel_steps("2e-3", "initial_velocity = \"rest\"\n") +
+         "[outcomes]\nalways_coalesce = true\n" + test::soot_population(400, "2e-8") + R"(fractal_dimension = 1.8
 fractal_prefactor = 1.3
 )" + extra_population + extra;
 }

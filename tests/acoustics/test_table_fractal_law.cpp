@@ -36,27 +36,9 @@ OutcomeTable one_node_law_table(double df, double kf) {
 // Fractal soot (25 nm primaries, lognormal around 0.2 um) in the coagulation box with the dry outcome table
 // `table`; `law` holds the population's law keys.
 std::string law_box(const std::string& table, const std::string& law) {
-  return std::string(test::kCoagulationBox) + R"(
-[time]
-end = 1e-4
-collision_dt = 1e-4
-integrator = "none"
-[kernels]
-model = "constant"
-constant_coefficient = 5e-10
-)" + (table.empty() ? std::string() : "[outcomes]\ndry_model = \"table\"\ntable = \"" + table + "\"\n") + R"(
-[[population]]
-name = "soot"
-phase = "solid"
-distribution = "lognormal"
-geometric_mean_diameter = 2e-7
-geometric_std = 1.8
-bins = 10
-number_concentration = 2e12
-samples = 200
-structure = "fractal"
-primary_radius = 2.5e-8
-)" + law;
+  return std::string(test::kCoagulationBox) + test::constant_kernel_steps("1e-4") +
+         (table.empty() ? std::string() : "[outcomes]\ndry_model = \"table\"\ntable = \"" + table + "\"\n") +
+         test::soot_population(200, "2.5e-8") + law;
 }
 
 }  // namespace

@@ -16,45 +16,16 @@
 #include "agglo/core/error.hpp"
 #include "agglo/impact/outcome_aggregates.hpp"
 #include "agglo/writers/outcomes.hpp"
+#include "outcome_case_helpers.hpp"
 
 using namespace agglo;
 using namespace agglo::impact;
 
 namespace {
 
-// Two BPCA partners of 0.5 um primaries of the seed material (cases/outcomes_aggregates.toml, smaller grid).
-std::string aggregate_case(const std::string& grid, const std::string& extra = "") {
-  return R"(
-[material]
-density = 2500.0
-youngs_modulus = 1e9
-poisson_ratio = 0.33
-surface_energy = 0.01
-restitution = 0.7
-friction = 0.3
-[agglomerate]
-shape = "bpca"
-radius = 0.5e-6
-)" + extra + R"(
-[projectile]
-shape = "bpca"
-gap_radii = 0.5
-[time]
-after_contact = 2e-6
-[outcome_grid]
-)" + grid;
-}
-
-struct AggParsed {
-  ImpactCase dem;
-  OutcomeGridSpec grid;
-};
+using AggParsed = test::AggregateGrid;
 AggParsed parse_aggregates(const std::string& grid, const std::string& extra = "") {
-  Config cfg = Config::from_string(aggregate_case(grid, extra), "agg.toml");
-  AggParsed p{parse_impact_case(cfg, true), parse_outcome_grid(cfg.root())};
-  check_aggregate_pair(cfg.root(), p.dem, p.grid);
-  cfg.check_unknown_keys();
-  return p;
+  return test::parse_aggregate_grid(grid, extra);
 }
 
 const std::vector<double> kMasses = {1.0, 1.0, 2.0, 2.0};  // target {0, 1}, projectile {2, 3}
@@ -116,19 +87,16 @@ TEST(OutcomeAggregates, RefusesWhatItCannotTabulate) {
 // (N_f >= 2, 1/N_f <= f_L < 1, NaN where none broke), which the DSMC's reader accepts.
 TEST(OutcomeAggregates, FragmentMassConservedAndTableReadByTheDsmc) {
   const AggParsed p = parse_aggregates("speeds = [0.1, 3.0, 30.0]\nprimaries = [2]\nimpacts = 3\n");
-  std::vector<PairOutcome> out;
+  const test::AggregateImpacts r = test::run_aggregate_grid(p);
+  const std::vector<PairOutcome> out = r.outcomes();
   std::vector<double> nf, fl;
   std::vector<std::vector<double>> fractions;
-  for (const auto& j : outcome_impacts(p.grid)) {
-    const ImpactCase c = outcome_case(p.dem, p.grid, j);
-    const ImpactOutcome o = run_impact(c, outcome_launch_speed(p.grid, j));
-    const auto m = pair_masses(c);
+  for (std::size_t k = 0; k < r.fragments.size(); ++k) {
+    const PairFragments& f = r.fragments[k];
     double total = 0.0;
-    for (double x : m) total += x;
-    const PairFragments f = classify_aggregate_pair(o.components, m, c.agglomerate.structure.size());
+    for (double x : r.masses[k]) total += x;
     EXPECT_NEAR(f.fragment_mass, total, 1e-14 * total);
     EXPECT_GE(f.largest_fraction, 1.0 / f.fragments);
-    out.push_back(f.outcome);
     nf.push_back(f.fragments);
     fl.push_back(f.largest_fraction);
     double sum = 0.0;

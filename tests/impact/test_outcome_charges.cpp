@@ -14,6 +14,7 @@
 #include "agglo/impact/outcome_grid.hpp"
 #include "agglo/io/dataset.hpp"
 #include "agglo/writers/outcomes.hpp"
+#include "outcome_case_helpers.hpp"
 #include "sphere_grid_helpers.hpp"
 
 using namespace agglo;
@@ -25,15 +26,7 @@ namespace {
 // alpha(0.7) damping, friction 0.3), head-on; electrostatics.min_gap = 0.05 keeps the JKR overlap of the
 // fastest impacts within the electrostatic regularisation.
 std::string charged_pair_case(const std::string& grid) {
-  return R"(
-[material]
-density = 2500.0
-youngs_modulus = 1e9
-poisson_ratio = 0.33
-surface_energy = 0.01
-restitution = 0.7
-friction = 0.3
-[agglomerate]
+  return test::seed_material("0.3") + R"([agglomerate]
 shape = "list"
 [[particles]]
 position = [0.0, 0.0, 0.0]

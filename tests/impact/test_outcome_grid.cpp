@@ -15,6 +15,7 @@
 #include "agglo/core/error.hpp"
 #include "agglo/dem/jkr.hpp"
 #include "agglo/impact/outcome_grid.hpp"
+#include "outcome_case_helpers.hpp"
 #include "sphere_grid_helpers.hpp"
 
 using namespace agglo;
@@ -25,15 +26,7 @@ namespace {
 // Two spheres of the seed material (r = 10 um, e = 0.7), no friction, damping as given, the contact resolved by 800
 // steps per period (as the sphere-wall sticking test, tests/impact/test_vcrit_sticking.cpp).
 std::string pair_case(const std::string& grid, const std::string& damping = "damping = \"none\"") {
-  return R"(
-[material]
-density = 2500.0
-youngs_modulus = 1e9
-poisson_ratio = 0.33
-surface_energy = 0.01
-restitution = 0.7
-friction = 0.0
-[contact]
+  return test::seed_material("0.0") + R"([contact]
 )" + damping + R"(
 [agglomerate]
 shape = "list"

@@ -13,6 +13,7 @@
 #include "agglo/core/error.hpp"
 #include "agglo/impact/outcome_aggregates.hpp"
 #include "agglo/writers/outcomes.hpp"
+#include "outcome_case_helpers.hpp"
 
 using namespace agglo;
 using namespace agglo::impact;
@@ -21,39 +22,9 @@ namespace {
 
 constexpr double kA0 = 0.5e-6;  // the first primary radius [m]
 
-// Two BPCA partners of the seed material, primary radii a_0 and 2^(1/3) a_0 (counts halve at the second).
-std::string radii_case(const std::string& grid) {
-  return R"(
-[material]
-density = 2500.0
-youngs_modulus = 1e9
-poisson_ratio = 0.33
-surface_energy = 0.01
-restitution = 0.7
-friction = 0.3
-[agglomerate]
-shape = "bpca"
-radius = 0.5e-6
-[projectile]
-shape = "bpca"
-gap_radii = 0.5
-[time]
-after_contact = 2e-6
-[outcome_grid]
-)" + grid;
-}
-
-struct RadiiParsed {
-  ImpactCase dem;
-  OutcomeGridSpec grid;
-};
-RadiiParsed parse_radii(const std::string& grid) {
-  Config cfg = Config::from_string(radii_case(grid), "radii.toml");
-  RadiiParsed p{parse_impact_case(cfg, true), parse_outcome_grid(cfg.root())};
-  check_aggregate_pair(cfg.root(), p.dem, p.grid);
-  cfg.check_unknown_keys();
-  return p;
-}
+// Two BPCA partners of the seed material; primary radii a_0 and 2^(1/3) a_0 by the grid (counts halve at the second).
+using RadiiParsed = test::AggregateGrid;
+RadiiParsed parse_radii(const std::string& grid) { return test::parse_aggregate_grid(grid); }
 
 const std::string kTwoRadii = "speeds = [0.1, 30.0]\nprimaries = [4]\nimpacts = 1\nmax_offset = 0\n"
                               "primary_radii = [0.5e-6, 6.299605249474366e-7]\n";  // a_0, 2^(1/3) a_0
@@ -101,19 +72,15 @@ TEST(OutcomePrimaryRadii, EachPartnerBuiltWithItsOwnRadius) {
 // (d, a) finds these nodes.
 TEST(OutcomePrimaryRadii, TableReadBackAtTheRightNode) {
   const RadiiParsed p = parse_radii(kTwoRadii);
-  std::vector<PairOutcome> out;
+  const test::AggregateImpacts r = test::run_aggregate_grid(p);
   std::vector<double> nf, fl;
   std::vector<std::vector<double>> fractions;
-  for (const auto& j : outcome_impacts(p.grid)) {
-    const ImpactCase c = outcome_case(p.dem, p.grid, j);
-    const ImpactOutcome o = run_impact(c, outcome_launch_speed(p.grid, j));
-    const PairFragments f = classify_aggregate_pair(o.components, pair_masses(c), c.agglomerate.structure.size());
-    out.push_back(f.outcome);
+  for (const auto& f : r.fragments) {
     nf.push_back(f.fragments);
     fl.push_back(f.largest_fraction);
     fractions.push_back(f.fractions);
   }
-  const OutcomeGridResult t = tabulate_outcomes(p.grid, out, nf, fl, fractions);
+  const OutcomeGridResult t = tabulate_outcomes(p.grid, r.outcomes(), nf, fl, fractions);
   ASSERT_EQ(t.impacts.size(), 2u * 4u);  // 2 speeds x (a_1, a_2) in {a_0, a_1}^2
   for (auto n : t.impacts) EXPECT_EQ(n, 1);
   const std::size_t fast_mixed = t.index(1, 0, 0, 0, 0, 0, 0, 1), fast_mirror = t.index(1, 0, 0, 0, 0, 0, 1, 0);
