@@ -9,8 +9,11 @@
 #   table    the 6 x 3 x 3 sphere table of cases/outcomes_sphere_sphere.toml (agglo outcomes; P_break = 0)
 #   break    the same table with P_stick and P_bounce scaled by 0.7 and P_break = 0.3, N_f = 3, f_L = 0.5
 #            (written with netCDF4-python, Debian python3-netcdf4)
-# Prints per variant: Engine::step instructions per sample-step, the ratio to the default, the dry
-# collisions and how many stuck, bounced and broke; and OutcomeTable's share (at, fragments_at).
+#   wet_default, wet_table  the case with the 10 um population liquid (droplets: fine-droplet pairs coalesce
+#            into mixed particles, whose pairs with the fine ones are wet), without and with the sphere table
+#            as the wet table (outcomes.wet_model = "table"; docs/acoustics.md §1.7 "Wet pairs")
+# Prints per variant: Engine::step instructions per sample-step, the ratio to the default (wet_table: to
+# wet_default), the dry (wet) collisions and how many stuck, bounced and broke; and OutcomeTable's share.
 #   bench/dsmc_table_cost.sh [AGGLO] [OUT_DIR]
 #   CALLGRIND=0: the runs without valgrind (no instruction counts; the collision counts only).
 #   SMOKE=1: the smoke test (ctest -L bench): 2 steps instead of 20, CALLGRIND=0 unless set (a callgrind run
@@ -63,6 +66,9 @@ samples = 4000
 psd_times = [0.0]
 snapshot_times = []
 EOF
+# The wet case: the coarse population as droplets (water).
+sed '/^name = "coarse"/,/^samples/{s/^phase = "solid"/phase = "liquid"/;s/^density = 2500.0/density = 1000.0/}' \
+  "$OUT/case.toml" > "$OUT/case_wet.toml"
 
 "$AGGLO" -q --no-plots outcomes "$SRC/cases/outcomes_sphere_sphere.toml" --out "$OUT/outcomes" --overwrite --threads 1 > /dev/null
 /usr/bin/python3 - "$OUT/outcomes/results.nc" "$OUT/table_break.nc" <<'PY'
@@ -84,7 +90,7 @@ run() {  # run LABEL [--set ...]
   local label=$1; shift
   local pre=(valgrind --tool=callgrind --callgrind-out-file="$OUT/callgrind_$label.out")
   [ "$CALLGRIND" = 1 ] || { pre=(); rm -f "$OUT/callgrind_$label.txt"; }
-  "${pre[@]}" "$AGGLO" -q --no-plots acoustic "$OUT/case.toml" --out "$OUT/$label" --overwrite --threads 1 --format csv "$@" \
+  "${pre[@]}" "$AGGLO" -q --no-plots acoustic "${CASE:-$OUT/case.toml}" --out "$OUT/$label" --overwrite --threads 1 --format csv "$@" \
     > /dev/null 2> "$OUT/callgrind_$label.log"
   [ "$CALLGRIND" = 1 ] || return 0
   callgrind_annotate --inclusive=yes --threshold=100 "$OUT/callgrind_$label.out" > "$OUT/callgrind_$label.txt" 2> /dev/null
@@ -92,6 +98,8 @@ run() {  # run LABEL [--set ...]
 run default
 run table --set outcomes.dry_model=table --set "outcomes.table=\"$OUT/outcomes/results.nc\""
 run break --set outcomes.dry_model=table --set "outcomes.table=\"$OUT/table_break.nc\""
+CASE="$OUT/case_wet.toml" run wet_default
+CASE="$OUT/case_wet.toml" run wet_table --set outcomes.wet_model=table --set "outcomes.wet_table=\"$OUT/outcomes/results.nc\""
 
 /usr/bin/python3 - "$OUT" "$STEPS" "$CALLGRIND" <<'PY'
 import csv, json, re, sys
@@ -106,20 +114,21 @@ def inclusive(label, prefix):  # 1 without callgrind (no counts)
             best = max(best, int(m.group(1).replace(",", "")))
     return best
 rows = {}
-for label in ("default", "table", "break"):
+for label in ("default", "table", "break", "wet_default", "wet_table"):
     n = json.load(open(f"{out}/{label}/summary.json"))["samples"]
     step = inclusive(label, "agglo::acoustics::Engine::step(")
     at = inclusive(label, "agglo::acoustics::OutcomeTable::at(")
     frag = inclusive(label, "agglo::acoustics::OutcomeTable::fragments_at(")
     brk = inclusive(label, "agglo::acoustics::break_weighted(")
-    dry = next(r for r in csv.DictReader(open(f"{out}/{label}/outcomes_by_pair.csv")) if r["pair_type"] == "dry")
-    rows[label] = (step / (n * steps), step, at, frag, brk, dry)
-base = rows["default"][0]
+    kind = "wet" if label.startswith("wet") else "dry"
+    dry = next(r for r in csv.DictReader(open(f"{out}/{label}/outcomes_by_pair.csv")) if r["pair_type"] == kind)
+    rows[label] = (step / (n * steps), step, at, frag, brk, dry, kind)
 print(f"Engine::step, callgrind, one thread, {steps} steps; instructions per sample-step (ratio to the default)"
       if callgrind else f"{steps} steps without callgrind: no instruction counts")
-for label, (per, step, at, frag, brk, dry) in rows.items():
+for label, (per, step, at, frag, brk, dry, kind) in rows.items():
+    base = rows["wet_default" if kind == "wet" else "default"][0]
     counts = (f"{per:8.1f} ({per / base:.3f}x)  Engine::step {step / 1e6:.1f}e6  OutcomeTable::at {at / 1e6:.2f}e6"
               f"  fragments_at {frag / 1e6:.2f}e6  break_weighted {brk / 1e6:.2f}e6" if callgrind else "")
-    print(f"  {label:8} {counts}  dry collisions {dry['pair_collisions']}:"
+    print(f"  {label:11} {counts}  {kind} collisions {dry['pair_collisions']}:"
           f" stuck {dry['stuck']}, bounced {dry['bounced']}, broke {dry['broke']}")
 PY

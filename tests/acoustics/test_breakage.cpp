@@ -29,18 +29,7 @@ namespace {
 
 // A table over 2 speeds x 2 x 2 diameters (1e-9 .. 1e-3 m: fragments of micrometre spheres stay inside)
 // with constant P_stick, P_break (P_bounce = the rest) and constant fragment statistics.
-OutcomeTable constant_break_table(double stick, double brk, FragmentStats f) {
-  OutcomeTable t;
-  t.axes = {std::vector<double>{1e-4, 100.0}, std::vector<double>{1e-9, 1e-3}, std::vector<double>{1e-9, 1e-3}};
-  const std::size_t n = 8;
-  t.p_stick.assign(n, stick);
-  t.p_break.assign(n, brk);
-  t.p_bounce.assign(n, 1.0 - stick - brk);
-  t.fragments.assign(n, f.number);
-  t.largest_fraction.assign(n, f.largest);
-  return t;
-}
-
+using test::constant_break_table;
 using test::pair_of_samples;
 
 double total_mass(const SampleSet& p) {

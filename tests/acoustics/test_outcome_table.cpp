@@ -25,26 +25,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<double> log_axis(double lo, double hi, int n) {
-  std::vector<double> a;
-  for (int k = 0; k < n; ++k) a.push_back(lo * std::pow(hi / lo, n > 1 ? static_cast<double>(k) / (n - 1) : 0.0));
-  return a;
-}
-
-// A table with P_stick = f(v, d1, d2) at the nodes, P_bounce = 1 - P_stick, P_break = 0.
-OutcomeTable table_of(std::vector<double> v, std::vector<double> d1, std::vector<double> d2,
-                      const std::function<double(double, double, double)>& f) {
-  OutcomeTable t;
-  t.axes = {std::move(v), std::move(d1), std::move(d2)};
-  for (double a : t.axes[0])
-    for (double b : t.axes[1])
-      for (double c : t.axes[2]) {
-        t.p_stick.push_back(f(a, b, c));
-        t.p_bounce.push_back(1.0 - t.p_stick.back());
-        t.p_break.push_back(0.0);
-      }
-  return t;
-}
+using test::log_axis;
+using test::table_of;
 
 fs::path write_table(const OutcomeTable& t, const std::string& name, io::Dataset* edit_source = nullptr) {
   return test::write_table_dataset(edit_source ? *edit_source : outcome_table_dataset(t), name);
@@ -139,22 +121,12 @@ std::string constant_case(std::uint64_t seed, const std::string& outcome_lines, 
   return test::constant_kernel_case(seed, outcome_lines, end);
 }
 
-double mono_number_at_end(const std::string& toml) {
-  Engine e = test::make_engine(toml);
-  while (e.time() < e.settings().t_end - 1e-9) e.step();
-  double n = 0;
-  for (std::size_t i = 0; i < e.particles().size(); ++i) n += e.particles().w[i];
-  return n;
-}
+double mono_number_at_end(const std::string& toml) { return test::number_at_end(toml); }
 
 using test::seed_mean_se;
 using test::SeedMeanSe;
 
-std::string constant_table_file(double alpha, const std::string& name) {
-  return write_table(table_of({1e-3, 10.0}, {1e-7, 1e-4}, {1e-7, 1e-4}, [alpha](double, double, double) { return alpha; }),
-                     name)
-      .string();
-}
+using test::constant_table_file;
 
 }  // namespace
 
@@ -222,10 +194,8 @@ DryCounts run_dry(EngineSettings s) {
 // of 3 seeds per model (the interpolation ramp spans 1.9 % of v_cr along the speed axis).
 TEST(OutcomeTable, CriticalVelocityTableReproducesTheDefault) {
   const OutcomeParams oc;
-  auto table = std::make_shared<OutcomeTable>(table_of(log_axis(1e-3, 10.0, 500), log_axis(0.5e-6, 40e-6, 39),
-                                                       log_axis(0.5e-6, 40e-6, 39), [&](double v, double a, double b) {
-                                                         return v <= critical_velocity_dry(oc, a, b, 2500.0, 2500.0);
-                                                       }));
+  auto table = std::make_shared<OutcomeTable>(
+      test::critical_velocity_table([&](double a, double b) { return critical_velocity_dry(oc, a, b, 2500.0, 2500.0); }));
   DryCounts def, tab;
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     EngineSettings s = test::parse_case(two_size_case(seed)).engine;
@@ -257,14 +227,7 @@ TEST(OutcomeTable, CaseFileSelectsAndRefuses) {
   ASSERT_EQ(c.engine.outcomes.dry_model, DryModel::table);
   EXPECT_DOUBLE_EQ(c.engine.outcomes.dry_table->at(0.1, 1e-6, 1e-6).stick, 0.5);
   EXPECT_EQ(test::parse_case(base).engine.outcomes.dry_model, DryModel::critical_velocity);
-  const auto refused = [&](const std::string& lines, const std::string& needle) {
-    try {
-      (void)test::parse_case(with(lines));
-      ADD_FAILURE() << "accepted: " << lines;
-    } catch (const ConfigError& e) {
-      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-    }
-  };
+  const auto refused = test::expect_case_refused;
   OutcomeTable brk = table_of({1e-3, 10.0}, {1e-7, 1e-4}, {1e-7, 1e-4}, [](double, double, double) { return 0.5; });
   brk.p_bounce.assign(brk.p_bounce.size(), 0.3);
   brk.p_break.assign(brk.p_break.size(), 0.2);

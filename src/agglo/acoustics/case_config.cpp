@@ -276,50 +276,64 @@ void parse_kernels(const ConfigSection& root, EngineSettings& e) {
                                    fractal->name, keys().population.structure.dotted(), settings::kStructureFractal));
 }
 
-// outcomes.dry_model and outcomes.table (both read only when set, so the resolved config of a case without
-// them stays as it was). A table is loaded and checked here: unreadable or malformed (probabilities outside
-// [0, 1] or not summing to 1, P_break > 0 without valid fragment statistics) is refused naming outcomes.table.
-void parse_dry_model(const ConfigSection& o, const std::string& case_file, OutcomeParams& oc) {
-  const auto& k = keys().outcomes;
-  const bool table = k.dry_model.present(o) && k.dry_model.read(o) == settings::kDryTable;
+// An outcome model key (outcomes.dry_model, outcomes.wet_model) and its table file key (outcomes.table,
+// outcomes.wet_table), both read only when set, so the resolved config of a case without them stays as it
+// was. With model = "table" the table is loaded and checked here: unreadable or malformed (probabilities
+// outside [0, 1] or not summing to 1, P_break > 0 without valid fragment statistics) is refused naming the
+// file key. Returns the table, or null for the closed-form model.
+std::shared_ptr<const OutcomeTable> parse_table_model(const ConfigSection& o, const std::string& case_file,
+                                                      const settings::Choice& model, std::string_view table_name,
+                                                      const settings::Text& file) {
+  const bool table = model.present(o) && model.read(o) == table_name;
   if (!table) {
-    if (k.table.present(o))
-      k.table.reject(o, fmt::format("is read only with {} = \"{}\"", k.dry_model.dotted(), settings::kDryTable));
-    return;
+    if (file.present(o)) file.reject(o, fmt::format("is read only with {} = \"{}\"", model.dotted(), table_name));
+    return nullptr;
   }
-  if (!k.table.present(o))
-    k.table.missing(o, fmt::format("required with {} = \"{}\"", k.dry_model.dotted(), settings::kDryTable));
-  std::filesystem::path path = k.table.read(o);
+  if (!file.present(o)) file.missing(o, fmt::format("required with {} = \"{}\"", model.dotted(), table_name));
+  std::filesystem::path path = file.read(o);
   if (path.is_relative() && !case_file.empty()) path = std::filesystem::path(case_file).parent_path() / path;
   OutcomeTable t;
   try {
     t = load_outcome_table(path);
   } catch (const io::NetcdfReadError& e) {
-    k.table.reject(o, e.what());
+    file.reject(o, e.what());
   } catch (const std::invalid_argument& e) {
-    k.table.reject(o, fmt::format("not an outcome table (docs/acoustics.md §1.7): {}", e.what()));
+    file.reject(o, fmt::format("not an outcome table (docs/acoustics.md §1.7): {}", e.what()));
   }
-  oc.dry_model = DryModel::table;
-  oc.dry_table = std::make_shared<const OutcomeTable>(std::move(t));
+  return std::make_shared<const OutcomeTable>(std::move(t));
 }
 
-// Charge and permittivity enter only the lookup of a dry outcome table with those axes
-// (outcome_table.hpp): a population declaring them without such a table is refused naming its key.
+void parse_outcome_models(const ConfigSection& o, const std::string& case_file, OutcomeParams& oc) {
+  const auto& k = keys().outcomes;
+  oc.dry_table = parse_table_model(o, case_file, k.dry_model, settings::kDryTable, k.table);
+  if (oc.dry_table) oc.dry_model = DryModel::table;
+  oc.wet_table = parse_table_model(o, case_file, k.wet_model, settings::kWetTable, k.wet_table);
+  if (oc.wet_table) oc.wet_model = WetModel::table;
+}
+
+// Charge and permittivity enter only the lookup of an outcome table (dry or wet) with those axes
+// (outcome_table.hpp): a population declaring them without such a table is refused naming its key. A table
+// in use without those axes ignores them (as the closed-form critical velocities do).
 void check_charged_populations(const ConfigSection& root, EngineSettings& e) {
   const auto& k = keys().population;
-  const OutcomeTable* t = e.outcomes.dry_model == DryModel::table ? e.outcomes.dry_table.get() : nullptr;
+  const auto any_table = [&](const auto& has) {
+    return (e.outcomes.dry_table && has(*e.outcomes.dry_table)) || (e.outcomes.wet_table && has(*e.outcomes.wet_table));
+  };
+  const bool charged = any_table([](const OutcomeTable& t) { return t.charged(); });
+  const bool permittivity = any_table([](const OutcomeTable& t) { return t.has_axis(kPermittivityAxis); });
+  const auto& oc = keys().outcomes;
   for (const ConfigSection& s : k.t.elements(root)) {
-    if (k.charge_density.present(s) && !(t && t->charged()))
-      k.charge_density.reject(s, fmt::format("charge enters only the lookup of a dry outcome table with axes '{}' and "
-                                             "'{}' ({} = \"{}\", docs/acoustics.md §1.7); this run has none",
+    if (k.charge_density.present(s) && !charged)
+      k.charge_density.reject(s, fmt::format("charge enters only the lookup of an outcome table with axes '{}' and "
+                                             "'{}' ({} or {} = \"{}\", docs/acoustics.md §1.7); this run has none",
                                              kOutcomeAxes[kCharge1Axis], kOutcomeAxes[kCharge2Axis],
-                                             keys().outcomes.dry_model.dotted(), settings::kDryTable));
-    if (k.permittivity.present(s) && !(t && t->has_axis(kPermittivityAxis)))
-      k.permittivity.reject(s, fmt::format("enters only the lookup of a dry outcome table with the axis '{}' "
+                                             oc.dry_model.dotted(), oc.wet_model.dotted(), settings::kDryTable));
+    if (k.permittivity.present(s) && !permittivity)
+      k.permittivity.reject(s, fmt::format("enters only the lookup of an outcome table with the axis '{}' "
                                            "(docs/acoustics.md §1.7); this run has none",
                                            kOutcomeAxes[kPermittivityAxis]));
   }
-  if (t && t->has_axis(kPermittivityAxis))
+  if (permittivity)
     for (const PopulationSpec& p : e.populations) e.outcomes.permittivities.push_back(p.permittivity);
 }
 
@@ -362,7 +376,7 @@ void parse_outcomes(const ConfigSection& root, const std::string& case_file, Out
   oc.film_ratio = k.film_roughness_ratio.read(o);
   oc.solid_density = k.solid_density.read(o);
   oc.energy_compensation = k.energy_compensation.read(o);
-  parse_dry_model(o, case_file, oc);
+  parse_outcome_models(o, case_file, oc);
 }
 
 void parse_output(const ConfigSection& root, double te, OutputSettings& os) {

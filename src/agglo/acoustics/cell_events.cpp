@@ -92,9 +92,9 @@ void CellEvents::compensate(std::size_t i, std::size_t j) {
 }
 
 // Dry pair (i, j) at normal speed gn: sticks below the critical velocity, else bounces; or drawn from the
-// outcome table with one uniform u: sticks if u < P_stick, breaks if u < P_stick + P_break, else bounces.
+// dry outcome table. Wet pairs alike with the Ennis critical velocity or the wet table.
 // Diameters are volume-equivalent (structure.hpp; the kernels' d in compact runs).
-OutcomeQuery CellEvents::table_query(std::size_t i, std::size_t j, double gn) const {
+OutcomeQuery CellEvents::table_query(const OutcomeTable& t, std::size_t i, std::size_t j, double gn) const {
   OutcomeQuery q{gn, p.volume_diameter(i), p.volume_diameter(j)};
   if (p.carries_charge) {
     q.sigma_i = p.q[i] / (constants::pi * q.d_i * q.d_i);
@@ -103,11 +103,31 @@ OutcomeQuery CellEvents::table_query(std::size_t i, std::size_t j, double gn) co
   if (!oc.permittivities.empty())
     q.permittivity = 0.5 * (oc.permittivities[static_cast<std::size_t>(p.pop[i])] +
                             oc.permittivities[static_cast<std::size_t>(p.pop[j])]);
-  if (oc.dry_table->has_primary_radii()) {
+  if (t.has_primary_radii()) {
     q.rp_i = p.query_primary_radius(i);
     q.rp_j = p.query_primary_radius(j);
   }
   return q;
+}
+
+CollisionOutcome CellEvents::table_outcome(const OutcomeTable& t, TableTally c, std::size_t i, std::size_t j,
+                                           double gn) {
+  table_speed_ = gn;
+  if (p.carries_charge && t.has_launch_gap()) {  // the Coulomb work before the launch gap
+    table_speed_ = coulomb_launch_speed(gn, p.q[i], p.q[j], p.mass[i], p.mass[j], p.volume_diameter(i),
+                                        p.volume_diameter(j), t.launch_gap, t.medium_permittivity);
+    if (table_speed_ < 0.0) {  // turned back before the launch separation: never touches, a bounce
+      turned_back_ = true;
+      ++c.turned_back;
+      return CollisionOutcome::bounce;
+    }
+  }
+  const OutcomeProbabilities pr = t.at(table_query(t, i, j, table_speed_));
+  ++c.queries;
+  if (pr.clamped) ++c.clamped;
+  const double u = rng.uniform();
+  if (u < pr.stick) return CollisionOutcome::stick;
+  return u < pr.stick + pr.brk ? CollisionOutcome::brk : CollisionOutcome::bounce;
 }
 
 CollisionOutcome CellEvents::dry_outcome(std::size_t i, std::size_t j, double gn) {
@@ -116,24 +136,15 @@ CollisionOutcome CellEvents::dry_outcome(std::size_t i, std::size_t j, double gn
     return gn <= critical_velocity_dry(oc, di, dj, p.rho[i], p.rho[j]) ? CollisionOutcome::stick
                                                                         : CollisionOutcome::bounce;
   }
-  table_speed_ = gn;
-  turned_back_ = false;
-  if (p.carries_charge && oc.dry_table->has_launch_gap()) {  // the Coulomb work before the launch gap
-    table_speed_ = coulomb_launch_speed(gn, p.q[i], p.q[j], p.mass[i], p.mass[j], p.volume_diameter(i),
-                                        p.volume_diameter(j), oc.dry_table->launch_gap,
-                                        oc.dry_table->medium_permittivity);
-    if (table_speed_ < 0.0) {  // turned back before the launch separation: never touches, a bounce
-      turned_back_ = true;
-      ++st.table_turned_back;
-      return CollisionOutcome::bounce;
-    }
-  }
-  const OutcomeProbabilities pr = oc.dry_table->at(table_query(i, j, table_speed_));
-  ++st.table_queries;
-  if (pr.clamped) ++st.table_clamped;
-  const double u = rng.uniform();
-  if (u < pr.stick) return CollisionOutcome::stick;
-  return u < pr.stick + pr.brk ? CollisionOutcome::brk : CollisionOutcome::bounce;
+  return table_outcome(*oc.dry_table, {st.table_queries, st.table_clamped, st.table_turned_back}, i, j, gn);
+}
+
+CollisionOutcome CellEvents::wet_outcome(std::size_t i, std::size_t j, double gn) {
+  if (oc.wet_model == WetModel::critical_velocity)
+    return gn <= critical_velocity_wet(oc, p.volume_diameter(i), p.volume_diameter(j)) ? CollisionOutcome::stick
+                                                                                        : CollisionOutcome::bounce;
+  return table_outcome(*oc.wet_table, {st.wet_table_queries, st.wet_table_clamped, st.wet_table_turned_back}, i, j,
+                       gn);
 }
 
 void CellEvents::collide(std::size_t i, std::size_t j) {
@@ -145,32 +156,30 @@ void CellEvents::collide(std::size_t i, std::size_t j) {
   CollisionOutcome out = CollisionOutcome::stick;
   Vec3 nrm;
   double gn = 0.0;
+  turned_back_ = false;
   if (!(oc.always_coalesce || type == PairType::droplet)) {
     const Vec3 G{p.vx[i] - p.vx[j], p.vy[i] - p.vy[j], p.vz[i] - p.vz[j]};
     nrm = contact_normal(G, rng);
     gn = dot(G, nrm);
-    if (type == PairType::dry)
-      out = dry_outcome(i, j, gn);
-    else
-      out = gn <= critical_velocity_wet(oc, p.volume_diameter(i), p.volume_diameter(j)) ? CollisionOutcome::stick
-                                                                                          : CollisionOutcome::bounce;
+    out = type == PairType::dry ? dry_outcome(i, j, gn) : wet_outcome(i, j, gn);
   }
   if (out == CollisionOutcome::stick) {
     ++st.coalescences[static_cast<int>(type)];
     coalesce_weighted(p, i, j, *ctx.gas, *ctx.sound);
     if (p.w[i] <= 0.0) refill(i);
     if (p.w[j] <= 0.0) refill(j);
-  } else if (out == CollisionOutcome::brk) {  // only dry pairs with a table (weights stay >= 1: no refill)
+  } else if (out == CollisionOutcome::brk) {  // only pairs drawn from a table (weights stay >= 1: no refill)
     ++st.breakups[static_cast<int>(type)];
-    break_weighted(p, i, j, oc.dry_table->fragments_at(table_query(i, j, table_speed_)), rng, *ctx.gas,
-                   *ctx.sound);
+    const OutcomeTable& t = type == PairType::dry ? *oc.dry_table : *oc.wet_table;
+    break_weighted(p, i, j, t.fragments_at(table_query(t, i, j, table_speed_)), rng, *ctx.gas, *ctx.sound);
   } else {
     ++st.rebounds[static_cast<int>(type)];
-    const bool dry = type == PairType::dry;
-    // a pair turned back by like charges: the central Coulomb force reverses the normal motion elastically
-    const double e = dry ? (turned_back_ ? 1.0 : oc.restitution)
-                         : wet_restitution(oc, p.volume_diameter(i), p.volume_diameter(j), gn);
-    const double dE = rebound_weighted(p, i, j, nrm, e, dry && turned_back_ ? 0.0 : oc.friction);
+    // a pair turned back by like charges: the central Coulomb force reverses the normal motion elastically;
+    // wet pairs rebound with e_wet (eq. 24), also when drawn from a table
+    const double e = turned_back_              ? 1.0
+                     : type == PairType::dry ? oc.restitution
+                                               : wet_restitution(oc, p.volume_diameter(i), p.volume_diameter(j), gn);
+    const double dE = rebound_weighted(p, i, j, nrm, e, turned_back_ ? 0.0 : oc.friction);
     st.energy_lost += dE;
     if (dE > 0.0) debtors.push_back(static_cast<std::uint32_t>(p.w[i] > p.w[j] ? i : j));
     compensate(i, j);

@@ -2,7 +2,8 @@
 // Outcome of one accepted collision of two samples of a cell (docs/model.md §C.5), shared by the
 // selection algorithms: coalescence (always for pairs with a droplet, or outcomes.always_coalesce)
 // or, for solid/mixed pairs, rebound when the normal impact speed exceeds the critical velocity; with
-// the dry outcome table, stick, bounce or break (fragments.hpp) drawn by the table's probabilities.
+// the dry (solid-solid) or wet (solid-mixed, mixed-mixed) outcome table, stick, bounce or break
+// (fragments.hpp) drawn by that table's probabilities (one draw for both: table_outcome).
 // The contact normal of a rebound is drawn for a hard-sphere encounter (uniform impact parameter
 // over the collision disk). Samples whose weight drops to 0 are refilled by splitting the heaviest
 // sample of the cell (decision), and split-merge energy debts are given back at later rebounds
@@ -32,12 +33,20 @@ class CellEvents {
   void refill(std::size_t dead);
   void compensate(std::size_t i, std::size_t j);
   CollisionOutcome dry_outcome(std::size_t i, std::size_t j, double gn);
-  // The outcome table's query of pair (i, j) at normal speed gn: volume-equivalent diameters, surface
-  // charge densities q / (pi d_v^2) (samples carrying charge), mean kappa_p of the two populations.
-  OutcomeQuery table_query(std::size_t i, std::size_t j, double gn) const;
+  CollisionOutcome wet_outcome(std::size_t i, std::size_t j, double gn);
+  // The counters of one table (CollisionStats: the dry or the wet table's).
+  struct TableTally {
+    std::uint64_t &queries, &clamped, &turned_back;
+  };
+  // Pair (i, j) at normal speed gn drawn from table t with one uniform u: sticks if u < P_stick, breaks if
+  // u < P_stick + P_break, else bounces (after the Coulomb launch conversion of a charged table with a gap).
+  CollisionOutcome table_outcome(const OutcomeTable& t, TableTally c, std::size_t i, std::size_t j, double gn);
+  // Table t's query of pair (i, j) at normal speed gn: volume-equivalent diameters, surface charge densities
+  // q / (pi d_v^2) (samples carrying charge), mean kappa_p of the two populations, primary radii (t has them).
+  OutcomeQuery table_query(const OutcomeTable& t, std::size_t i, std::size_t j, double gn) const;
 
-  // A charged table with a launch gap (coulomb_launch.hpp): the speed of the last dry outcome's query, and
-  // whether that pair was turned back before the launch separation (a bounce without contact).
+  // A charged table with a launch gap (coulomb_launch.hpp): the speed of the last table outcome's query, and
+  // whether the pair of this collision was turned back before the launch separation (a bounce without contact).
   double table_speed_ = 0.0;
   bool turned_back_ = false;
   SampleSet& p;

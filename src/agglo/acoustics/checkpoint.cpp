@@ -17,7 +17,7 @@ static_assert(sizeof(BinnedGroup) == 2 * sizeof(std::vector<std::uint32_t>) + si
               "BinnedGroup changed: update save_groups");
 static_assert(sizeof(BinnedGroups) == 11 * sizeof(std::vector<double>) + 5 * 8, "BinnedGroups changed: update save_groups");
 // Written as raw bytes: these hold 8-byte numbers only (no padding).
-static_assert(sizeof(CollisionStats) == 26 * 8, "CollisionStats changed: check it has no padding");
+static_assert(sizeof(CollisionStats) == 29 * 8, "CollisionStats changed: check it has no padding");
 static_assert(sizeof(Counts) == 8 * 8 && sizeof(EfficiencyRow) == 20 * 8, "Counts changed: check it has no padding");
 
 // Every array of a sample set, in a fixed order.

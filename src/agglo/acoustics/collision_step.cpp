@@ -27,6 +27,9 @@ void CollisionStats::add(const CollisionStats& o) {
   table_queries += o.table_queries;
   table_clamped += o.table_clamped;
   table_turned_back += o.table_turned_back;
+  wet_table_queries += o.wet_table_queries;
+  wet_table_clamped += o.wet_table_clamped;
+  wet_table_turned_back += o.wet_table_turned_back;
 }
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(AGGLO_NO_AVX2)

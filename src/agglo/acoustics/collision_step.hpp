@@ -22,7 +22,7 @@ struct CollisionStats {
   std::uint64_t collisions = 0;
   std::uint64_t coalescences[3] = {0, 0, 0};  // by PairType: droplet, dry, wet
   std::uint64_t rebounds[3] = {0, 0, 0};
-  std::uint64_t breakups[3] = {0, 0, 0};      // broke into fragments (dry pairs with a table: fragments.hpp)
+  std::uint64_t breakups[3] = {0, 0, 0};      // broke into fragments (pairs drawn from a table: fragments.hpp)
   std::uint64_t particle_steps = 0;  // (sample, step) pairs processed
   std::uint64_t subcycled = 0;       // Nanbu: particle steps that needed more than one trial interval;
                                      // binned: cell steps split into sub-steps
@@ -38,6 +38,9 @@ struct CollisionStats {
   std::uint64_t table_queries = 0;     // dry outcome table (outcomes.dry_model = "table"): queries
   std::uint64_t table_clamped = 0;     // of which outside the table on some axis (clamped to its end)
   std::uint64_t table_turned_back = 0; // charged table with a launch gap: pairs turned back by the Coulomb work
+  std::uint64_t wet_table_queries = 0;      // the same three of the wet outcome table (outcomes.wet_model = "table")
+  std::uint64_t wet_table_clamped = 0;
+  std::uint64_t wet_table_turned_back = 0;
   void add(const CollisionStats& o);
 };
 

@@ -5,6 +5,8 @@
 //      v_cr,dry = A sqrt(1-e^2) / (pi d_min z0^2 e^2 sqrt(6 p_c rho_min (1 + d_min/d_max)));
 //  - solid-mixed, mixed-mixed ("wet"): coalesce iff |G.n| <= v_cr,wet (Ennis 1991, eq. 14)
 //      v_cr,wet = 9 mu_l (d_i+d_j) / (8 rho_s d_i d_j) (1 + 1/e) ln(delta/h_a);
+//  - with outcomes.dry_model / outcomes.wet_model = "table": stick, bounce or break of that pair type drawn
+//    from its outcome table (outcome_table.hpp, cell_events.hpp) instead of the critical velocity;
 //  - otherwise hard-sphere rebound with friction (eqs. 22-23); wet pairs use
 //      e_wet = e - 9 mu_l (d_i+d_j)(1+e) ln(delta/h_a) / (8 rho_s d_i d_j |G.n|)   (eq. 24).
 // G = v_i - v_j, n = unit vector from i to j at contact (approaching: G.n > 0).
@@ -25,6 +27,8 @@ inline constexpr std::array<const char*, 3> kPairTypeNames = {"droplet", "dry", 
 
 // The dry outcome model (outcomes.dry_model): critical velocity (default) or a table (outcome_table.hpp).
 enum class DryModel { critical_velocity, table };
+// The wet outcome model (outcomes.wet_model): Ennis critical velocity (default) or a table of the same format.
+enum class WetModel { critical_velocity, table };
 
 // Defaults are the declared [outcomes] settings (agglo/core/settings_acoustic.hpp).
 struct OutcomeParams {
@@ -40,7 +44,9 @@ struct OutcomeParams {
   bool energy_compensation = outcome_keys().energy_compensation.def();  // Zhao et al. 2023, eq. 30
   DryModel dry_model = DryModel::critical_velocity;
   std::shared_ptr<const OutcomeTable> dry_table;  // set when dry_model == table
-  // kappa_p by population, when the table has a permittivity axis (else empty): a pair is looked up at
+  WetModel wet_model = WetModel::critical_velocity;
+  std::shared_ptr<const OutcomeTable> wet_table;  // set when wet_model == table
+  // kappa_p by population, when a table (dry or wet) has a permittivity axis (else empty): a pair is looked up at
   // the mean of its two samples' populations' kappa_p (docs/acoustics.md §1.7).
   std::vector<double> permittivities;
 };

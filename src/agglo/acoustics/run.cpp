@@ -122,6 +122,27 @@ std::string sampling_log(const Engine& eng, const RunHooks& hooks) {
   return log;
 }
 
+// The startup line of a table outcome model (`kind` "dry" or "wet"): file, axes, provenance.
+std::string table_model_log(const char* kind, const OutcomeTable& t) {
+  return fmt::format("{} outcome model: table {} ({} speeds {:.4g}-{:.4g} m/s x {} x {} diameters {:.4g}-{:.4g} m; "
+                     "provenance: {})\n",
+                     kind, t.source, t.axes[0].size(), t.axes[0].front(), t.axes[0].back(), t.axes[1].size(),
+                     t.axes[2].size(), std::min(t.axes[1].front(), t.axes[2].front()),
+                     std::max(t.axes[1].back(), t.axes[2].back()), t.provenance.empty() ? "none" : t.provenance);
+}
+
+// The closing lines of a table outcome model: its queries and clamps, its pairs turned back.
+std::string table_counts_log(const char* kind, std::uint64_t queries, std::uint64_t clamped) {
+  return fmt::format("{} outcome table: queries={} clamped={} ({:.3g}% outside the table, clamped to its ends)\n",
+                     kind, queries, clamped,
+                     queries ? 100.0 * static_cast<double>(clamped) / static_cast<double>(queries) : 0.0);
+}
+std::string turned_back_log(const char* kind, std::uint64_t turned_back) {
+  return fmt::format("{} outcome table: Coulomb work before the launch gap: {} pairs turned back (bounced "
+                     "elastically without contact; docs/acoustics.md §1.7)\n",
+                     kind, turned_back);
+}
+
 std::string startup_log(const AcousticCase& c, const Engine& eng, const RunHooks& hooks) {
   std::string log = parameters_log(c, eng);
   if (const std::string w = step_warning(eng.settings()); !w.empty()) {
@@ -130,11 +151,9 @@ std::string startup_log(const AcousticCase& c, const Engine& eng, const RunHooks
   }
   log += sampling_log(eng, hooks);
   if (const auto& t = eng.settings().outcomes.dry_table; t && eng.settings().outcomes.dry_model == DryModel::table)
-    log += fmt::format("dry outcome model: table {} ({} speeds {:.4g}-{:.4g} m/s x {} x {} diameters {:.4g}-{:.4g} m; "
-                       "provenance: {})\n",
-                       t->source, t->axes[0].size(), t->axes[0].front(), t->axes[0].back(), t->axes[1].size(),
-                       t->axes[2].size(), std::min(t->axes[1].front(), t->axes[2].front()),
-                       std::max(t->axes[1].back(), t->axes[2].back()), t->provenance.empty() ? "none" : t->provenance);
+    log += table_model_log("dry", *t);
+  if (const auto& t = eng.settings().outcomes.wet_table; t && eng.settings().outcomes.wet_model == WetModel::table)
+    log += table_model_log("wet", *t);
   if (eng.settings().selection == Selection::binned)
     log += fmt::format("selection: binned ({} size classes per octave of diameter, weight classes by powers of {}, "
                        "one majorant per group pair and kernel mechanism)\n",
@@ -204,15 +223,10 @@ std::string closing_log(const AcousticObservations& o) {
   std::string log = guard_report(o.stats, o.selection) + outcomes_log(o.stats) + pm_log(o);
   if (const std::string w = cell_size_warning(o); !w.empty()) log += "warning: " + w + "\n";
   if (o.dry_table)
-    log += fmt::format("dry outcome table: queries={} clamped={} ({:.3g}% outside the table, clamped to its ends)\n",
-                       o.stats.table_queries, o.stats.table_clamped,
-                       o.stats.table_queries ? 100.0 * static_cast<double>(o.stats.table_clamped) /
-                                                   static_cast<double>(o.stats.table_queries)
-                                             : 0.0);
-  if (o.coulomb_launch)
-    log += fmt::format("dry outcome table: Coulomb work before the launch gap: {} pairs turned back (bounced "
-                       "elastically without contact; docs/acoustics.md §1.7)\n",
-                       o.stats.table_turned_back);
+    log += table_counts_log("dry", o.stats.table_queries, o.stats.table_clamped);
+  if (o.coulomb_launch) log += turned_back_log("dry", o.stats.table_turned_back);
+  if (o.wet_table) log += table_counts_log("wet", o.stats.wet_table_queries, o.stats.wet_table_clamped);
+  if (o.wet_coulomb_launch) log += turned_back_log("wet", o.stats.wet_table_turned_back);
   if (!o.interrupted.empty()) log += "incomplete: " + o.interrupted + "\n";
   log += fmt::format("conservation: solid volume fraction {:.17g} -> {:.17g} (rel. {:.3g}); liquid {:.17g} -> {:.17g} "
                      "(rel. {:.3g}); mass {:.17g} -> {:.17g}\n",
@@ -394,8 +408,11 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
   obs.u_amp = eng.settings().motion.sound.u_amp;
   obs.stats = eng.stats();
   obs.selection = eng.settings().selection;
-  obs.dry_table = eng.settings().outcomes.dry_model == DryModel::table;
-  obs.coulomb_launch = obs.dry_table && eng.particles().carries_charge && eng.settings().outcomes.dry_table->has_launch_gap();
+  const OutcomeParams& oc = eng.settings().outcomes;
+  obs.dry_table = oc.dry_model == DryModel::table;
+  obs.coulomb_launch = obs.dry_table && eng.particles().carries_charge && oc.dry_table->has_launch_gap();
+  obs.wet_table = oc.wet_model == WetModel::table;
+  obs.wet_coulomb_launch = obs.wet_table && eng.particles().carries_charge && oc.wet_table->has_launch_gap();
   obs.dsmc = true;
   const auto& dom = eng.settings().motion.domain;
   obs.min_cell_edge = std::min({dom.L[0] / dom.cells[0], dom.L[1] / dom.cells[1], dom.L[2] / dom.cells[2]});

@@ -64,6 +64,8 @@ struct AcousticObservations {
   Selection selection = Selection::nanbu;
   bool dry_table = false;                      // outcomes.dry_model = "table": its counters are reported
   bool coulomb_launch = false;                 // ... with charged samples and a launch gap (coulomb_launch.hpp)
+  bool wet_table = false;                      // outcomes.wet_model = "table": its counters are reported
+  bool wet_coulomb_launch = false;             // ... with charged samples and a launch gap
   bool dsmc = false;                           // a DSMC run: PM columns and outcomes by pair type are written
   double min_cell_edge = 0.0;                  // [m] smallest cell edge of the domain (DSMC)
   std::string log;                             // run.log without its last line (see io)

@@ -13,6 +13,10 @@ inline constexpr std::string_view kAcousticCommands = "acoustic, sectional, swee
 // critical velocity; acoustics/outcome_table.hpp: a table of probabilities).
 inline constexpr std::string_view kDryCriticalVelocity = "critical_velocity";
 inline constexpr std::string_view kDryTable = "table";
+// Names of the wet (solid-mixed, mixed-mixed) outcome models (acoustics/outcomes.hpp: the closed-form Ennis
+// critical velocity; acoustics/outcome_table.hpp: a table of probabilities, the dry table's format).
+inline constexpr std::string_view kWetCriticalVelocity = "critical_velocity";
+inline constexpr std::string_view kWetTable = "table";
 
 // Names of the aggregate structures of a DSMC population and of its mobility-radius rules
 // (acoustics/structure.hpp: the formulas, units and sources).
@@ -198,6 +202,15 @@ struct AcousticSettings {
     Text table{t, {"outcomes.table", "", "dry_model = \"table\": NetCDF outcome table (docs/acoustics.md, written by "
                                          "agglo outcomes), relative to the case file"},
                std::nullopt};
+    Choice wet_model{t,
+                     {"outcomes.wet_model", "",
+                      "outcome of solid-mixed and mixed-mixed collisions: the closed-form Ennis critical velocity "
+                      "(eq. 14), or drawn from a table of P_stick, P_bounce, P_break (outcomes.wet_table)",
+                      "critical_velocity (absent: read only when set)"},
+                     std::nullopt, {kWetCriticalVelocity, kWetTable}};
+    Text wet_table{t, {"outcomes.wet_table", "", "wet_model = \"table\": NetCDF outcome table of wet pairs (format "
+                                                 "of outcomes.table), relative to the case file"},
+                   std::nullopt};
   } outcomes;
 
   struct Output {

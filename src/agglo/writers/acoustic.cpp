@@ -19,7 +19,8 @@ using acoustics::AcousticObservations;
 // The collision counters of result.json: the keys both selections share, then the meaning each
 // selection gives to the trial, bound and subdivision counters (binned: candidates against the row
 // majorant; Nanbu: trials against the per-step bound P_n).
-nlohmann::json stats_json(const acoustics::CollisionStats& s, acoustics::Selection sel, bool dry_table) {
+nlohmann::json stats_json(const acoustics::CollisionStats& s, acoustics::Selection sel, bool dry_table,
+                          bool wet_table) {
   const auto by_kind = [](const auto& c) { return nlohmann::json{{"droplet", c[0]}, {"dry", c[1]}, {"wet", c[2]}}; };
   nlohmann::json j{{"particle_steps", s.particle_steps},     {"kernel_evals", s.kernel_evals},
                    {"collisions", s.collisions},             {"coalescences", by_kind(s.coalescences)},
@@ -36,6 +37,10 @@ nlohmann::json stats_json(const acoustics::CollisionStats& s, acoustics::Selecti
   if (dry_table) {  // outcomes.dry_model = "table" only, so the default outputs keep their keys
     j["outcome_table_queries"] = s.table_queries;
     j["outcome_table_clamped"] = s.table_clamped;
+  }
+  if (wet_table) {  // outcomes.wet_model = "table" only
+    j["wet_outcome_table_queries"] = s.wet_table_queries;
+    j["wet_outcome_table_clamped"] = s.wet_table_clamped;
   }
   return j;
 }
@@ -211,7 +216,8 @@ nlohmann::json common_summary(const AcousticObservations& o) {
           {"u_amp_m_s", o.u_amp},
           {"solid_volume_rel_change", rel_change(c0.solid_volume, c1.solid_volume)},
           {"liquid_volume_rel_change", rel_change(c0.liquid_volume, c1.liquid_volume)},
-          {o.selection == acoustics::Selection::binned ? "binned" : "nanbu", stats_json(o.stats, o.selection, o.dry_table)},
+          {o.selection == acoustics::Selection::binned ? "binned" : "nanbu", 
+           stats_json(o.stats, o.selection, o.dry_table, o.wet_table)},
           {"wall_time_s", o.wall_time_s}};
 }
 }  // namespace
