@@ -94,7 +94,8 @@ inline constexpr std::array<std::string_view, 2> kFarFieldNames{"dense", "fmm"};
 // "pair", block Jacobi over a matching of the close pairs (each pair's two-sphere system solved by an
 // inner GMRES); "contact", the system of all close pairs at once (the contact network, inner GMRES):
 // measuring tools that cost more than they save. "contact_low": one Neumann step of the contact system
-// truncated to degrees <= 20 and pair-frame orders <= 2, P^-1 = I - gamma M_low (cheap; not a case key).
+// truncated to degrees <= 20 and pair-frame orders <= 2, P^-1 = I - gamma M_low (cheap). The case key
+// electrostatics.preconditioner (keys.hpp) takes these names.
 inline constexpr std::array<std::string_view, 5> kPreconditionerNames{"none", "coarse", "pair", "contact",
                                                                       "contact_low"};
 
