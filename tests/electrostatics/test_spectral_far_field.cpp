@@ -360,7 +360,7 @@ TEST(SpectralPreconditioner, ContactNetworkGivesTheSameForcesInFewerIterations) 
   EXPECT_LE(sol["contact"].stats.iterations, none - 5);
   EXPECT_LE(sol["coarse"].stats.iterations, none);
   EXPECT_GT(sol["pair"].stats.iterations, none - 5);  // negative control: the matching is not enough
-  // one Neumann step of the contact system at degrees <= 20, frame orders <= 2 (the cheap one)
+  // two Neumann steps of the contact system at degrees <= 20, frame orders <= 2 (the cheap one)
   EXPECT_LE(sol["contact_low"].stats.iterations, none - 3);
   EXPECT_GT(sol["contact"].stats.extra["preconditioner_inner_iterations"].get<long>(), 0);
 }

@@ -57,6 +57,13 @@ constexpr int kCoarseDegree = 8;
 // pair-frame orders <= kContactLowOrder (what carries the contact network's effect; docs/electrostatics.md).
 constexpr int kContactLowDegree = 20;
 constexpr int kContactLowOrder = 2;
+// ... and its Neumann steps z_(k+1) = u - gamma M_low z_k from z_0 = u: P^-1 = I - X + X^2 (X = gamma M_low)
+// with two. Measured (bench_spectral_far_field, rows fmm_pc_contact_low at N = 100, 200, 1000, one thread):
+// 1, 2, 3, 4, 6 steps: kappa_p = 15 N = 1000 12, 10, 10, 10, 9 GMRES iterations, N = 100 11, 10, 9, 9, 9;
+// kappa_p = 2.5 N = 1000 6, 5, 5, 5, 5; a step costs about 3 % of a product (callgrind). Two: never more
+// iterations than one at any size, and the warm start's guess (I + X) beta_prev is then P beta_prev up to
+// X^3 (with one step, up to X^2). docs/electrostatics.md, "Seventh session".
+constexpr int kContactLowSteps = 2;
 
 // Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
 // sphere's own potential outside is sum B_lm I_l^m(x - x_i). The external potential at sphere i
@@ -118,7 +125,7 @@ class SpectralSolver final : public Solver {
   void build_contact_low(const Problem& p);
   void contact_low_products(const double* x);
   void index_contact_low();
-  void apply_contact_low(const double* u, double* z, double sign);
+  void apply_contact_low(const double* x, const double* u, double* z, double sign);
   void set_gamma(const Problem& p);
   void add_gamma_times(const double* x, const double* a, double* y) const;
   std::size_t block_end(std::size_t b0, double& work) const;
@@ -649,17 +656,17 @@ void SpectralSolver::precondition(const double* u, double* z) {
 #pragma omp parallel for schedule(static) if (std::size_t(n) >= kSpectralParallelLength)
   for (std::ptrdiff_t c = 0; c < n; ++c) z[c] = u[c];
   if (pc_contact_) contact_inverse(u, z);
-  if (pc_contact_low_) apply_contact_low(u, z, -1.0);
+  for (int k = 0; pc_contact_low_ && k < kContactLowSteps; ++k) apply_contact_low(z, u, z, -1.0);
   for (std::size_t q : matched_) pair_block_inverse(pairs_[q], u, z);
   if (coarse_) coarse_inverse(u, z);
 }
 
-// u = P x for the warm start's guess (contact_low: P = (I - gamma M_low)^-1, taken as I + gamma M_low).
+// u = P x for the warm start's guess (contact_low: P = (I - X + X^2)^-1 with X = gamma M_low, taken as I + X).
 void SpectralSolver::precondition_forward(const double* x, double* u) {
   const std::size_t n = std::size_t(N_) * nc_, nc = std::size_t(nc_);
 #pragma omp parallel for schedule(static) if (n >= kSpectralParallelLength)
   for (std::size_t c = 0; c < n; ++c) u[c] = x[c];
-  if (pc_contact_low_) apply_contact_low(x, u, 1.0);
+  if (pc_contact_low_) apply_contact_low(x, x, u, 1.0);
   if (pc_contact_) {
     std::vector<double> al(n, 0.0);
     add_contact_products(x, al.data());
@@ -763,12 +770,13 @@ void SpectralSolver::contact_low_products(const double* x) {
   }
 }
 
-// z (= u on entry) += sign gamma M_low u, degrees <= kContactLowDegree: z = (I - gamma M_low) u, one
-// Neumann step of the low contact system's inverse (sign -1), or its forward form (sign +1). Sphere by
-// sphere (in parallel), each summing its pair products in pair order: the same bits at any thread count.
-void SpectralSolver::apply_contact_low(const double* u, double* z, double sign) {
+// z = u + sign gamma M_low x at degrees 1..kContactLowDegree of the spheres with low pairs (z's other
+// numbers are left as they are; z may be x): z = u - gamma M_low x, a Neumann step of the low contact
+// system's inverse (sign -1), or its forward form (x = u, sign +1). Sphere by sphere (in parallel), each
+// summing its pair products in pair order: the same bits at any thread count.
+void SpectralSolver::apply_contact_low(const double* x, const double* u, double* z, double sign) {
   if (low_pairs_.empty()) return;
-  contact_low_products(u);
+  contact_low_products(x);  // reads all of x before z is written
   const std::size_t nc = std::size_t(nc_);
   const int Lc = std::min(L_, kContactLowDegree);
   const int nlc = sh::ncoef(Lc);
@@ -785,9 +793,11 @@ void SpectralSolver::apply_contact_low(const double* u, double* z, double sign) 
         for (int c = 0; c < nlc; ++c) acc[std::size_t(c)] += o[c];
       }
       const double* g = &gamma_[std::size_t(i) * (L_ + 1)];
+      const double* ui = u + std::size_t(i) * nc;
       double* zi = z + std::size_t(i) * nc;
       for (int l = 1; l <= Lc; ++l)
-        for (int m = -l; m <= l; ++m) zi[sh::idx(l, m)] += sign * g[l] * acc[std::size_t(sh::idx(l, m))];
+        for (int m = -l; m <= l; ++m)
+          zi[sh::idx(l, m)] = ui[sh::idx(l, m)] + sign * g[l] * acc[std::size_t(sh::idx(l, m))];
     }
   }
 }
