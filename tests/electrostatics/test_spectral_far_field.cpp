@@ -365,8 +365,9 @@ TEST(SpectralPreconditioner, ContactNetworkGivesTheSameForcesInFewerIterations) 
   EXPECT_GT(sol["contact"].stats.extra["preconditioner_inner_iterations"].get<long>(), 0);
 }
 
-// A warm start with a preconditioner starts GMRES from u = P x_prev (precondition_forward): a moved
-// cluster re-solved warm gives the cold solve's forces, in fewer iterations than cold.
+// A warm start with a preconditioner starts GMRES from u = P x_prev (precondition_forward; contact_low:
+// from the shifted system A P^-1 w = b - A x_prev, solve_warm_shifted): a moved cluster re-solved warm
+// gives the cold solve's forces, in fewer iterations than cold.
 TEST(SpectralPreconditioner, WarmStartMatchesColdSolve) {
   Problem p = random_cluster(20, 1.0, 15.0, 12);
   for (std::string_view name : {kPreconditionerNames[1], kPreconditionerNames[3], kPreconditionerNames[4]}) {

@@ -118,6 +118,7 @@ class SpectralSolver final : public Solver {
   void prepare_preconditioner(const Problem& p);
   void precondition(const double* u, double* z);
   void precondition_forward(const double* x, double* u);
+  GmresResult solve_warm_shifted(const LargeVector& rhs, const GmresOptions& go);
   void coarse_inverse(const double* u, double* z);
   void pair_block_inverse(const Pair& pr, const double* u, double* z);
   void contact_inverse(const double* u, double* z);
@@ -468,18 +469,23 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector
   if (pc_coarse_ || pc_pair_ || pc_contact_ || pc_contact_low_) {
     // right preconditioning: A P^-1 u = rhs, beta = P^-1 u; the residual is the true one, rhs - A beta.
     // The last application (GMRES's explicit residual at its solution) leaves z_ = P^-1 u = beta.
-    LargeVector u(n);
-    if (prev_N_ == N && prev_L_ >= 0)
-      precondition_forward(beta_.data(), u.data());
-    else
-      u = rhs;
-    z_.resize(n);
-    auto apply_pc = [&](std::span<const double> us, std::span<double> ys) {
-      precondition(us.data(), z_.data());
-      apply_system(z_, ys);
-    };
-    gr = gmres(apply_pc, rhs, u, {}, go, &ws_);
-    beta_ = z_;
+    const bool warm = prev_N_ == N && prev_L_ >= 0;
+    if (warm && pc_contact_low_) {
+      gr = solve_warm_shifted(rhs, go);
+    } else {
+      LargeVector u(n);
+      if (warm)
+        precondition_forward(beta_.data(), u.data());
+      else
+        u = rhs;
+      z_.resize(n);
+      auto apply_pc = [&](std::span<const double> us, std::span<double> ys) {
+        precondition(us.data(), z_.data());
+        apply_system(z_, ys);
+      };
+      gr = gmres(apply_pc, rhs, u, {}, go, &ws_);
+      beta_ = z_;
+    }
   } else {
     auto apply = [&](std::span<const double> xs, std::span<double> ys) { apply_system(xs, ys); };
     gr = gmres(apply, rhs, beta_, {}, go, &ws_);
@@ -492,6 +498,49 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector
   // A converged GMRES (recheck_true_residual) ends with the explicit residual of its solution, beta_:
   // its application left alpha_ = M beta_ (apply_system).
   alpha_current_ = true;
+  return gr;
+}
+
+// contact_low's warm start, exact: A P^-1 w = rhs - A beta_prev from w = 0, beta = beta_prev + P^-1 w
+// (its P^-1 = I - X + X^2 has no cheap inverse for the guess u = P beta_prev: (I + X) beta_prev started
+// GMRES from (I + X^3) beta_prev). The stopping rule stays ||rhs - A beta|| <= tol ||rhs||, and on return
+// alpha_ = M beta = M beta_prev + M P^-1 w (the last application's). An application to w = 0 (GMRES's first
+// residual) is 0 without a product. Element-wise passes only: the same bits at any thread count.
+GmresResult SpectralSolver::solve_warm_shifted(const LargeVector& rhs, const GmresOptions& go) {
+  const std::size_t n = rhs.size();
+  const bool threaded = n >= kSpectralParallelLength;
+  LargeVector b(n), w(n), alpha0;
+  apply_system(beta_, b);  // b = A beta_prev, alpha_ = M beta_prev
+  alpha0 = alpha_;
+  double rn = 0.0, bn = 0.0;  // sequential sums: the same bits at any thread count
+#pragma omp parallel for schedule(static) if (threaded)
+  for (std::size_t c = 0; c < n; ++c) b[c] = rhs[c] - b[c];
+  for (std::size_t c = 0; c < n; ++c) {
+    rn += rhs[c] * rhs[c];
+    bn += b[c] * b[c];
+  }
+  std::fill(w.begin(), w.end(), 0.0);
+  z_.assign(n, 0.0);
+  std::fill(alpha_.begin(), alpha_.end(), 0.0);  // M z_ while no application has run
+  auto apply = [&](std::span<const double> ws, std::span<double> ys) {
+    if (std::all_of(ws.begin(), ws.end(), [](double v) { return v == 0.0; })) {
+      std::fill(z_.begin(), z_.end(), 0.0);
+      std::fill(alpha_.begin(), alpha_.end(), 0.0);
+      std::fill(ys.begin(), ys.end(), 0.0);
+      return;
+    }
+    precondition(ws.data(), z_.data());
+    apply_system(z_, ys);
+  };
+  GmresOptions g = go;
+  if (bn > 0.0) g.tolerance = go.tolerance * std::sqrt(rn / bn);
+  GmresResult gr = gmres(apply, b, w, {}, g, &ws_);
+  if (rn > 0.0) gr.residual *= std::sqrt(bn / rn);
+#pragma omp parallel for schedule(static) if (threaded)
+  for (std::size_t c = 0; c < n; ++c) {
+    beta_[c] += z_[c];
+    alpha_[c] += alpha0[c];
+  }
   return gr;
 }
 
