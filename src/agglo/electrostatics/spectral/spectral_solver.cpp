@@ -710,12 +710,11 @@ void SpectralSolver::precondition(const double* u, double* z) {
   if (coarse_) coarse_inverse(u, z);
 }
 
-// u = P x for the warm start's guess (contact_low: P = (I - X + X^2)^-1 with X = gamma M_low, taken as I + X).
+// u = P x for the warm start's guess (coarse, pair, contact; contact_low's warm start is solve_warm_shifted).
 void SpectralSolver::precondition_forward(const double* x, double* u) {
   const std::size_t n = std::size_t(N_) * nc_, nc = std::size_t(nc_);
 #pragma omp parallel for schedule(static) if (n >= kSpectralParallelLength)
   for (std::size_t c = 0; c < n; ++c) u[c] = x[c];
-  if (pc_contact_low_) apply_contact_low(x, x, u, 1.0);
   if (pc_contact_) {
     std::vector<double> al(n, 0.0);
     add_contact_products(x, al.data());
@@ -820,8 +819,8 @@ void SpectralSolver::contact_low_products(const double* x) {
 }
 
 // z = u + sign gamma M_low x at degrees 1..kContactLowDegree of the spheres with low pairs (z's other
-// numbers are left as they are; z may be x): z = u - gamma M_low x, a Neumann step of the low contact
-// system's inverse (sign -1), or its forward form (x = u, sign +1). Sphere by sphere (in parallel), each
+// numbers are left as they are; z may be x): with sign -1, z = u - gamma M_low x, a Neumann step of the
+// low contact system's inverse. Sphere by sphere (in parallel), each
 // summing its pair products in pair order: the same bits at any thread count.
 void SpectralSolver::apply_contact_low(const double* x, const double* u, double* z, double sign) {
   if (low_pairs_.empty()) return;
