@@ -248,6 +248,20 @@ TEST(SpectralPreconditioner, ContactLowDoesNotDependOnTheThreadCount) {
   EXPECT_TRUE(two.stats.extra.at("contact_low_parallel").get<bool>()) << "the contact_low passes ran serially";
   EXPECT_GT(two.stats.iterations, 0);
   expect_same_bits(two, one);
+  // the warm re-solve (solve_warm_shifted) after a move of 1e-3 r, on one and on two threads
+  Problem q = p;
+  q.spheres[0].center = q.spheres[0].center + Vec3{1e-3 * kR, 0, 0};
+  std::vector<Solution> warm;
+  const int saved = omp_get_max_threads();
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    auto solver = make_solver(o);
+    solver->solve(p);
+    warm.push_back(solver->solve(q));
+  }
+  omp_set_num_threads(saved);
+  EXPECT_GT(warm[0].stats.iterations, 0);
+  expect_same_bits(warm[1], warm[0]);
 }
 
 // The near pairs of degree >= 20 rotate through the shared quarter turns (pivot_rotation.hpp); their twin
