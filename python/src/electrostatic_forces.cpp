@@ -187,6 +187,8 @@ max_steps, max_memory : number, str or None
     max_degree_limit (int, spectral: highest adaptive degree; default 80),
     far_field ("dense" or "fmm", spectral: every pair re-expanded directly, or well-separated pairs
     through an octree; default "dense"),
+    preconditioner ("none", "contact_low", or the measuring tools "coarse", "pair", "contact";
+    spectral: right preconditioner of GMRES, contact_low the fast one; default "none"),
     patches_per_sphere (int, bem; default 2000),
     tolerance (bem, spectral: relative GMRES tolerance; default 1e-6),
     max_iterations (int, most GMRES iterations; default 200),

@@ -22,15 +22,19 @@ TEST(EsConfig, DefaultsAreWrittenBack) {
   EXPECT_EQ(ec.options.patches_per_sphere, 2000);
   EXPECT_EQ(ec.options.matvec, "fmm");
   EXPECT_EQ(ec.options.far_field, "dense");
+  EXPECT_EQ(ec.options.preconditioner, "none");
   auto txt = cfg.resolved_toml();
   for (auto key : {"min_gap", "update_fraction", "target_accuracy", "patches_per_sphere", "external_field", "matvec"})
     EXPECT_NE(txt.find(key), std::string::npos) << key;
+  // electrostatics.preconditioner is read only when set: a case that does not name it resolves as before
+  EXPECT_EQ(txt.find("preconditioner"), std::string::npos) << txt;
 }
 
 TEST(EsConfig, ValuesAndRangeErrors) {
   auto cfg = Config::from_string(
       "[electrostatics]\nsolver='coulomb'\nmedium_permittivity=2.5\nmin_gap=0\nexternal_field=[1,2,3]\n"
-      "max_degree=30\nmatvec='direct'\nupdate_interval=10\nforce_scale_chi=true\nfar_field='fmm'\n");
+      "max_degree=30\nmatvec='direct'\nupdate_interval=10\nforce_scale_chi=true\nfar_field='fmm'\n"
+      "preconditioner='contact_low'\n");
   auto ec = parse_electrostatics(cfg.root().section("electrostatics"));
   EXPECT_EQ(ec.options.solver, "coulomb");
   EXPECT_EQ(ec.medium_permittivity, 2.5);
@@ -41,8 +45,9 @@ TEST(EsConfig, ValuesAndRangeErrors) {
   EXPECT_EQ(ec.update_interval, 10);
   EXPECT_TRUE(ec.force_scale_chi);
   EXPECT_EQ(ec.options.far_field, "fmm");
+  EXPECT_EQ(ec.options.preconditioner, "contact_low");
   for (const char* bad : {"medium_permittivity=0", "medium_permittivity=-1", "medium_permittivity=1e300", "min_gap=-0.1",
-                          "update_fraction=0", "update_fraction=1.5", "solver='fast'", "matvec='gpu'", "far_field='tree'", "tolerance=0",
+                          "update_fraction=0", "update_fraction=1.5", "solver='fast'", "matvec='gpu'", "far_field='tree'", "preconditioner='ilu'", "tolerance=0",
                           "max_degree=-1", "max_degree=100", "target_accuracy=2"}) {
     auto c = Config::from_string(std::string("[electrostatics]\n") + bad + "\n", "case.toml");
     try {

@@ -200,25 +200,68 @@ TEST(SpectralFarField, GmresIterationsDoNotGrowWithN) {
   EXPECT_LE(std::abs(its[1] - its[0]), 2) << its[0] << " vs " << its[1];
 }
 
+// Cold solves of p on one and on two threads: {one thread, two threads}.
+std::pair<Solution, Solution> solve_on_one_and_two_threads(const SolverOptions& o, const Problem& p) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  Solution one = make_solver(o)->solve(p);
+  omp_set_num_threads(2);
+  Solution two = make_solver(o)->solve(p);
+  omp_set_num_threads(saved);
+  return {std::move(one), std::move(two)};
+}
+
+// The same energy, forces and torques, bit for bit, and the same GMRES iterations.
+void expect_same_bits(const Solution& two, const Solution& one) {
+  EXPECT_EQ(two.stats.iterations, one.stats.iterations);
+  EXPECT_EQ(two.energy, one.energy);
+  for (std::size_t i = 0; i < one.force.size(); ++i) {
+    EXPECT_TRUE(two.force[i].x == one.force[i].x && two.force[i].y == one.force[i].y &&
+                two.force[i].z == one.force[i].z)
+        << "force on sphere " << i;
+    EXPECT_TRUE(two.torque[i].x == one.torque[i].x && two.torque[i].y == one.torque[i].y &&
+                two.torque[i].z == one.torque[i].z)
+        << "torque on sphere " << i;
+  }
+}
+
 // The fmm solution is the same at any thread count (bit for bit), with the far-field passes and the pair
 // products in parallel and near pairs through the quarter turns (pivot_rotation.hpp).
 TEST(SpectralFarField, SolutionDoesNotDependOnTheThreadCount) {
   const SolverOptions o = far_field_options("fmm");  // target 1e-4: L = 47, enough pair work for threads
   const Problem p = random_cluster(300, 1.0, 2.5, 3);
-  const int saved = omp_get_max_threads();
-  omp_set_num_threads(1);
-  const Solution one = make_solver(o)->solve(p);
-  omp_set_num_threads(2);
-  const Solution two = make_solver(o)->solve(p);
-  omp_set_num_threads(saved);
+  const auto [one, two] = solve_on_one_and_two_threads(o, p);
   EXPECT_TRUE(two.stats.extra.at("far_field_parallel").get<bool>()) << "the far field ran serially";
   EXPECT_GT(two.stats.extra.at("parallel_pair_blocks").get<int>(), 0) << "the pair products ran serially";
   EXPECT_GT(two.stats.extra.at("pivot_pairs").get<int>(), 0) << "no pair took the quarter turns";
-  EXPECT_EQ(two.energy, one.energy);
-  for (std::size_t i = 0; i < p.spheres.size(); ++i)
-    EXPECT_TRUE(two.force[i].x == one.force[i].x && two.force[i].y == one.force[i].y &&
-                two.force[i].z == one.force[i].z)
-        << "sphere " << i;
+  expect_same_bits(two, one);
+}
+
+// The contact_low preconditioner's passes (the low pairs' products, then sphere by sphere their sums in
+// pair order) run in parallel and give the same bits on one and two threads (kappa_p = 15, the N = 300
+// cluster: about a hundred close pairs, enough work for threads).
+TEST(SpectralPreconditioner, ContactLowDoesNotDependOnTheThreadCount) {
+  SolverOptions o = far_field_options("fmm");
+  o.preconditioner = "contact_low";
+  const Problem p = random_cluster(300, 1.0, 15.0, 3);
+  const auto [one, two] = solve_on_one_and_two_threads(o, p);
+  EXPECT_TRUE(two.stats.extra.at("contact_low_parallel").get<bool>()) << "the contact_low passes ran serially";
+  EXPECT_GT(two.stats.iterations, 0);
+  expect_same_bits(two, one);
+  // the warm re-solve (solve_warm_shifted) after a move of 1e-3 r, on one and on two threads
+  Problem q = p;
+  q.spheres[0].center = q.spheres[0].center + Vec3{1e-3 * kR, 0, 0};
+  std::vector<Solution> warm;
+  const int saved = omp_get_max_threads();
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    auto solver = make_solver(o);
+    solver->solve(p);
+    warm.push_back(solver->solve(q));
+  }
+  omp_set_num_threads(saved);
+  EXPECT_GT(warm[0].stats.iterations, 0);
+  expect_same_bits(warm[1], warm[0]);
 }
 
 // The near pairs of degree >= 20 rotate through the shared quarter turns (pivot_rotation.hpp); their twin
@@ -331,13 +374,14 @@ TEST(SpectralPreconditioner, ContactNetworkGivesTheSameForcesInFewerIterations) 
   EXPECT_LE(sol["contact"].stats.iterations, none - 5);
   EXPECT_LE(sol["coarse"].stats.iterations, none);
   EXPECT_GT(sol["pair"].stats.iterations, none - 5);  // negative control: the matching is not enough
-  // one Neumann step of the contact system at degrees <= 20, frame orders <= 2 (the cheap one)
+  // two Neumann steps of the contact system at degrees <= 20, frame orders <= 2 (the cheap one)
   EXPECT_LE(sol["contact_low"].stats.iterations, none - 3);
   EXPECT_GT(sol["contact"].stats.extra["preconditioner_inner_iterations"].get<long>(), 0);
 }
 
-// A warm start with a preconditioner starts GMRES from u = P x_prev (precondition_forward): a moved
-// cluster re-solved warm gives the cold solve's forces, in fewer iterations than cold.
+// A warm start with a preconditioner starts GMRES from u = P x_prev (precondition_forward; contact_low:
+// from the shifted system A P^-1 w = b - A x_prev, solve_warm_shifted): a moved cluster re-solved warm
+// gives the cold solve's forces, in fewer iterations than cold.
 TEST(SpectralPreconditioner, WarmStartMatchesColdSolve) {
   Problem p = random_cluster(20, 1.0, 15.0, 12);
   for (std::string_view name : {kPreconditionerNames[1], kPreconditionerNames[3], kPreconditionerNames[4]}) {

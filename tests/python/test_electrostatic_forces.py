@@ -155,6 +155,18 @@ def test_same_as_cli_bem_without_min_gap(agglo_module, tmp_path):
     assert abs(res.energy - energy) < 1e-12 * abs(energy)
 
 
+def test_preconditioner_reaches_the_solver(agglo_module):
+    """preconditioner="contact_low" (electrostatics.preconditioner): fewer GMRES iterations for touching
+    kappa_p = 15 spheres (a chain of four, min_gap 0.01), the same forces to the GMRES tolerance."""
+    x = np.array([[0.0, 0.0, 0.0], [20e-6, 0.0, 0.0], [30e-6, 17.320508e-6, 0.0], [50e-6, 17.320508e-6, 0.0]])
+    args = (x, np.full(4, 10e-6), np.array([1.25e-14, -1.25e-14, 1.25e-14, -1.25e-14]), np.full(4, 15.0))
+    none = agglo_module.electrostatic_forces(*args, min_gap=0.01)
+    low = agglo_module.electrostatic_forces(*args, min_gap=0.01, preconditioner="contact_low")
+    assert low.stats["iterations"] <= none.stats["iterations"] - 2, (low.stats, none.stats)
+    scale = np.max(np.linalg.norm(none.forces, axis=1))
+    assert np.max(np.linalg.norm(low.forces - none.forces, axis=1)) < 1e-5 * scale
+
+
 def test_touching_spheres_need_min_gap(agglo_module):
     x = np.array([[0.0, 0.0, 0.0], [20e-6, 0.0, 0.0]])
     args = (x, np.full(2, 10e-6), np.array([1e-14, -1e-14]), np.full(2, 5.0))
@@ -191,9 +203,10 @@ GOOD = dict(positions=[[0.0, 0.0, 0.0], [0.0, 0.0, 30e-6]], radii=[10e-6, 10e-6]
     (dict(max_degree=500), "argument 'max_degree' = 500"),
     (dict(max_degree=2.5), "argument 'max_degree' = 2.5"),
     (dict(tolerance="small"), "argument 'tolerance' = \"small\""),
+    (dict(preconditioner="ilu"), "argument 'preconditioner' = \"ilu\""),
     (dict(matvec=[1]), "argument 'matvec' has type list (must be a number or a string)"),
     (dict(degree=10), "unknown option 'degree' (allowed: max_degree, target_accuracy, max_degree_limit, "
-                      "far_field, patches_per_sphere, tolerance, max_iterations, matvec, fmm_order, fmm_leaf_size)"),
+                      "far_field, preconditioner, patches_per_sphere, tolerance, max_iterations, matvec, fmm_order, fmm_leaf_size)"),
     (dict(threads=-1), "argument 'threads' = -1 (must be a whole number >= 0"),
     # The physical ranges of the CLI's [[particles]] and [electrostatics] keys (issue 23 item 10: all ran).
     (dict(radii=10.0), "radii[0] = 10 m (must be in (0, 0.1] m, the range of particles.radius)"),

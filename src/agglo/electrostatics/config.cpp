@@ -27,6 +27,7 @@ EsConfig parse_electrostatics(const ConfigSection& s) {
   o.target_accuracy = k.target_accuracy.read(s);
   o.max_degree_limit = static_cast<int>(k.max_degree_limit.read(s));
   o.far_field = k.far_field.read(s);
+  if (k.preconditioner.present(s)) o.preconditioner = k.preconditioner.read(s);
   o.patches_per_sphere = static_cast<int>(k.patches_per_sphere.read(s));
   o.tolerance = k.tolerance.read(s);
   o.max_iterations = static_cast<int>(k.max_iterations.read(s));

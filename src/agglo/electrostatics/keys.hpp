@@ -59,6 +59,14 @@ struct SolverKeys {
                               "spectral: far field of the product, every pair directly (dense) or through an octree (fmm)"},
                              kFarFieldNames[0],
                              std::vector<std::string_view>(kFarFieldNames.begin(), kFarFieldNames.end())};
+  // Read only when set (config.cpp), so that the resolved config of a case that does not name it is unchanged.
+  settings::Choice preconditioner{
+      t,
+      {"electrostatics.preconditioner", "",
+       "spectral: right preconditioner of GMRES; contact_low is the fast one, the others are measuring tools "
+       "(docs/electrostatics.md)"},
+      kPreconditionerNames[0],
+      std::vector<std::string_view>(kPreconditionerNames.begin(), kPreconditionerNames.end())};
   settings::Integer patches_per_sphere{t,
                                        {"electrostatics.patches_per_sphere", "", "bem: surface patches per sphere"},
                                        2000,

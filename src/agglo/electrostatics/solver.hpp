@@ -93,8 +93,9 @@ inline constexpr std::array<std::string_view, 2> kFarFieldNames{"dense", "fmm"};
 // low degrees (the system restricted to degrees <= 8, solved by an inner GMRES, identity above);
 // "pair", block Jacobi over a matching of the close pairs (each pair's two-sphere system solved by an
 // inner GMRES); "contact", the system of all close pairs at once (the contact network, inner GMRES):
-// measuring tools that cost more than they save. "contact_low": one Neumann step of the contact system
-// truncated to degrees <= 20 and pair-frame orders <= 2, P^-1 = I - gamma M_low (cheap; not a case key).
+// measuring tools that cost more than they save. "contact_low": two Neumann steps of the contact system
+// truncated to degrees <= 20 and pair-frame orders <= 2, P^-1 = I - X + X^2 with X = gamma M_low (cheap). The case key
+// electrostatics.preconditioner (keys.hpp) takes these names.
 inline constexpr std::array<std::string_view, 5> kPreconditionerNames{"none", "coarse", "pair", "contact",
                                                                       "contact_low"};
 

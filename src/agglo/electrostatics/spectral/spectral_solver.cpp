@@ -57,6 +57,13 @@ constexpr int kCoarseDegree = 8;
 // pair-frame orders <= kContactLowOrder (what carries the contact network's effect; docs/electrostatics.md).
 constexpr int kContactLowDegree = 20;
 constexpr int kContactLowOrder = 2;
+// ... and its Neumann steps z_(k+1) = u - gamma M_low z_k from z_0 = u: P^-1 = I - X + X^2 (X = gamma M_low)
+// with two. Measured (bench_spectral_far_field, rows fmm_pc_contact_low at N = 100, 200, 1000, one thread):
+// 1, 2, 3, 4, 6 steps: kappa_p = 15 N = 1000 12, 10, 10, 10, 9 GMRES iterations, N = 100 11, 10, 9, 9, 9;
+// kappa_p = 2.5 N = 1000 6, 5, 5, 5, 5; a step costs about 3 % of a product (callgrind). Two: never more
+// iterations than one at any size, and the warm start's guess (I + X) beta_prev is then P beta_prev up to
+// X^3 (with one step, up to X^2). docs/electrostatics.md, "Seventh session".
+constexpr int kContactLowSteps = 2;
 
 // Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
 // sphere's own potential outside is sum B_lm I_l^m(x - x_i). The external potential at sphere i
@@ -111,13 +118,15 @@ class SpectralSolver final : public Solver {
   void prepare_preconditioner(const Problem& p);
   void precondition(const double* u, double* z);
   void precondition_forward(const double* x, double* u);
+  GmresResult solve_warm_shifted(const LargeVector& rhs, const GmresOptions& go);
   void coarse_inverse(const double* u, double* z);
   void pair_block_inverse(const Pair& pr, const double* u, double* z);
   void contact_inverse(const double* u, double* z);
   void add_contact_products(const double* x, double* alpha) const;
   void build_contact_low(const Problem& p);
   void contact_low_products(const double* x);
-  void apply_contact_low(const double* u, double* z, double sign);
+  void index_contact_low();
+  void apply_contact_low(const double* x, const double* u, double* z, double sign);
   void set_gamma(const Problem& p);
   void add_gamma_times(const double* x, const double* a, double* y) const;
   std::size_t block_end(std::size_t b0, double& work) const;
@@ -153,7 +162,11 @@ class SpectralSolver final : public Solver {
   // last operator application, coarse vectors
   bool pc_coarse_ = false, pc_pair_ = false, pc_contact_ = false, pc_contact_low_ = false;
   std::vector<Pair> low_pairs_;  // contact_low: the close pairs at kContactLowDegree, kContactLowOrder
-  std::vector<double> low_alpha_;  // contact_low: M_low x, ncoef(kContactLowDegree) per sphere
+  std::vector<double> low_out_;  // contact_low: each low pair's two products, 2 ncoef(kContactLowDegree) a pair
+  // contact_low: per sphere, its products in low_out_ (offsets, in pair order), from low_start_[i] on
+  std::vector<std::size_t> low_start_, low_slot_;
+  // contact_low: whether its passes have the work to run in parallel (whether or not threads > 1)
+  bool low_parallel_ = false;
   std::unique_ptr<SpectralSolver> coarse_;
   std::vector<std::size_t> matched_;
   LargeVector z_;
@@ -456,18 +469,23 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector
   if (pc_coarse_ || pc_pair_ || pc_contact_ || pc_contact_low_) {
     // right preconditioning: A P^-1 u = rhs, beta = P^-1 u; the residual is the true one, rhs - A beta.
     // The last application (GMRES's explicit residual at its solution) leaves z_ = P^-1 u = beta.
-    LargeVector u(n);
-    if (prev_N_ == N && prev_L_ >= 0)
-      precondition_forward(beta_.data(), u.data());
-    else
-      u = rhs;
-    z_.resize(n);
-    auto apply_pc = [&](std::span<const double> us, std::span<double> ys) {
-      precondition(us.data(), z_.data());
-      apply_system(z_, ys);
-    };
-    gr = gmres(apply_pc, rhs, u, {}, go, &ws_);
-    beta_ = z_;
+    const bool warm = prev_N_ == N && prev_L_ >= 0;
+    if (warm && pc_contact_low_) {
+      gr = solve_warm_shifted(rhs, go);
+    } else {
+      LargeVector u(n);
+      if (warm)
+        precondition_forward(beta_.data(), u.data());
+      else
+        u = rhs;
+      z_.resize(n);
+      auto apply_pc = [&](std::span<const double> us, std::span<double> ys) {
+        precondition(us.data(), z_.data());
+        apply_system(z_, ys);
+      };
+      gr = gmres(apply_pc, rhs, u, {}, go, &ws_);
+      beta_ = z_;
+    }
   } else {
     auto apply = [&](std::span<const double> xs, std::span<double> ys) { apply_system(xs, ys); };
     gr = gmres(apply, rhs, beta_, {}, go, &ws_);
@@ -480,6 +498,49 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector
   // A converged GMRES (recheck_true_residual) ends with the explicit residual of its solution, beta_:
   // its application left alpha_ = M beta_ (apply_system).
   alpha_current_ = true;
+  return gr;
+}
+
+// contact_low's warm start, exact: A P^-1 w = rhs - A beta_prev from w = 0, beta = beta_prev + P^-1 w
+// (its P^-1 = I - X + X^2 has no cheap inverse for the guess u = P beta_prev: (I + X) beta_prev started
+// GMRES from (I + X^3) beta_prev). The stopping rule stays ||rhs - A beta|| <= tol ||rhs||, and on return
+// alpha_ = M beta = M beta_prev + M P^-1 w (the last application's). An application to w = 0 (GMRES's first
+// residual) is 0 without a product. Element-wise passes only: the same bits at any thread count.
+GmresResult SpectralSolver::solve_warm_shifted(const LargeVector& rhs, const GmresOptions& go) {
+  const std::size_t n = rhs.size();
+  const bool threaded = n >= kSpectralParallelLength;
+  LargeVector b(n), w(n), alpha0;
+  apply_system(beta_, b);  // b = A beta_prev, alpha_ = M beta_prev
+  alpha0 = alpha_;
+  double rn = 0.0, bn = 0.0;  // sequential sums: the same bits at any thread count
+#pragma omp parallel for schedule(static) if (threaded)
+  for (std::size_t c = 0; c < n; ++c) b[c] = rhs[c] - b[c];
+  for (std::size_t c = 0; c < n; ++c) {
+    rn += rhs[c] * rhs[c];
+    bn += b[c] * b[c];
+  }
+  std::fill(w.begin(), w.end(), 0.0);
+  z_.assign(n, 0.0);
+  std::fill(alpha_.begin(), alpha_.end(), 0.0);  // M z_ while no application has run
+  auto apply = [&](std::span<const double> ws, std::span<double> ys) {
+    if (std::all_of(ws.begin(), ws.end(), [](double v) { return v == 0.0; })) {
+      std::fill(z_.begin(), z_.end(), 0.0);
+      std::fill(alpha_.begin(), alpha_.end(), 0.0);
+      std::fill(ys.begin(), ys.end(), 0.0);
+      return;
+    }
+    precondition(ws.data(), z_.data());
+    apply_system(z_, ys);
+  };
+  GmresOptions g = go;
+  if (bn > 0.0) g.tolerance = go.tolerance * std::sqrt(rn / bn);
+  GmresResult gr = gmres(apply, b, w, {}, g, &ws_);
+  if (rn > 0.0) gr.residual *= std::sqrt(bn / rn);
+#pragma omp parallel for schedule(static) if (threaded)
+  for (std::size_t c = 0; c < n; ++c) {
+    beta_[c] += z_[c];
+    alpha_[c] += alpha0[c];
+  }
   return gr;
 }
 
@@ -566,6 +627,7 @@ Solution SpectralSolver::solve(const Problem& p) {
   if (pc_coarse_ || pc_pair_ || pc_contact_ || pc_contact_low_) {
     sol.stats.extra["preconditioner_inner_iterations"] = inner_iterations_;
     sol.stats.extra["matched_pairs"] = matched_.size();
+    sol.stats.extra["contact_low_parallel"] = low_parallel_;
   }
   if (far_) {
     sol.stats.extra["far_field_order"] = far_->order();
@@ -604,6 +666,7 @@ void SpectralSolver::prepare_preconditioner(const Problem& p) {
   coarse_.reset();
   matched_.clear();
   low_pairs_.clear();
+  low_parallel_ = false;
   if (pc_contact_low_) build_contact_low(p);
   if (pc_coarse_ && L_ > kCoarseDegree) {
     SolverOptions oc = opt_;
@@ -638,19 +701,20 @@ void SpectralSolver::prepare_preconditioner(const Problem& p) {
 // z = P^-1 u: the contact network's system solved, or the matched pairs' two-sphere systems (block
 // Jacobi), or the degrees <= kCoarseDegree replaced by the coarse system's solution for u's low degrees.
 void SpectralSolver::precondition(const double* u, double* z) {
-  const std::size_t n = std::size_t(N_) * nc_;
-  std::copy(u, u + n, z);
+  const std::ptrdiff_t n = std::ptrdiff_t(N_) * nc_;
+#pragma omp parallel for schedule(static) if (std::size_t(n) >= kSpectralParallelLength)
+  for (std::ptrdiff_t c = 0; c < n; ++c) z[c] = u[c];
   if (pc_contact_) contact_inverse(u, z);
-  if (pc_contact_low_) apply_contact_low(u, z, -1.0);
+  for (int k = 0; pc_contact_low_ && k < kContactLowSteps; ++k) apply_contact_low(z, u, z, -1.0);
   for (std::size_t q : matched_) pair_block_inverse(pairs_[q], u, z);
   if (coarse_) coarse_inverse(u, z);
 }
 
-// u = P x for the warm start's guess (contact_low: P = (I - gamma M_low)^-1, taken as I + gamma M_low).
+// u = P x for the warm start's guess (coarse, pair, contact; contact_low's warm start is solve_warm_shifted).
 void SpectralSolver::precondition_forward(const double* x, double* u) {
   const std::size_t n = std::size_t(N_) * nc_, nc = std::size_t(nc_);
-  std::copy(x, x + n, u);
-  if (pc_contact_low_) apply_contact_low(x, u, 1.0);
+#pragma omp parallel for schedule(static) if (n >= kSpectralParallelLength)
+  for (std::size_t c = 0; c < n; ++c) u[c] = x[c];
   if (pc_contact_) {
     std::vector<double> al(n, 0.0);
     add_contact_products(x, al.data());
@@ -696,10 +760,17 @@ void SpectralSolver::coarse_inverse(const double* u, double* z) {
 
 // contact_low: each close pair (degree >= kPivotDegree) again at degree kContactLowDegree and frame order
 // kContactLowOrder, with its own stored rotation blocks (small at that degree and order).
+// The pairs are set up in parallel (each alone: the same numbers at any thread count).
 void SpectralSolver::build_contact_low(const Problem& p) {
-  for (const Pair& pr : pairs_) {
-    if (pr.L < kPivotDegree) continue;
-    Pair q;
+  std::vector<std::size_t> close;
+  for (std::size_t q = 0; q < pairs_.size(); ++q)
+    if (pairs_[q].L >= kPivotDegree) close.push_back(q);
+  low_pairs_.resize(close.size());
+  low_parallel_ = double(close.size()) * std::pow(kContactLowDegree + 1.0, 3) > kParallelPairWork;
+#pragma omp parallel for schedule(dynamic, 16) if (low_parallel_ && omp_get_max_threads() > 1)
+  for (std::size_t r = 0; r < close.size(); ++r) {
+    const Pair& pr = pairs_[close[r]];
+    Pair& q = low_pairs_[r];
     q.i = pr.i;
     q.k = pr.k;
     q.ui = pr.ui;
@@ -708,35 +779,75 @@ void SpectralSolver::build_contact_low(const Problem& p) {
     q.M = std::min(pr.M, kContactLowOrder);
     q.R.build(p.spheres[pr.k].center - p.spheres[pr.i].center, q.L, q.M);
     sh::AxialTranslation::source_powers(std::min(q.L, q.M), q.ui, q.uk, q.powers);
-    low_pairs_.push_back(std::move(q));
   }
+  index_contact_low();
 }
 
-// low_alpha_ = M_low x (the pairs of low_pairs_, in pair order), ncoef(kContactLowDegree) per sphere.
+// low_start_, low_slot_: each sphere's products in low_out_, in pair order (pair r writes its sphere i's
+// product at 2 r nl, its sphere k's at (2 r + 1) nl).
+void SpectralSolver::index_contact_low() {
+  const std::size_t nl = std::size_t(sh::ncoef(kContactLowDegree));
+  low_start_.assign(std::size_t(N_) + 1, 0);
+  for (const Pair& pr : low_pairs_) {
+    ++low_start_[std::size_t(pr.i) + 1];
+    ++low_start_[std::size_t(pr.k) + 1];
+  }
+  for (std::size_t i = 0; i < std::size_t(N_); ++i) low_start_[i + 1] += low_start_[i];
+  low_slot_.resize(2 * low_pairs_.size());
+  std::vector<std::size_t> next(low_start_.begin(), low_start_.end() - 1);
+  for (std::size_t r = 0; r < low_pairs_.size(); ++r) {
+    low_slot_[next[std::size_t(low_pairs_[r].i)]++] = 2 * r * nl;
+    low_slot_[next[std::size_t(low_pairs_[r].k)]++] = (2 * r + 1) * nl;
+  }
+  low_out_.resize(2 * low_pairs_.size() * nl);
+}
+
+// low_out_: each low pair's two products of x (pair r: sphere i's at 2 r nl, sphere k's at (2 r + 1) nl,
+// ncoef(pair degree) numbers each), the pairs in parallel, each into its own slot.
 void SpectralSolver::contact_low_products(const double* x) {
   const std::size_t nc = std::size_t(nc_), nl = std::size_t(sh::ncoef(kContactLowDegree));
-  low_alpha_.assign(std::size_t(N_) * nl, 0.0);
-  std::vector<double> s(4 * nl), o(2 * nl);
-  for (const Pair& pr : low_pairs_) {
-    const int np = sh::ncoef(pr.L);
-    pair_product_at(pr, x + pr.i * nc, x + pr.k * nc, o.data(), o.data() + np, s.data());
-    for (int c = 0; c < np; ++c) {
-      low_alpha_[pr.i * nl + c] += o[c];
-      low_alpha_[pr.k * nl + c] += o[np + c];
-    }
+  const std::size_t npairs = low_pairs_.size();
+  const int threads = omp_get_max_threads();
+  scratch_.resize(std::max(scratch_.size(), std::size_t(threads) * 4 * nl));
+#pragma omp parallel for schedule(dynamic, 16) if (low_parallel_ && threads > 1)
+  for (std::size_t r = 0; r < npairs; ++r) {
+    const Pair& pr = low_pairs_[r];
+    double* o = &low_out_[2 * r * nl];
+    pair_product_at(pr, x + pr.i * nc, x + pr.k * nc, o, o + nl,
+                    &scratch_[std::size_t(omp_get_thread_num()) * 4 * nl]);
   }
 }
 
-// z (= u on entry) += sign gamma M_low u, degrees <= kContactLowDegree: z = (I - gamma M_low) u, one
-// Neumann step of the low contact system's inverse (sign -1), or its forward form (sign +1).
-void SpectralSolver::apply_contact_low(const double* u, double* z, double sign) {
-  contact_low_products(u);
-  const std::size_t nc = std::size_t(nc_), nl = std::size_t(sh::ncoef(kContactLowDegree));
+// z = u + sign gamma M_low x at degrees 1..kContactLowDegree of the spheres with low pairs (z's other
+// numbers are left as they are; z may be x): with sign -1, z = u - gamma M_low x, a Neumann step of the
+// low contact system's inverse. Sphere by sphere (in parallel), each
+// summing its pair products in pair order: the same bits at any thread count.
+void SpectralSolver::apply_contact_low(const double* x, const double* u, double* z, double sign) {
+  if (low_pairs_.empty()) return;
+  contact_low_products(x);  // reads all of x before z is written
+  const std::size_t nc = std::size_t(nc_);
   const int Lc = std::min(L_, kContactLowDegree);
-  for (int i = 0; i < N_; ++i)
-    for (int l = 1; l <= Lc; ++l)
-      for (int m = -l; m <= l; ++m)
-        z[i * nc + sh::idx(l, m)] += sign * gamma_[i * (L_ + 1) + l] * low_alpha_[i * nl + sh::idx(l, m)];
+  const int nlc = sh::ncoef(Lc);
+#pragma omp parallel if (low_parallel_ && omp_get_max_threads() > 1)
+  {
+    std::vector<double> acc(static_cast<std::size_t>(nlc));
+#pragma omp for schedule(static)
+    for (int i = 0; i < N_; ++i) {
+      const std::size_t s0 = low_start_[std::size_t(i)], s1 = low_start_[std::size_t(i) + 1];
+      if (s0 == s1) continue;
+      std::fill(acc.begin(), acc.end(), 0.0);
+      for (std::size_t s = s0; s < s1; ++s) {
+        const double* o = &low_out_[low_slot_[s]];
+        for (int c = 0; c < nlc; ++c) acc[std::size_t(c)] += o[c];
+      }
+      const double* g = &gamma_[std::size_t(i) * (L_ + 1)];
+      const double* ui = u + std::size_t(i) * nc;
+      double* zi = z + std::size_t(i) * nc;
+      for (int l = 1; l <= Lc; ++l)
+        for (int m = -l; m <= l; ++m)
+          zi[sh::idx(l, m)] = ui[sh::idx(l, m)] + sign * g[l] * acc[std::size_t(sh::idx(l, m))];
+    }
+  }
 }
 
 // alpha += M_contact x: the products of the close pairs (degree >= kPivotDegree) alone, in pair order.
