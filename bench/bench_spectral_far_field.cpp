@@ -19,6 +19,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -238,6 +239,26 @@ BENCHMARK_CAPTURE(solve, accept_k2.5, std::string(kAcceptPrefix) + "fmm_acc1e-3_
     ->ArgName("N")->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(solve, accept_k15, std::string(kAcceptPrefix) + "fmm_acc5e-4_tol5e-6_L47_pcl", 15.0)
     ->ArgName("N")->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+
+// More candidate settings for the acceptance solve, from the environment: AGGLO_ACCEPT_SCAN="<row>,<row>,..."
+// (rows as "fmm_acc..." above) registers solve/scan_<row>_k<kappa> at N = 1000 for both kappa_p, each with its
+// force error against the converged reference.
+const bool kAcceptScanRows = [] {
+  const char* env = std::getenv("AGGLO_ACCEPT_SCAN");
+  std::string rows = env ? env : "";
+  for (std::size_t at = 0; at < rows.size();) {
+    const std::size_t end = std::min(rows.find(',', at), rows.size());
+    const std::string row = rows.substr(at, end - at);
+    at = end + 1;
+    for (const auto& [k, kappa] : {std::pair{"2.5", 2.5}, std::pair{"15", 15.0}}) {
+      auto* b = benchmark::RegisterBenchmark(("solve/scan_" + row + "_k" + k).c_str(), [row, kappa](benchmark::State& st) {
+        solve(st, std::string(kAcceptPrefix) + row, kappa);
+      });
+      b->ArgName("N")->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
+    }
+  }
+  return true;
+}();
 
 BENCHMARK_CAPTURE(solve, bem_k2.5, std::string("bem"), 2.5)
     ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
