@@ -47,6 +47,16 @@ if [ "$cache_mode" != off ] && [ -f "$cache" ]; then
     !($1 in ok) { print $2 }' "$logs/keys")
 fi
 echo "check_function_size: ${#all_files[@]} files, $(( ${#all_files[@]} - ${#files[@]} )) unchanged since their last pass (scripts/function_size.cache), ${#files[@]} to analyse"
+# A unity build's compile database lists its batches, not the files: clang-tidy would guess a file's flags
+# from a neighbour and miss target-specific definitions and generated headers. Then the files are analysed
+# with the database of a configure-only, non-unity build tree beside it (BUILD_DIR/function_size_db).
+if [ ${#files[@]} -gt 0 ] && ! grep -q "\"file\": \"$root/${files[0]}\"" "$build/compile_commands.json"; then
+  db="$build/function_size_db"
+  cmake -S "$root" -B "$db" -DAGGLO_UNITY=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
+    -DPython_EXECUTABLE=/usr/bin/python3 >"$logs/configure.log" 2>&1 ||
+    { tail -n 20 "$logs/configure.log" >&2; echo "check_function_size: configuring $db failed" >&2; exit 1; }
+  build=$db
+fi
 export build logs config root
 # One log and one exit status per file, so that the two parallel processes never interleave output.
 [ ${#files[@]} -eq 0 ] || printf '%s\0' "${files[@]}" | xargs -0 -n 1 -P 2 bash -c '
