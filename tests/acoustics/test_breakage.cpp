@@ -274,7 +274,7 @@ TEST(Breakage, ZeroBreakTableGivesTheResultsOfTheCodeBeforeBreakage) {
   table->p_bounce = {0, 0, 0, 0, 1, 1, 1, 1};
   table->p_break.assign(8, 0.0);
   EngineSettings s = test::parse_case(zero_break_case()).engine;
-  s.outcomes.dry_model = DryModel::table;
+  s.outcomes.dry_model = OutcomeModel::table;
   s.outcomes.dry_table = table;
   Engine e(s);
   run_to_end(e);

@@ -200,7 +200,7 @@ TEST(OutcomeTable, CriticalVelocityTableReproducesTheDefault) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     EngineSettings s = test::parse_case(two_size_case(seed)).engine;
     const DryCounts a = run_dry(s);
-    s.outcomes.dry_model = DryModel::table;
+    s.outcomes.dry_model = OutcomeModel::table;
     s.outcomes.dry_table = table;
     s.seed += 1000;
     const DryCounts b = run_dry(s);
@@ -224,9 +224,9 @@ TEST(OutcomeTable, CaseFileSelectsAndRefuses) {
   const std::string base = constant_case(1, "", 0.1);
   const auto with = [&](const std::string& lines) { return constant_case(1, lines, 0.1); };
   AcousticCase c = test::parse_case(with(fmt::format("dry_model = \"table\"\ntable = \"{}\"", good)));
-  ASSERT_EQ(c.engine.outcomes.dry_model, DryModel::table);
+  ASSERT_EQ(c.engine.outcomes.dry_model, OutcomeModel::table);
   EXPECT_DOUBLE_EQ(c.engine.outcomes.dry_table->at(0.1, 1e-6, 1e-6).stick, 0.5);
-  EXPECT_EQ(test::parse_case(base).engine.outcomes.dry_model, DryModel::critical_velocity);
+  EXPECT_EQ(test::parse_case(base).engine.outcomes.dry_model, OutcomeModel::critical_velocity);
   const auto refused = test::expect_case_refused;
   OutcomeTable brk = table_of({1e-3, 10.0}, {1e-7, 1e-4}, {1e-7, 1e-4}, [](double, double, double) { return 0.5; });
   brk.p_bounce.assign(brk.p_bounce.size(), 0.3);

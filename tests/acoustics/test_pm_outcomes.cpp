@@ -191,7 +191,7 @@ TEST(OutcomesByPair, DryBreakagesAreCounted) {
   t->p_break.assign(8, 0.5);
   t->fragments.assign(8, 3.0);
   t->largest_fraction.assign(8, 0.5);
-  c.engine.outcomes.dry_model = DryModel::table;
+  c.engine.outcomes.dry_model = OutcomeModel::table;
   c.engine.outcomes.dry_table = t;
   const AcousticObservations o = run_case(c, 2);
   const auto ts = writers::acoustic_tables(o);

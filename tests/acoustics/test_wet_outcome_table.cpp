@@ -82,7 +82,7 @@ TEST(WetOutcomeTable, EnnisTableReproducesTheDefault) {
     EngineSettings s = coated_wave_settings(seed, 0.01);
     const OutcomeParams oc = s.outcomes;
     const CollisionStats a = run_coated_wave(s);
-    s.outcomes.wet_model = WetModel::table;
+    s.outcomes.wet_model = OutcomeModel::table;
     s.outcomes.wet_table = std::make_shared<OutcomeTable>(
         test::critical_velocity_table([&](double d1, double d2) { return critical_velocity_wet(oc, d1, d2); }));
     s.seed += 1000;
@@ -170,9 +170,9 @@ TEST(WetOutcomeTable, EachPairTypeQueriesItsOwnTable) {
   auto one = std::make_shared<OutcomeTable>(load_outcome_table(test::constant_table_file(1.0, "wet_sep_one")));
   auto zero = std::make_shared<OutcomeTable>(load_outcome_table(test::constant_table_file(0.0, "wet_sep_zero")));
   EngineSettings s = coated_wave_settings(5, 0.003);
-  s.outcomes.dry_model = DryModel::table;
+  s.outcomes.dry_model = OutcomeModel::table;
   s.outcomes.dry_table = one;
-  s.outcomes.wet_model = WetModel::table;
+  s.outcomes.wet_model = OutcomeModel::table;
   s.outcomes.wet_table = zero;
   const CollisionStats both = run_coated_wave(s);
   ASSERT_GT(both.coalescences[kDry], 100u);
@@ -180,15 +180,15 @@ TEST(WetOutcomeTable, EachPairTypeQueriesItsOwnTable) {
   EXPECT_EQ(both.rebounds[kDry] + both.coalescences[kWet], 0u);
   EXPECT_EQ(both.table_queries, both.coalescences[kDry]);
   EXPECT_EQ(both.wet_table_queries, both.rebounds[kWet]);
-  s.outcomes.wet_model = WetModel::critical_velocity;
+  s.outcomes.wet_model = OutcomeModel::critical_velocity;
   s.outcomes.wet_table.reset();
   const CollisionStats dry_only = run_coated_wave(s);
   EXPECT_EQ(dry_only.wet_table_queries, 0u);
   EXPECT_EQ(dry_only.table_queries, dry_only.coalescences[kDry] + dry_only.rebounds[kDry]);
   EXPECT_GT(dry_only.coalescences[kWet], 0u);  // the Ennis model: slow wet pairs stick
-  s.outcomes.dry_model = DryModel::critical_velocity;
+  s.outcomes.dry_model = OutcomeModel::critical_velocity;
   s.outcomes.dry_table.reset();
-  s.outcomes.wet_model = WetModel::table;
+  s.outcomes.wet_model = OutcomeModel::table;
   s.outcomes.wet_table = zero;
   const CollisionStats wet_only = run_coated_wave(s);
   EXPECT_EQ(wet_only.table_queries, 0u);
@@ -202,13 +202,13 @@ TEST(WetOutcomeTable, CaseFileSelectsAndRefuses) {
   const std::string good = test::constant_table_file(0.25, "wet_case");
   const auto with = [&](const std::string& lines) { return test::constant_kernel_case(1, lines, 0.1); };
   const AcousticCase c = test::parse_case(with(wet_table_lines(good)));
-  ASSERT_EQ(c.engine.outcomes.wet_model, WetModel::table);
-  EXPECT_EQ(c.engine.outcomes.dry_model, DryModel::critical_velocity);
+  ASSERT_EQ(c.engine.outcomes.wet_model, OutcomeModel::table);
+  EXPECT_EQ(c.engine.outcomes.dry_model, OutcomeModel::critical_velocity);
   EXPECT_FALSE(c.engine.outcomes.dry_table);
   EXPECT_DOUBLE_EQ(c.engine.outcomes.wet_table->at(0.1, 1e-6, 1e-6).stick, 0.25);
-  EXPECT_EQ(test::parse_case(with("")).engine.outcomes.wet_model, WetModel::critical_velocity);
+  EXPECT_EQ(test::parse_case(with("")).engine.outcomes.wet_model, OutcomeModel::critical_velocity);
   EXPECT_EQ(test::parse_case(with("wet_model = \"critical_velocity\"")).engine.outcomes.wet_model,
-            WetModel::critical_velocity);
+            OutcomeModel::critical_velocity);
   const auto refused = test::expect_case_refused;
   OutcomeTable brk = test::constant_break_table(0.5, 0.2, {4.0, 0.5});
   brk.fragments.clear();

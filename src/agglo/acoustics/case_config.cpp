@@ -305,10 +305,10 @@ std::shared_ptr<const OutcomeTable> parse_table_model(const ConfigSection& o, co
 
 void parse_outcome_models(const ConfigSection& o, const std::string& case_file, OutcomeParams& oc) {
   const auto& k = keys().outcomes;
-  oc.dry_table = parse_table_model(o, case_file, k.dry_model, settings::kDryTable, k.table);
-  if (oc.dry_table) oc.dry_model = DryModel::table;
-  oc.wet_table = parse_table_model(o, case_file, k.wet_model, settings::kWetTable, k.wet_table);
-  if (oc.wet_table) oc.wet_model = WetModel::table;
+  oc.dry_table = parse_table_model(o, case_file, k.dry_model, settings::kOutcomeTable, k.table);
+  if (oc.dry_table) oc.dry_model = OutcomeModel::table;
+  oc.wet_table = parse_table_model(o, case_file, k.wet_model, settings::kOutcomeTable, k.wet_table);
+  if (oc.wet_table) oc.wet_model = OutcomeModel::table;
 }
 
 // Charge and permittivity enter only the lookup of an outcome table (dry or wet) with those axes
@@ -327,7 +327,7 @@ void check_charged_populations(const ConfigSection& root, EngineSettings& e) {
       k.charge_density.reject(s, fmt::format("charge enters only the lookup of an outcome table with axes '{}' and "
                                              "'{}' ({} or {} = \"{}\", docs/acoustics.md §1.7); this run has none",
                                              kOutcomeAxes[kCharge1Axis], kOutcomeAxes[kCharge2Axis],
-                                             oc.dry_model.dotted(), oc.wet_model.dotted(), settings::kDryTable));
+                                             oc.dry_model.dotted(), oc.wet_model.dotted(), settings::kOutcomeTable));
     if (k.permittivity.present(s) && !permittivity)
       k.permittivity.reject(s, fmt::format("enters only the lookup of an outcome table with the axis '{}' "
                                            "(docs/acoustics.md §1.7); this run has none",
@@ -342,7 +342,7 @@ void check_charged_populations(const ConfigSection& root, EngineSettings& e) {
 // again against the collision diameters of that law (check_cells ran with the compact ones).
 void apply_table_fractal_law(const ConfigSection& root, EngineSettings& e) {
   const auto& k = keys().population;
-  const OutcomeTable* t = e.outcomes.dry_model == DryModel::table ? e.outcomes.dry_table.get() : nullptr;
+  const OutcomeTable* t = e.outcomes.dry_model == OutcomeModel::table ? e.outcomes.dry_table.get() : nullptr;
   bool applied = false;
   for (const ConfigSection& s : k.t.elements(root))
     for (PopulationSpec& p : e.populations) {
@@ -350,7 +350,7 @@ void apply_table_fractal_law(const ConfigSection& root, EngineSettings& e) {
       if (!(t && t->has_fractal_law()))
         k.fractal_law.reject(s, fmt::format("needs a dry outcome table ({} = \"{}\") with the attributes '{}' and "
                                             "'{}' (an aggregate table of agglo outcomes); {}",
-                                            keys().outcomes.dry_model.dotted(), settings::kDryTable,
+                                            keys().outcomes.dry_model.dotted(), settings::kOutcomeTable,
                                             kFractalDimensionAttribute, kFractalPrefactorAttribute,
                                             t ? "this table has none" : "this run has no table"));
       p.structure.fractal_dimension = t->fractal_dimension;

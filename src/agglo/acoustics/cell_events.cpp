@@ -131,7 +131,7 @@ CollisionOutcome CellEvents::table_outcome(const OutcomeTable& t, TableTally c, 
 }
 
 CollisionOutcome CellEvents::dry_outcome(std::size_t i, std::size_t j, double gn) {
-  if (oc.dry_model == DryModel::critical_velocity) {
+  if (oc.dry_model == OutcomeModel::critical_velocity) {
     const double di = p.volume_diameter(i), dj = p.volume_diameter(j);
     return gn <= critical_velocity_dry(oc, di, dj, p.rho[i], p.rho[j]) ? CollisionOutcome::stick
                                                                         : CollisionOutcome::bounce;
@@ -140,7 +140,7 @@ CollisionOutcome CellEvents::dry_outcome(std::size_t i, std::size_t j, double gn
 }
 
 CollisionOutcome CellEvents::wet_outcome(std::size_t i, std::size_t j, double gn) {
-  if (oc.wet_model == WetModel::critical_velocity)
+  if (oc.wet_model == OutcomeModel::critical_velocity)
     return gn <= critical_velocity_wet(oc, p.volume_diameter(i), p.volume_diameter(j)) ? CollisionOutcome::stick
                                                                                         : CollisionOutcome::bounce;
   return table_outcome(*oc.wet_table, {st.wet_table_queries, st.wet_table_clamped, st.wet_table_turned_back}, i, j,

@@ -25,10 +25,9 @@ inline const settings::AcousticSettings::Outcomes& outcome_keys() { return setti
 enum class PairType { droplet, dry, wet };
 inline constexpr std::array<const char*, 3> kPairTypeNames = {"droplet", "dry", "wet"};  // by PairType
 
-// The dry outcome model (outcomes.dry_model): critical velocity (default) or a table (outcome_table.hpp).
-enum class DryModel { critical_velocity, table };
-// The wet outcome model (outcomes.wet_model): Ennis critical velocity (default) or a table of the same format.
-enum class WetModel { critical_velocity, table };
+// An outcome model of dry pairs (outcomes.dry_model) or wet pairs (outcomes.wet_model): the pair type's
+// closed-form critical velocity (default) or a table (outcome_table.hpp, one format for both).
+enum class OutcomeModel { critical_velocity, table };
 
 // Defaults are the declared [outcomes] settings (agglo/core/settings_acoustic.hpp).
 struct OutcomeParams {
@@ -42,9 +41,9 @@ struct OutcomeParams {
   double film_ratio = outcome_keys().film_roughness_ratio.def();   // delta / h_a
   double solid_density = outcome_keys().solid_density.def();       // rho_s in eqs. 14, 24 [kg/m^3]
   bool energy_compensation = outcome_keys().energy_compensation.def();  // Zhao et al. 2023, eq. 30
-  DryModel dry_model = DryModel::critical_velocity;
+  OutcomeModel dry_model = OutcomeModel::critical_velocity;
   std::shared_ptr<const OutcomeTable> dry_table;  // set when dry_model == table
-  WetModel wet_model = WetModel::critical_velocity;
+  OutcomeModel wet_model = OutcomeModel::critical_velocity;
   std::shared_ptr<const OutcomeTable> wet_table;  // set when wet_model == table
   // kappa_p by population, when a table (dry or wet) has a permittivity axis (else empty): a pair is looked up at
   // the mean of its two samples' populations' kappa_p (docs/acoustics.md §1.7).

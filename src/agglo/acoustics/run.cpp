@@ -150,9 +150,9 @@ std::string startup_log(const AcousticCase& c, const Engine& eng, const RunHooks
     if (hooks.warning) hooks.warning(w);
   }
   log += sampling_log(eng, hooks);
-  if (const auto& t = eng.settings().outcomes.dry_table; t && eng.settings().outcomes.dry_model == DryModel::table)
+  if (const auto& t = eng.settings().outcomes.dry_table; t && eng.settings().outcomes.dry_model == OutcomeModel::table)
     log += table_model_log("dry", *t);
-  if (const auto& t = eng.settings().outcomes.wet_table; t && eng.settings().outcomes.wet_model == WetModel::table)
+  if (const auto& t = eng.settings().outcomes.wet_table; t && eng.settings().outcomes.wet_model == OutcomeModel::table)
     log += table_model_log("wet", *t);
   if (eng.settings().selection == Selection::binned)
     log += fmt::format("selection: binned ({} size classes per octave of diameter, weight classes by powers of {}, "
@@ -409,9 +409,9 @@ AcousticObservations run_acoustic(const AcousticCase& c, const RunHooks& hooks) 
   obs.stats = eng.stats();
   obs.selection = eng.settings().selection;
   const OutcomeParams& oc = eng.settings().outcomes;
-  obs.dry_table = oc.dry_model == DryModel::table;
+  obs.dry_table = oc.dry_model == OutcomeModel::table;
   obs.coulomb_launch = obs.dry_table && eng.particles().carries_charge && oc.dry_table->has_launch_gap();
-  obs.wet_table = oc.wet_model == WetModel::table;
+  obs.wet_table = oc.wet_model == OutcomeModel::table;
   obs.wet_coulomb_launch = obs.wet_table && eng.particles().carries_charge && oc.wet_table->has_launch_gap();
   obs.dsmc = true;
   const auto& dom = eng.settings().motion.domain;

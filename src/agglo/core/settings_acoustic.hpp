@@ -9,14 +9,11 @@ namespace agglo::settings {
 
 inline constexpr std::string_view kAcousticCommands = "acoustic, sectional, sweep";
 
-// Names of the dry (solid-solid) outcome models of the DSMC (acoustics/outcomes.hpp: the closed-form
-// critical velocity; acoustics/outcome_table.hpp: a table of probabilities).
-inline constexpr std::string_view kDryCriticalVelocity = "critical_velocity";
-inline constexpr std::string_view kDryTable = "table";
-// Names of the wet (solid-mixed, mixed-mixed) outcome models (acoustics/outcomes.hpp: the closed-form Ennis
-// critical velocity; acoustics/outcome_table.hpp: a table of probabilities, the dry table's format).
-inline constexpr std::string_view kWetCriticalVelocity = "critical_velocity";
-inline constexpr std::string_view kWetTable = "table";
+// Names of the outcome models of the DSMC, dry (solid-solid, outcomes.dry_model) and wet (solid-mixed,
+// mixed-mixed, outcomes.wet_model) alike (acoustics/outcomes.hpp: the closed-form critical velocities, eq. 13
+// dry and Ennis's eq. 14 wet; acoustics/outcome_table.hpp: a table of probabilities, one format for both).
+inline constexpr std::string_view kOutcomeCriticalVelocity = "critical_velocity";
+inline constexpr std::string_view kOutcomeTable = "table";
 
 // Names of the aggregate structures of a DSMC population and of its mobility-radius rules
 // (acoustics/structure.hpp: the formulas, units and sources).
@@ -198,7 +195,7 @@ struct AcousticSettings {
                       "outcome of solid-solid collisions: the closed-form critical velocity (eq. 13), or drawn "
                       "from a table of P_stick, P_bounce, P_break (outcomes.table)",
                       "critical_velocity (absent: read only when set)"},
-                     std::nullopt, {kDryCriticalVelocity, kDryTable}};
+                     std::nullopt, {kOutcomeCriticalVelocity, kOutcomeTable}};
     Text table{t, {"outcomes.table", "", "dry_model = \"table\": NetCDF outcome table (docs/acoustics.md, written by "
                                          "agglo outcomes), relative to the case file"},
                std::nullopt};
@@ -207,7 +204,7 @@ struct AcousticSettings {
                       "outcome of solid-mixed and mixed-mixed collisions: the closed-form Ennis critical velocity "
                       "(eq. 14), or drawn from a table of P_stick, P_bounce, P_break (outcomes.wet_table)",
                       "critical_velocity (absent: read only when set)"},
-                     std::nullopt, {kWetCriticalVelocity, kWetTable}};
+                     std::nullopt, {kOutcomeCriticalVelocity, kOutcomeTable}};
     Text wet_table{t, {"outcomes.wet_table", "", "wet_model = \"table\": NetCDF outcome table of wet pairs (format "
                                                  "of outcomes.table), relative to the case file"},
                    std::nullopt};
