@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The MPI task farm (docs/scaling.md): `mpirun -n 2` and `-n 3 --oversubscribe` give the same outputs as
-# one process for vcrit, breakup, calibrate, sweep, a seed ensemble (acoustic --seeds) and a sweep with seeds (every file; results.nc by content with timing
+# one process for vcrit, breakup, calibrate, outcomes, sweep, a seed ensemble (acoustic --seeds) and a sweep with seeds (every file; results.nc by content with timing
 # aside; journal.jsonl as a set of results; run.json records the rank count). A single-run command under
 # mpirun is refused with one line. $1 = agglo, $2 = source dir, $3 = mpirun.
 . "$(dirname "$0")/lib.sh"
@@ -40,6 +40,8 @@ value = 0.2
 tolerance = 0.01
 CAL
 check calibrate calibrate "$TMP/cal.toml" -q --no-plots
+check outcomes outcomes cases/outcomes_sphere_sphere.toml -q --set "outcome_grid.speeds=[0.1, 0.8]" \
+  --set "outcome_grid.diameters=[1e-6, 2e-6]" --set outcome_grid.impacts=3
 check seeds acoustic cases/seed002_baseline.toml --seeds 4 -q --no-plots --set time.end=0.01 \
   --set "output.psd_times=[0.0,0.01]" --set "output.snapshot_times=[0.0]" --set output.plots=false \
   --set population.0.samples=1500 --set population.1.samples=50
