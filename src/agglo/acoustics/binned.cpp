@@ -80,6 +80,7 @@ class BinnedCell {
   const double inv_vc;
   std::vector<double> scratch_;         // rates of a row before they enter row_
   RateTree row_;                        // candidate rates over n_a of the row a being processed [1/s]
+  bool tree_stale_ = false;              // row_ not yet built from scratch_ (full_row)
   std::uint64_t row_version_ = 0;       // version of group a when row_ was computed
   std::size_t row_count_ = 0;           // number of groups then
   std::vector<std::uint32_t> changed_;  // groups whose count or bounds changed since row_ was updated
@@ -224,7 +225,7 @@ void BinnedCell::set_bounds(std::size_t k) {
     v[2] += p.vz[idx[a]];
   }
   for (int c = 0; c < 3; ++c) g.cb.vref[c] = v[c] / static_cast<double>(g.members.size());
-  for (const std::uint32_t a : g.members) g.cb.include(p, idx[a], *ctx.gas);
+  g.cb.include_all(p, idx, g.members.data(), g.members.size(), *ctx.gas);
   K.prepare(g.cb);
 }
 
@@ -323,15 +324,18 @@ double BinnedCell::row_entry(std::uint32_t a, std::uint32_t b) {
 }
 
 // All candidate rates of the pairs (a, b >= a) into row_; returns the row's total rate.
+// The tree of the rates is built only when the row draws a candidate (tree_stale_): most rows of a step
+// draw none. The total is summed in the tree's order (RateTree::assign), so it is the tree's total.
 double BinnedCell::full_row(std::uint32_t a) {
   scratch_.resize(G.count - a);
-  for (std::uint32_t b = a; b < G.count; ++b) scratch_[b - a] = row_entry(a, b);
-  row_.assign(scratch_.data(), scratch_.size());
+  double total = 0.0;
+  for (std::uint32_t b = a; b < G.count; ++b) total += (scratch_[b - a] = row_entry(a, b));
+  tree_stale_ = true;
   row_version_ = G.version[a];
   row_count_ = G.count;
   changed_.clear();
   ++st.row_rate_updates;
-  return G.size[a] * row_.total();
+  return G.size[a] * total;
 }
 
 // After a collision: the rates of the groups it changed (all of them if group a's bounds grew or a group
@@ -361,6 +365,10 @@ void BinnedCell::process_row(std::uint32_t a, double h) {
     if (u > R * (h - t)) return;
     t -= std::log1p(-u) / R;
     if (t >= h) return;
+    if (tree_stale_) {
+      row_.assign(scratch_.data(), scratch_.size());
+      tree_stale_ = false;
+    }
     const std::size_t k = row_.find(rng.uniform() * row_.total());
     if (k == RateTree::npos) return;
     if (candidate(a, a + static_cast<std::uint32_t>(k))) R = update_row(a);
