@@ -243,7 +243,9 @@ void BinnedCell::moved(std::size_t i) {
   CellBounds& cb = groups[g].cb;
   const CellBounds before = cb;
   cb.include(p, i, *ctx.gas);
-  K.prepare(cb);
+  // Kernel::prepare derives diff_max and gap_max from d_min, mass_max and cbar_max only (cell_bounds.hpp):
+  // with those unchanged it would write the same numbers again.
+  if (cb.d_min != before.d_min || cb.mass_max != before.mass_max || cb.cbar_max != before.cbar_max) K.prepare(cb);
   if (!same_bounds(before, cb)) G.version[g] = ++G.clock;
 }
 
@@ -357,6 +359,10 @@ double BinnedCell::update_row(std::uint32_t a) {
 // sum of the pair rates, exponential gaps; b drawn with probability rate_ab / sum). The rates are
 // updated after every collision.
 void BinnedCell::process_row(std::uint32_t a, double h) {
+  if (!(G.size[a] > 0.0)) {  // an empty group (kept without motion): rate 0, nothing drawn
+    ++st.row_rate_updates;
+    return;
+  }
   double t = 0.0, R = full_row(a);
   for (;;) {
     if (!(R > 0.0)) return;

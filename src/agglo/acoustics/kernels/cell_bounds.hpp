@@ -30,7 +30,8 @@ struct CellBounds {
   double mass_min = 0.0;     // lightest particle mass [kg] (tracked with cbar_max; 0 = none yet)
   double d_min = 0.0;        // smallest diameter (0 = none yet)
   double mass_max = 0.0;     // heaviest particle mass [kg]
-  // Derived by Kernel::prepare from d_min, mass_max and cbar_max (binned selection, transition-regime
+  // Derived by Kernel::prepare from d_min, mass_max and cbar_max and nothing else of the bounds (the binned
+  // selection skips prepare when an include left those three unchanged) (binned selection, transition-regime
   // Brownian bounds): largest Brownian diffusivity [m^2/s] and largest l = 8 D / (pi c) [m].
   double diff_max = 0.0, gap_max = 0.0;
   double vref[3] = {0, 0, 0};// reference velocity of the cell
