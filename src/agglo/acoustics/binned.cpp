@@ -318,11 +318,13 @@ void BinnedCell::refresh_majorant(std::uint32_t a, std::uint32_t b, std::size_t 
 }
 
 // Candidate rate of the pair (a, b), a <= b, over n_a (the row's common factor) [1/s].
+// (No pair of group b, e.g. an empty group kept without motion: rate 0 without touching its majorant.)
 double BinnedCell::row_entry(std::uint32_t a, std::uint32_t b) {
+  const double nb = a == b ? 0.5 * (G.size[a] - 1.0) : G.size[b];
+  if (!(nb > 0.0)) return 0.0;
   const std::size_t e = a * G.cache_cap + b;
   if (G.cache_va[e] != G.version[a] || G.cache_vb[e] != G.version[b]) refresh_majorant(a, b, e);
-  const double nb = a == b ? 0.5 * (G.size[a] - 1.0) : G.size[b];
-  return nb > 0.0 ? nb * G.cache_sum[e] * inv_vc : 0.0;
+  return nb * G.cache_sum[e] * inv_vc;
 }
 
 // All candidate rates of the pairs (a, b >= a) into row_; returns the row's total rate.
