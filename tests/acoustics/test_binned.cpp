@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <string>
@@ -283,6 +284,53 @@ TEST(Binned, GroupPairBoundsDominateEveryMechanism) {
                 p.size() / 2, worst);
     EXPECT_LE(worst, 1.0 + 1e-12) << k;  // rounding only: a pair at contact with the largest diameters meets the bound
   }
+}
+
+// CellBounds::include_all (a group's bounds in one loop, BinnedCell::set_bounds) against include() per sample,
+// its reference twin: every field bit for bit, on samples that moved (velocities spread, so the speed bound
+// and the reference velocity matter) in a scrambled member order, with and without thermal speeds, starting
+// from empty bounds and from bounds that already hold samples. Negative control: the same comparison sees
+// a bound that leaves out one member.
+TEST(Binned, IncludeAllIsIncludePerSampleBitForBit) {
+  Engine e = test::make_engine(acoustic_case("binned", 9));
+  while (e.time() < 0.002 - 1e-12) e.step();
+  const SampleSet& p = e.particles();
+  const Gas& gas = e.settings().motion.gas;
+  std::vector<std::uint32_t> idx(p.size()), members;
+  for (std::size_t i = 0; i < p.size(); ++i) idx[i] = static_cast<std::uint32_t>(p.size() - 1 - i);
+  for (std::size_t k = 0; k < p.size(); ++k) members.push_back(static_cast<std::uint32_t>((k * 7919) % p.size()));
+  ASSERT_GT(p.size(), 100u);
+  const auto same = [](const CellBounds& a, const CellBounds& b) {  // every field, bit for bit (not the padding)
+    const double x[] = {a.d_max, a.vol_max, a.dl_max, a.ccd_max, a.speed_dev_max, a.speed_dev2_max, a.w_max,
+                        a.cbar_max, a.mass_min, a.d_min, a.mass_max, a.diff_max, a.gap_max, a.vref[0], a.vref[1], a.vref[2]};
+    const double y[] = {b.d_max, b.vol_max, b.dl_max, b.ccd_max, b.speed_dev_max, b.speed_dev2_max, b.w_max,
+                        b.cbar_max, b.mass_min, b.d_min, b.mass_max, b.diff_max, b.gap_max, b.vref[0], b.vref[1], b.vref[2]};
+    return std::memcmp(x, y, sizeof x) == 0 && a.need_cbar == b.need_cbar;
+  };
+  for (const bool cbar : {false, true})
+    for (const std::size_t head : {std::size_t{0}, std::size_t{10}}) {
+      CellBounds one{}, all{};
+      one.need_cbar = all.need_cbar = cbar;
+      one.vref[0] = all.vref[0] = 0.01;
+      one.vref[2] = all.vref[2] = -0.02;
+      for (std::size_t k = 0; k < head; ++k) {  // bounds that already hold some samples
+        one.include(p, idx[members[k]], gas);
+        all.include(p, idx[members[k]], gas);
+      }
+      for (std::size_t k = head; k < members.size(); ++k) one.include(p, idx[members[k]], gas);
+      all.include_all(p, idx.data(), members.data() + head, members.size() - head, gas);
+      EXPECT_TRUE(same(one, all)) << "cbar " << cbar << " head " << head;
+      EXPECT_GT(one.speed_dev_max, 0.0);
+      CellBounds fewer{};  // negative control: the largest sample left out
+      fewer.need_cbar = cbar;
+      fewer.vref[0] = 0.01;
+      fewer.vref[2] = -0.02;
+      std::vector<std::uint32_t> rest;
+      for (const std::uint32_t m : members)
+        if (p.d[idx[m]] < one.d_max) rest.push_back(m);
+      fewer.include_all(p, idx.data(), rest.data(), rest.size(), gas);
+      EXPECT_FALSE(same(one, fewer));
+    }
 }
 
 // Issue acceptance: Monte Carlo Brownian with 1e5 samples against the sectional solution within 1 %. PartMC's

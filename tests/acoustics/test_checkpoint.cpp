@@ -59,10 +59,11 @@ psd_times = [0.0, 320.0]
 }
 
 // Coagulation only, no motion, binned selection (groups kept between steps, bounds recomputed every
-// kRegroupEvery steps): the persistent group state must survive the restart. 80 steps.
-std::string binned_case() {
-  return coagulation_case(3, "end = 800.0\ncollision_dt = 10.0\nintegrator = \"none\"\ninitial_velocity = \"rest\"\n"
-                          "selection = \"binned\"\n", 5e11, 3000, false);
+// kRetightenEvery steps): the persistent group state must survive the restart. 80 steps unless `steps`.
+std::string binned_case(int steps = 80) {
+  return coagulation_case(3, fmt::format("end = {}.0\ncollision_dt = 10.0\nintegrator = \"none\"\n"
+                                         "initial_velocity = \"rest\"\nselection = \"binned\"\n", 10 * steps),
+                          5e11, 3000, false);
 }
 
 // Enough samples (kReorderMinSamples = 1e5) that the engine re-sorts them by cell every 64 steps
@@ -198,8 +199,9 @@ TEST(AcousticCheckpoint, ResumeAfterAnyStepEqualsTheUninterruptedRun) {
 }
 
 TEST(AcousticCheckpoint, ResumeKeepsTheBinnedGroups) {
-  const AcousticCase c = test::parse_case(binned_case());
-  expect_resume_exact(c, {5, 31, 32, 33}, 100);  // bounds of the kept groups recomputed at step 32
+  static_assert(kRetightenEvery == 1024, "resume around the first recomputation of the bounds");
+  const AcousticCase c = test::parse_case(binned_case(1030));
+  expect_resume_exact(c, {5, 1023, 1024, 1025}, 100);  // bounds of the kept groups recomputed at step 1024
 }
 
 TEST(AcousticCheckpoint, ResumeAroundASampleReorder) {

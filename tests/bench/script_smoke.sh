@@ -88,6 +88,10 @@ case $name in
   mpi_farm)
     run "$AGGLO"
     expect '^\| 2 x 1 \| [0-9.]+ \| 4 \| [0-9.]+ \([0-9.]+-[0-9.]+\) \| [0-9.]+ \| [0-9.]+ \|$' ;;
+  partmc_brownian_best_step)
+    AGGLO=$AGGLO run "$T/out"
+    expect '^after: user mean [0-9.]+ s, range [0-9.]+-[0-9.]+ s; N\(T\) error [-+][0-9.]+ '
+    expect '^PartMC best step \(2.6-4.0 s\) / agglo after: [0-9.]+-[0-9.]+x' ;;
   partmc_cases)
     AGGLO=$AGGLO run "$T/out" 2> "$T/stderr.txt" || { cat "$T/stderr.txt"; exit 1; }
     for c in constant additive; do expect "^\| $c \| 1e3 \| [0-9]+ \| ([0-9.]+|–) \|"; done

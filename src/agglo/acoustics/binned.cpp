@@ -80,6 +80,7 @@ class BinnedCell {
   const double inv_vc;
   std::vector<double> scratch_;         // rates of a row before they enter row_
   RateTree row_;                        // candidate rates over n_a of the row a being processed [1/s]
+  bool tree_stale_ = false;              // row_ not yet built from scratch_ (full_row)
   std::uint64_t row_version_ = 0;       // version of group a when row_ was computed
   std::size_t row_count_ = 0;           // number of groups then
   std::vector<std::uint32_t> changed_;  // groups whose count or bounds changed since row_ was updated
@@ -224,7 +225,7 @@ void BinnedCell::set_bounds(std::size_t k) {
     v[2] += p.vz[idx[a]];
   }
   for (int c = 0; c < 3; ++c) g.cb.vref[c] = v[c] / static_cast<double>(g.members.size());
-  for (const std::uint32_t a : g.members) g.cb.include(p, idx[a], *ctx.gas);
+  g.cb.include_all(p, idx, g.members.data(), g.members.size(), *ctx.gas);
   K.prepare(g.cb);
 }
 
@@ -242,7 +243,9 @@ void BinnedCell::moved(std::size_t i) {
   CellBounds& cb = groups[g].cb;
   const CellBounds before = cb;
   cb.include(p, i, *ctx.gas);
-  K.prepare(cb);
+  // Kernel::prepare derives diff_max and gap_max from d_min, mass_max and cbar_max only (cell_bounds.hpp):
+  // with those unchanged it would write the same numbers again.
+  if (cb.d_min != before.d_min || cb.mass_max != before.mass_max || cb.cbar_max != before.cbar_max) K.prepare(cb);
   if (!same_bounds(before, cb)) G.version[g] = ++G.clock;
 }
 
@@ -315,23 +318,28 @@ void BinnedCell::refresh_majorant(std::uint32_t a, std::uint32_t b, std::size_t 
 }
 
 // Candidate rate of the pair (a, b), a <= b, over n_a (the row's common factor) [1/s].
+// (No pair of group b, e.g. an empty group kept without motion: rate 0 without touching its majorant.)
 double BinnedCell::row_entry(std::uint32_t a, std::uint32_t b) {
+  const double nb = a == b ? 0.5 * (G.size[a] - 1.0) : G.size[b];
+  if (!(nb > 0.0)) return 0.0;
   const std::size_t e = a * G.cache_cap + b;
   if (G.cache_va[e] != G.version[a] || G.cache_vb[e] != G.version[b]) refresh_majorant(a, b, e);
-  const double nb = a == b ? 0.5 * (G.size[a] - 1.0) : G.size[b];
-  return nb > 0.0 ? nb * G.cache_sum[e] * inv_vc : 0.0;
+  return nb * G.cache_sum[e] * inv_vc;
 }
 
 // All candidate rates of the pairs (a, b >= a) into row_; returns the row's total rate.
+// The tree of the rates is built only when the row draws a candidate (tree_stale_): most rows of a step
+// draw none. The total is summed in the tree's order (RateTree::assign), so it is the tree's total.
 double BinnedCell::full_row(std::uint32_t a) {
   scratch_.resize(G.count - a);
-  for (std::uint32_t b = a; b < G.count; ++b) scratch_[b - a] = row_entry(a, b);
-  row_.assign(scratch_.data(), scratch_.size());
+  double total = 0.0;
+  for (std::uint32_t b = a; b < G.count; ++b) total += (scratch_[b - a] = row_entry(a, b));
+  tree_stale_ = true;
   row_version_ = G.version[a];
   row_count_ = G.count;
   changed_.clear();
   ++st.row_rate_updates;
-  return G.size[a] * row_.total();
+  return G.size[a] * total;
 }
 
 // After a collision: the rates of the groups it changed (all of them if group a's bounds grew or a group
@@ -353,6 +361,10 @@ double BinnedCell::update_row(std::uint32_t a) {
 // sum of the pair rates, exponential gaps; b drawn with probability rate_ab / sum). The rates are
 // updated after every collision.
 void BinnedCell::process_row(std::uint32_t a, double h) {
+  if (!(G.size[a] > 0.0)) {  // an empty group (kept without motion): rate 0, nothing drawn
+    ++st.row_rate_updates;
+    return;
+  }
   double t = 0.0, R = full_row(a);
   for (;;) {
     if (!(R > 0.0)) return;
@@ -361,6 +373,10 @@ void BinnedCell::process_row(std::uint32_t a, double h) {
     if (u > R * (h - t)) return;
     t -= std::log1p(-u) / R;
     if (t >= h) return;
+    if (tree_stale_) {
+      row_.assign(scratch_.data(), scratch_.size());
+      tree_stale_ = false;
+    }
     const std::size_t k = row_.find(rng.uniform() * row_.total());
     if (k == RateTree::npos) return;
     if (candidate(a, a + static_cast<std::uint32_t>(k))) R = update_row(a);

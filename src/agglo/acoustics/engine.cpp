@@ -545,12 +545,11 @@ GroupReuse Engine::bin_step(bool moved, bool bad_state, Resort resort, bool reso
   const bool binned = s_.selection == Selection::binned;
   // Binned groups are kept while only collisions change the samples (no motion, same order) and follow the
   // samples that move between cells otherwise; rebuilt after a new order and every kRegroupEvery steps of
-  // a moving run (binned.hpp).
-  const bool regroup_step = step_ % kRegroupEvery == 0;
+  // a moving run, their bounds recomputed every kRetightenEvery steps without motion (binned.hpp).
   const GroupReuse reuse = !binned || regroup_ ? GroupReuse::rebuild
-                           : moving            ? (regroup_step ? GroupReuse::rebuild : GroupReuse::follow)
-                           : regroup_step      ? GroupReuse::retighten
-                                               : GroupReuse::keep;
+                           : moving ? (step_ % kRegroupEvery == 0 ? GroupReuse::rebuild : GroupReuse::follow)
+                           : step_ % kRetightenEvery == 0 ? GroupReuse::retighten
+                                                          : GroupReuse::keep;
   regroup_ = false;
   for (std::size_t b = 0; b < cell_claims_.size(); ++b) cell_claims_[b].reset(block_cells_[b + 1] - block_cells_[b]);
   if (binned) {

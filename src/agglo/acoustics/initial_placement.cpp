@@ -1,7 +1,9 @@
 #include "agglo/acoustics/initial_placement.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <vector>
 
@@ -19,7 +21,10 @@ constexpr std::uint64_t kPermutationStream = 0xA000000000ULL;
 // engine (int(x cells / L)) must give `cell` back, so round-off at the cell faces is corrected.
 double inside_cell(double u, int cell, int cells, double L) {
   const double f = cells / L;
-  double x = std::min((cell + u) * (L / cells), std::nextafter(L, 0.0));
+  // The largest double below L: nextafter(L, 0) of a positive finite L is the bit pattern one below.
+  const double below_L = L > 0.0 && std::isfinite(L) ? std::bit_cast<double>(std::bit_cast<std::uint64_t>(L) - 1)
+                                                     : std::nextafter(L, 0.0);
+  double x = std::min((cell + u) * (L / cells), below_L);
   while (x > 0.0 && static_cast<int>(x * f) > cell) x = std::nextafter(x, 0.0);
   while (static_cast<int>(x * f) < cell) x = std::nextafter(x, L);
   return x;

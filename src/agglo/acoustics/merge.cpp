@@ -35,7 +35,9 @@ void assign(SampleSet& p, std::size_t k, const Merged& m) {
   }
   if (p.carries_charge) p.q[k] = m.charge;
 }
-bool is_odd_integer(double w) { return w == std::floor(w) && std::fmod(w, 2.0) == 1.0; }
+// w == floor(w) && fmod(w, 2) == 1 without fmod: w / 2 is exact, and not an integer exactly when a positive
+// integer w is odd (at w >= 2^53 every double is even, and w / 2 an integer).
+bool is_odd_integer(double w) { return w > 0.0 && w == std::floor(w) && std::floor(0.5 * w) != 0.5 * w; }
 }  // namespace
 
 void coalesce_weighted(SampleSet& p, std::size_t i, std::size_t j, const Gas& gas, const Sound& sound) {

@@ -21,7 +21,7 @@ void* netcdf_handle = nullptr;
 NetcdfLibrary load_netcdf() {
   // RTLD_LOCAL: NetCDF's symbols stay out of the global scope (a Python process may load the netCDF4
   // module's own copy beside it; the soname makes both the same library).
-  void* lib = ::dlopen(AGGLO_NETCDF_SONAME, RTLD_NOW | RTLD_LOCAL);
+  void* lib = ::dlopen(AGGLO_NETCDF_SONAME, RTLD_LAZY | RTLD_LOCAL);
   if (lib == nullptr)
     throw std::runtime_error(fmt::format("cannot load the NetCDF library {}: {} (Debian package libnetcdf19)",
                                          AGGLO_NETCDF_SONAME, loader_message()));

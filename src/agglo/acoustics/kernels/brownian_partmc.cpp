@@ -54,9 +54,9 @@ struct PartmcFactorCache {
   std::vector<Entry> entries;
 };
 
+// (c.entries must hold index i.)
 const PartmcParticle& cached_partmc_particle(PartmcFactorCache& c, std::size_t i, double d, double rho,
                                              const PartmcGas& g) {
-  if (i >= c.entries.size()) c.entries.resize(std::max(i + 1, 2 * c.entries.size()));
   PartmcFactorCache::Entry& e = c.entries[i];
   if (!(e.d == d && e.rho == rho)) {
     e.d = d;
@@ -90,9 +90,10 @@ double beta_brownian_partmc_cached(const PartmcGas& gas, const SampleSet& p, std
     cache.viscosity = gas.viscosity;
     cache.mean_free_path = gas.mean_free_path;
   }
-  const PartmcParticle a = cached_partmc_particle(cache, i, p.d[i], p.rho[i], gas);  // copies: the next call
-  const PartmcParticle b = cached_partmc_particle(cache, j, p.d[j], p.rho[j], gas);  // may grow the cache
-  return partmc_pair(a, b);
+  const std::size_t top = std::max(i, j);
+  if (top >= cache.entries.size()) cache.entries.resize(std::max(top + 1, 2 * cache.entries.size()));
+  return partmc_pair(cached_partmc_particle(cache, i, p.d[i], p.rho[i], gas),
+                     cached_partmc_particle(cache, j, p.d[j], p.rho[j], gas));
 }
 
 double partmc_thermal_speed_ratio() { return std::sqrt(kBoltzmann / constants::k_B); }
