@@ -237,6 +237,35 @@ TEST(SpectralFarField, SolutionDoesNotDependOnTheThreadCount) {
   expect_same_bits(two, one);
 }
 
+// The product alpha = M beta (random multipoles) is the same, bit for bit, on 1, 2 and 3 threads (N = 300:
+// the near pairs' blocks of mixed degrees, each block's pairs taken largest first from a dynamic schedule
+// and its spheres' sums shared out dynamically, matvec_M). Not vacuous: the same pairs run their blocks in
+// parallel (the solve's parallel_pair_blocks > 0; the dense twin's blocks of this cluster would not).
+TEST(SpectralFarField, ProductDoesNotDependOnTheThreadCount) {
+  {
+    const char* far_field = "fmm";
+    const int n = 300;
+    const SolverOptions o = far_field_options(far_field);
+    const Problem p = random_cluster(n, 1.0, 2.5, 3);
+    const int L = spectral_degree(o, p);
+    const std::vector<double> beta = random_beta(std::size_t(n) * (L + 1) * (L + 1), 7);
+    const int saved = omp_get_max_threads();
+    std::vector<std::vector<double>> alpha;
+    for (int threads : {1, 2, 3}) {
+      omp_set_num_threads(threads);
+      alpha.push_back(spectral_product(o, p, beta));
+    }
+    const Solution two = make_solver(o)->solve(p);  // still 3 threads
+    omp_set_num_threads(saved);
+    EXPECT_GT(two.stats.extra.at("parallel_pair_blocks").get<int>(), 0) << far_field << ": blocks ran serially";
+    for (std::size_t t = 1; t < alpha.size(); ++t) {
+      std::size_t differ = 0;
+      for (std::size_t c = 0; c < beta.size(); ++c) differ += alpha[t][c] != alpha[0][c];
+      EXPECT_EQ(differ, 0u) << far_field << ": " << t + 1 << " threads against 1";
+    }
+  }
+}
+
 // The contact_low preconditioner's passes (the low pairs' products, then sphere by sphere their sums in
 // pair order) run in parallel and give the same bits on one and two threads (kappa_p = 15, the N = 300
 // cluster: about a hundred close pairs, enough work for threads).
