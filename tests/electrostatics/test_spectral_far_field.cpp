@@ -408,6 +408,38 @@ TEST(SpectralPreconditioner, ContactNetworkGivesTheSameForcesInFewerIterations) 
   EXPECT_GT(sol["contact"].stats.extra["preconditioner_inner_iterations"].get<long>(), 0);
 }
 
+// SolverOptions::contact_low_steps: 0 is kContactLowSteps (2; the same bits as 2 given explicitly); more
+// steps take no more GMRES iterations on the kappa_p = 15 cluster and give the converged forces within 1e-5,
+// and three steps give the same bits on one and two threads. Not vacuous: the steps change the iterate
+// (1 and 3 steps give other bits than 2).
+TEST(SpectralPreconditioner, ContactLowStepsOption) {
+  const Problem p = random_cluster(30, 1.0, 15.0, 11);
+  SolverOptions ro = far_field_options("fmm");
+  ro.tolerance = 1e-10;
+  const Solution ref = make_solver(ro)->solve(p);
+  std::vector<Solution> sol;
+  for (int steps : {0, 1, 2, 3}) {
+    SolverOptions o = far_field_options("fmm");
+    o.preconditioner = "contact_low";
+    o.contact_low_steps = steps;
+    sol.push_back(make_solver(o)->solve(p));
+    std::printf("contact_low, %d Neumann steps: %d GMRES iterations, forces vs converged %.2e\n", steps,
+                sol.back().stats.iterations, force_difference(sol.back(), ref));
+    EXPECT_LT(force_difference(sol.back(), ref), 1e-5) << steps << " steps";
+  }
+  expect_same_bits(sol[2], sol[0]);
+  EXPECT_LE(sol[2].stats.iterations, sol[1].stats.iterations);
+  EXPECT_LE(sol[3].stats.iterations, sol[2].stats.iterations);
+  EXPECT_NE(sol[1].energy, sol[2].energy);
+  EXPECT_NE(sol[3].energy, sol[2].energy);
+  SolverOptions o3 = far_field_options("fmm");
+  o3.preconditioner = "contact_low";
+  o3.contact_low_steps = 3;
+  const auto [one, two] = solve_on_one_and_two_threads(o3, random_cluster(300, 1.0, 15.0, 3));
+  EXPECT_TRUE(two.stats.extra.at("contact_low_parallel").get<bool>());
+  expect_same_bits(two, one);
+}
+
 // A warm start with a preconditioner starts GMRES from u = P x_prev (precondition_forward; contact_low:
 // from the shifted system A P^-1 w = b - A x_prev, solve_warm_shifted): a moved cluster re-solved warm
 // gives the cold solve's forces, in fewer iterations than cold.

@@ -63,7 +63,9 @@ constexpr int kContactLowOrder = 2;
 // 1, 2, 3, 4, 6 steps: kappa_p = 15 N = 1000 12, 10, 10, 10, 9 GMRES iterations, N = 100 11, 10, 9, 9, 9;
 // kappa_p = 2.5 N = 1000 6, 5, 5, 5, 5; a step costs about 3 % of a product (callgrind). Two: never more
 // iterations than one at any size, and the warm start's guess (I + X) beta_prev is then P beta_prev up to
-// X^3 (with one step, up to X^2). docs/electrostatics.md, "Seventh session".
+// X^3 (with one step, up to X^2). docs/electrostatics.md, "Seventh session". Three (SolverOptions::
+// contact_low_steps): one iteration fewer on the kappa_p = 15 acceptance rows at L = 43, 44, 47 (8 against 9),
+// the same 4 on kappa_p = 2.5's, whose solve a third step makes dearer ("Eighth session").
 constexpr int kContactLowSteps = 2;
 
 // A block of matvec_M's pair products (SpectralSolver::index_blocks): pairs [begin, end) of the solver's
@@ -749,7 +751,8 @@ void SpectralSolver::precondition(const double* u, double* z) {
 #pragma omp parallel for schedule(static) if (std::size_t(n) >= kSpectralParallelLength)
   for (std::ptrdiff_t c = 0; c < n; ++c) z[c] = u[c];
   if (pc_contact_) contact_inverse(u, z);
-  for (int k = 0; pc_contact_low_ && k < kContactLowSteps; ++k) apply_contact_low(z, u, z, -1.0);
+  const int steps = opt_.contact_low_steps > 0 ? opt_.contact_low_steps : kContactLowSteps;
+  for (int k = 0; pc_contact_low_ && k < steps; ++k) apply_contact_low(z, u, z, -1.0);
   for (std::size_t q : matched_) pair_block_inverse(pairs_[q], u, z);
   if (coarse_) coarse_inverse(u, z);
 }
