@@ -18,6 +18,7 @@
 // bench/spectral_far_field.sh runs it and prints the per-solve and per-product ratios.
 #include <benchmark/benchmark.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -103,6 +104,10 @@ std::unique_ptr<es::Solver> bench_solver(const std::string& far_field) {
   const es::SolverOptions o = bench_options(far_field);
   if (far_field == "bem") return es::make_solver(o);
   es::sh::FarFieldOptions f{.tolerance = es::far_field_tolerance(o), .stored_rotations = far_field == "fmm_stored"};
+  // "..._p<order>" (fmm_acc rows): the far field's expansion order fixed instead of taken from the target
+  if (const std::size_t at = far_field.rfind("_p"); far_field.starts_with("fmm_acc") && at != std::string::npos &&
+                                                    at + 2 < far_field.size() && std::isdigit(far_field[at + 2]))
+    f.order = std::stoi(far_field.substr(at + 2));
   return es::make_spectral_solver(o, f);
 }
 
