@@ -237,6 +237,35 @@ TEST(SpectralFarField, SolutionDoesNotDependOnTheThreadCount) {
   expect_same_bits(two, one);
 }
 
+// The product alpha = M beta (random multipoles) is the same, bit for bit, on 1, 2 and 3 threads (N = 300:
+// the near pairs' blocks of mixed degrees, each block's pairs taken largest first from a dynamic schedule
+// and its spheres' sums shared out dynamically, matvec_M). Not vacuous: the same pairs run their blocks in
+// parallel (the solve's parallel_pair_blocks > 0; the dense twin's blocks of this cluster would not).
+TEST(SpectralFarField, ProductDoesNotDependOnTheThreadCount) {
+  {
+    const char* far_field = "fmm";
+    const int n = 300;
+    const SolverOptions o = far_field_options(far_field);
+    const Problem p = random_cluster(n, 1.0, 2.5, 3);
+    const int L = spectral_degree(o, p);
+    const std::vector<double> beta = random_beta(std::size_t(n) * (L + 1) * (L + 1), 7);
+    const int saved = omp_get_max_threads();
+    std::vector<std::vector<double>> alpha;
+    for (int threads : {1, 2, 3}) {
+      omp_set_num_threads(threads);
+      alpha.push_back(spectral_product(o, p, beta));
+    }
+    const Solution two = make_solver(o)->solve(p);  // still 3 threads
+    omp_set_num_threads(saved);
+    EXPECT_GT(two.stats.extra.at("parallel_pair_blocks").get<int>(), 0) << far_field << ": blocks ran serially";
+    for (std::size_t t = 1; t < alpha.size(); ++t) {
+      std::size_t differ = 0;
+      for (std::size_t c = 0; c < beta.size(); ++c) differ += alpha[t][c] != alpha[0][c];
+      EXPECT_EQ(differ, 0u) << far_field << ": " << t + 1 << " threads against 1";
+    }
+  }
+}
+
 // The contact_low preconditioner's passes (the low pairs' products, then sphere by sphere their sums in
 // pair order) run in parallel and give the same bits on one and two threads (kappa_p = 15, the N = 300
 // cluster: about a hundred close pairs, enough work for threads).
@@ -377,6 +406,38 @@ TEST(SpectralPreconditioner, ContactNetworkGivesTheSameForcesInFewerIterations) 
   // two Neumann steps of the contact system at degrees <= 20, frame orders <= 2 (the cheap one)
   EXPECT_LE(sol["contact_low"].stats.iterations, none - 3);
   EXPECT_GT(sol["contact"].stats.extra["preconditioner_inner_iterations"].get<long>(), 0);
+}
+
+// SolverOptions::contact_low_steps: 0 is kContactLowSteps (2; the same bits as 2 given explicitly); more
+// steps take no more GMRES iterations on the kappa_p = 15 cluster and give the converged forces within 1e-5,
+// and three steps give the same bits on one and two threads. Not vacuous: the steps change the iterate
+// (1 and 3 steps give other bits than 2).
+TEST(SpectralPreconditioner, ContactLowStepsOption) {
+  const Problem p = random_cluster(30, 1.0, 15.0, 11);
+  SolverOptions ro = far_field_options("fmm");
+  ro.tolerance = 1e-10;
+  const Solution ref = make_solver(ro)->solve(p);
+  std::vector<Solution> sol;
+  for (int steps : {0, 1, 2, 3}) {
+    SolverOptions o = far_field_options("fmm");
+    o.preconditioner = "contact_low";
+    o.contact_low_steps = steps;
+    sol.push_back(make_solver(o)->solve(p));
+    std::printf("contact_low, %d Neumann steps: %d GMRES iterations, forces vs converged %.2e\n", steps,
+                sol.back().stats.iterations, force_difference(sol.back(), ref));
+    EXPECT_LT(force_difference(sol.back(), ref), 1e-5) << steps << " steps";
+  }
+  expect_same_bits(sol[2], sol[0]);
+  EXPECT_LE(sol[2].stats.iterations, sol[1].stats.iterations);
+  EXPECT_LE(sol[3].stats.iterations, sol[2].stats.iterations);
+  EXPECT_NE(sol[1].energy, sol[2].energy);
+  EXPECT_NE(sol[3].energy, sol[2].energy);
+  SolverOptions o3 = far_field_options("fmm");
+  o3.preconditioner = "contact_low";
+  o3.contact_low_steps = 3;
+  const auto [one, two] = solve_on_one_and_two_threads(o3, random_cluster(300, 1.0, 15.0, 3));
+  EXPECT_TRUE(two.stats.extra.at("contact_low_parallel").get<bool>());
+  expect_same_bits(two, one);
 }
 
 // A warm start with a preconditioner starts GMRES from u = P x_prev (precondition_forward; contact_low:

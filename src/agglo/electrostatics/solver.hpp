@@ -107,6 +107,9 @@ struct SolverOptions {
   int max_degree_limit = 80;        // hard cap on automatically chosen L
   std::string far_field{kFarFieldNames[0]};  // a name of kFarFieldNames
   std::string preconditioner{kPreconditionerNames[0]};  // a name of kPreconditionerNames
+  // preconditioner = "contact_low": its Neumann steps, 0 = kContactLowSteps (spectral_solver.cpp). Not a case
+  // key: the benchmark's acceptance row at kappa_p = 15 takes 3 (docs/electrostatics.md, "Eighth session").
+  int contact_low_steps = 0;
   // bem
   int patches_per_sphere = 2000;
   double tolerance = 1e-6;          // GMRES relative residual

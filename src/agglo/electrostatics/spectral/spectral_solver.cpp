@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -62,8 +63,24 @@ constexpr int kContactLowOrder = 2;
 // 1, 2, 3, 4, 6 steps: kappa_p = 15 N = 1000 12, 10, 10, 10, 9 GMRES iterations, N = 100 11, 10, 9, 9, 9;
 // kappa_p = 2.5 N = 1000 6, 5, 5, 5, 5; a step costs about 3 % of a product (callgrind). Two: never more
 // iterations than one at any size, and the warm start's guess (I + X) beta_prev is then P beta_prev up to
-// X^3 (with one step, up to X^2). docs/electrostatics.md, "Seventh session".
+// X^3 (with one step, up to X^2). docs/electrostatics.md, "Seventh session". Three (SolverOptions::
+// contact_low_steps): one iteration fewer on the kappa_p = 15 acceptance rows at L = 43, 44, 47 (8 against 9),
+// the same 4 on kappa_p = 2.5's, whose solve a third step makes dearer ("Eighth session").
 constexpr int kContactLowSteps = 2;
+
+// A block of matvec_M's pair products (SpectralSolver::index_blocks): pairs [begin, end) of the solver's
+// pairs, whether it has the work to run in parallel (whether or not threads > 1), and its spheres
+// [sphere_begin, sphere_end) in the solver's per-block sphere list.
+struct PairBlock {
+  std::size_t begin = 0, end = 0;
+  bool parallel = false;
+  std::size_t sphere_begin = 0, sphere_end = 0;
+};
+// One product to add to a sphere: `count` numbers at `offset` in the block's products.
+struct BlockTerm {
+  std::size_t offset = 0;
+  int count = 0;
+};
 
 // Unknowns per sphere: scaled exterior coefficients beta_lm = B_lm / a^(l+1) [V], where the
 // sphere's own potential outside is sum B_lm I_l^m(x - x_i). The external potential at sphere i
@@ -108,8 +125,8 @@ class SpectralSolver final : public Solver {
   };
   // alpha = M beta (sphere-sphere part)
   void matvec_M(const double* beta, double* alpha);
-  void add_block(std::size_t b0, std::size_t b1, double* alpha, bool parallel) const;
-  long count_parallel_blocks() const;
+  void index_blocks();
+  void add_block(const PairBlock& blk, double* alpha) const;
   void pair_product(const Pair& pr, const double* beta, double* out_i, double* out_k, double* s) const;
   void pair_product_at(const Pair& pr, const double* b_i, const double* b_k, double* out_i, double* out_k,
                        double* s) const;
@@ -150,7 +167,13 @@ class SpectralSolver final : public Solver {
   // per sphere ncoef(L) numbers (18 MB each at N = 1000, L = 47): on huge pages (large_buffer.hpp)
   LargeVector beta_, alpha_;
   std::vector<double> out_, scratch_;  // matvec_M: per-pair products of a block, per-thread scratch
-  std::vector<std::size_t> slot_;      // matvec_M: offset of each pair's products in out_
+  // matvec_M's blocks (index_blocks, fixed by prepare()): per block its pairs, largest first (blk_order_),
+  // each pair's offset in out_ (blk_slot_), and the spheres it adds to, each with its terms in pair order
+  std::vector<PairBlock> blocks_;
+  std::vector<std::size_t> blk_order_, blk_slot_;
+  std::vector<int> blk_sphere_;
+  std::vector<std::size_t> blk_sphere_start_;  // blk_sphere_[t]'s terms: blk_term_[start[t], start[t + 1])
+  std::vector<BlockTerm> blk_term_;
   // Blocks of one product with the work to run in parallel (whether or not threads > 1: an output
   // that does not depend on the thread count).
   long parallel_blocks_ = 0;
@@ -242,70 +265,92 @@ void SpectralSolver::pair_product_at(const Pair& pr, const double* b_i, const do
     pr.R.from_frame2(pr.L, pr.M, ai, ak, out_i, out_k, false);
 }
 
-// alpha = M beta. The pairs are taken in blocks (block_end): each block's pair products run in parallel
-// (OpenMP, when the block has enough work), each into its own slot, and are then added to alpha in
-// pair order, so alpha does not depend on the thread count. Cancellation is polled between blocks
+// alpha = M beta. The pairs are taken in blocks (index_blocks): in each block's parallel region the pair
+// products run first, largest first from a dynamic schedule (the last pair a thread takes is a small
+// one), each into its own slot; then the block's spheres, each adding its terms in pair order
+// (add_block), so alpha does not depend on the thread count. Cancellation is polled between blocks
 // (never inside a parallel region, core/cancel.hpp): a block is at most kBlockWork of work.
 void SpectralSolver::matvec_M(const double* beta, double* alpha) {
-  const std::size_t npairs = pairs_.size(), nc = std::size_t(nc_), n = std::size_t(N_) * nc;
+  const std::size_t nc = std::size_t(nc_), n = std::size_t(N_) * nc;
 #pragma omp parallel for schedule(static) if (n >= kSpectralParallelLength)
   for (std::size_t c = 0; c < n; ++c) alpha[c] = 0.0;
   const int threads = omp_get_max_threads();
-  out_.resize(std::min(npairs, kPairBlock) * 2 * nc);
-  scratch_.resize(std::size_t(threads) * 4 * nc);
-  for (std::size_t b0 = 0, b1; b0 < npairs; b0 = b1) {
+  scratch_.resize(std::max(scratch_.size(), std::size_t(threads) * 4 * nc));
+  for (const PairBlock& blk : blocks_) {
     poll_cancel();
-    double work = 0.0;
-    b1 = block_end(b0, work);
-    const bool parallel = threads > 1 && b1 - b0 > 1 && work > kParallelPairWork;
-    slot_.resize(b1 - b0 + 1);
-    slot_[0] = 0;
-    for (std::size_t q = b0; q < b1; ++q) slot_[q - b0 + 1] = slot_[q - b0] + 2 * slot_size(pairs_[q]);
-#pragma omp parallel for schedule(dynamic, 1) if (parallel)
-    for (std::size_t q = b0; q < b1; ++q) {
-      double* o = &out_[slot_[q - b0]];
-      pair_product(pairs_[q], beta, o, o + slot_size(pairs_[q]), &scratch_[std::size_t(omp_get_thread_num()) * 4 * nc]);
+#pragma omp parallel if (threads > 1 && blk.parallel)
+    {
+      double* s = &scratch_[std::size_t(omp_get_thread_num()) * 4 * nc];
+#pragma omp for schedule(dynamic, 1)
+      for (std::size_t r = blk.begin; r < blk.end; ++r) {
+        const std::size_t q = blk_order_[r];
+        double* o = &out_[blk_slot_[q]];
+        pair_product(pairs_[q], beta, o, o + slot_size(pairs_[q]), s);
+      }
+      add_block(blk, alpha);
     }
-    add_block(b0, b1, alpha, parallel);
   }
   if (far_) far_->add(beta, alpha);
 }
 
-// alpha += the products of pairs b0..b1 (out_, slot_). Every number of alpha receives its terms in pair
-// order; with `parallel` the threads split the spheres (thread t adds to spheres [N t/T, N (t+1)/T) only),
-// so the bits do not depend on the thread count.
-void SpectralSolver::add_block(std::size_t b0, std::size_t b1, double* alpha, bool parallel) const {
+// alpha += the products of one block (out_), inside matvec_M's parallel region: the block's spheres are
+// shared out dynamically (a sphere's terms differ by up to 20 times in length), each sphere adding its
+// terms in pair order, so every number of alpha receives its terms in the same order at any thread count.
+void SpectralSolver::add_block(const PairBlock& blk, double* alpha) const {
   const std::size_t nc = std::size_t(nc_);
-#pragma omp parallel if (parallel)
-  {
-    const int nt = omp_get_num_threads(), t = omp_get_thread_num();
-    const int s0 = int(std::int64_t(N_) * t / nt), s1 = int(std::int64_t(N_) * (t + 1) / nt);
-    for (std::size_t q = b0; q < b1; ++q) {
-      const Pair& pr = pairs_[q];
-      const double* o = &out_[slot_[q - b0]];
-      const int np = sh::ncoef(pr.L);
-      if (pr.i >= s0 && pr.i < s1) {
-        double* al = alpha + std::size_t(pr.i) * nc;
-        for (int c = 0; c < np; ++c) al[c] += o[c];
-      }
-      if (pr.k >= s0 && pr.k < s1) {
-        double* al = alpha + std::size_t(pr.k) * nc;
-        const double* ok = o + slot_size(pr);
-        for (int c = 0; c < np; ++c) al[c] += ok[c];
-      }
+#pragma omp for schedule(dynamic, 4)
+  for (std::size_t t = blk.sphere_begin; t < blk.sphere_end; ++t) {
+    double* al = alpha + std::size_t(blk_sphere_[t]) * nc;
+    for (std::size_t e = blk_sphere_start_[t]; e < blk_sphere_start_[t + 1]; ++e) {
+      const double* o = &out_[blk_term_[e].offset];
+      for (int c = 0; c < blk_term_[e].count; ++c) al[c] += o[c];
     }
   }
 }
 
-// Blocks of one product with the work to run in parallel (as matvec_M decides, at any thread count).
-long SpectralSolver::count_parallel_blocks() const {
-  long n = 0;
-  for (std::size_t b0 = 0, b1; b0 < pairs_.size(); b0 = b1) {
+// matvec_M's blocks (block_end): each block's pairs by decreasing degree (ties in pair order), each pair's
+// offset in out_, and the spheres of the block with their terms in pair order; out_ sized for the
+// largest block. Fixed for the pairs of prepare().
+void SpectralSolver::index_blocks() {
+  const std::size_t npairs = pairs_.size();
+  blocks_.clear();
+  blk_order_.resize(npairs);
+  blk_slot_.resize(npairs);
+  blk_sphere_.clear();
+  blk_sphere_start_.assign(1, 0);
+  blk_term_.clear();
+  std::size_t most = 0;
+  std::vector<std::pair<int, std::size_t>> touch;  // (sphere, 2 q + side) of one block
+  for (std::size_t b0 = 0, b1; b0 < npairs; b0 = b1) {
     double work = 0.0;
     b1 = block_end(b0, work);
-    n += (b1 - b0 > 1 && work > kParallelPairWork) ? 1 : 0;
+    PairBlock blk{b0, b1, b1 - b0 > 1 && work > kParallelPairWork, blk_sphere_.size(), 0};
+    std::size_t used = 0;
+    touch.clear();
+    for (std::size_t q = b0; q < b1; ++q) {
+      blk_slot_[q] = used;
+      used += 2 * slot_size(pairs_[q]);
+      touch.push_back({pairs_[q].i, 2 * q});
+      touch.push_back({pairs_[q].k, 2 * q + 1});
+    }
+    most = std::max(most, used);
+    std::iota(blk_order_.begin() + std::ptrdiff_t(b0), blk_order_.begin() + std::ptrdiff_t(b1), b0);
+    std::stable_sort(blk_order_.begin() + std::ptrdiff_t(b0), blk_order_.begin() + std::ptrdiff_t(b1),
+                     [&](std::size_t a, std::size_t b) { return pairs_[a].L > pairs_[b].L; });
+    std::sort(touch.begin(), touch.end());  // by sphere, then in pair order
+    for (std::size_t e = 0; e < touch.size(); ++e) {
+      const auto [sphere, code] = touch[e];
+      const Pair& pr = pairs_[code / 2];
+      blk_term_.push_back({blk_slot_[code / 2] + (code % 2) * slot_size(pr), sh::ncoef(pr.L)});
+      if (e + 1 == touch.size() || touch[e + 1].first != sphere) {
+        blk_sphere_.push_back(sphere);
+        blk_sphere_start_.push_back(blk_term_.size());
+      }
+    }
+    blk.sphere_end = blk_sphere_.size();
+    blocks_.push_back(blk);
   }
-  return n;
+  out_.resize(most);
 }
 
 // End of the block of pair products that starts at pair b0: pairs are added until the block holds
@@ -598,7 +643,7 @@ Solution SpectralSolver::solve(const Problem& p) {
   const double tol = std::min(opt_.tolerance, 1e-2 * opt_.target_accuracy);
   const GmresResult gr = solve_multipoles(p, rhs, tol);
   // external potential coefficients (M beta_ is there after GMRES; one product less per solve)
-  parallel_blocks_ = count_parallel_blocks();
+  parallel_blocks_ = std::count_if(blocks_.begin(), blocks_.end(), [](const PairBlock& b) { return b.parallel; });
   if (!alpha_current_) matvec_M(beta_.data(), alpha_.data());
   const std::size_t nall = alpha_.size();
 #pragma omp parallel for schedule(static) if (nall >= kSpectralParallelLength)
@@ -651,6 +696,7 @@ void SpectralSolver::prepare(const Problem& p, int L) {
     if (!far_options_.stored_rotations && pivot_.degree() != L) pivot_.build(L);
   }
   build_pairs(p);
+  index_blocks();
   prepare_preconditioner(p);
 }
 
@@ -705,7 +751,8 @@ void SpectralSolver::precondition(const double* u, double* z) {
 #pragma omp parallel for schedule(static) if (std::size_t(n) >= kSpectralParallelLength)
   for (std::ptrdiff_t c = 0; c < n; ++c) z[c] = u[c];
   if (pc_contact_) contact_inverse(u, z);
-  for (int k = 0; pc_contact_low_ && k < kContactLowSteps; ++k) apply_contact_low(z, u, z, -1.0);
+  const int steps = opt_.contact_low_steps > 0 ? opt_.contact_low_steps : kContactLowSteps;
+  for (int k = 0; pc_contact_low_ && k < steps; ++k) apply_contact_low(z, u, z, -1.0);
   for (std::size_t q : matched_) pair_block_inverse(pairs_[q], u, z);
   if (coarse_) coarse_inverse(u, z);
 }
