@@ -109,7 +109,7 @@ TEST(DemReferenceTwin, ParallelBlocksBitIdentical) {
     EXPECT_EQ(twin_differences(fast, ref), 0) << threads << " threads";
     const auto blocks = contact::make_pair_blocks(fast.pairs(), fast.particles().size(), threads);
     std::size_t crossing = 0;
-    for (const auto& c : blocks.crossing_out) crossing += c.size();
+    crossing = blocks.crossing.size();
     EXPECT_GT(crossing, 0u);  // (pairs between the blocks exist: the buffered path was taken)
   }
   omp_set_num_threads(saved);

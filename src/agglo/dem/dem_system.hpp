@@ -1,8 +1,9 @@
 #pragma once
 // DEM engine: particles + adhesive contacts + optional non-contact forces, advanced by the
 // velocity-Verlet scheme (kick-drift-kick, symplectic for conservative forces; velocity-dependent
-// contact forces use the half-step velocity). Pair forces are computed in parallel into a per-pair
-// buffer and gathered per particle in a fixed order: results do not depend on the thread count.
+// contact forces use the half-step velocity). Pair forces are summed per particle in the order of the
+// pair list on any number of threads (blocks of pairs, contact/pair_blocks.hpp): results do not depend
+// on the thread count. On several threads a step is one parallel region (parallel_step).
 #include <memory>
 #include <vector>
 
@@ -116,6 +117,11 @@ class DemSystem {
   void kick(std::int64_t q);
   void gather_pair_forces();  // the reference path: per-pair buffer, then a gather per particle
   void accumulate_in_blocks();  // the parallel path: the fast path's sums on blocks of pairs
+  void rebuild_list();          // the neighbour list built again (pair kinds and JKR constants of new pairs)
+  void ensure_blocks();         // blocks_ (and the crossing buffer) for the current list and thread count
+  void pair_phases();           // inside a parallel region: the two phases of the blocks on this thread
+  bool parallel_step_applies() const;
+  void parallel_step();  // step() as one parallel region (no external force)
 
   Particles p_;
   DemParams params_;
@@ -134,6 +140,11 @@ class DemSystem {
   long step_ = 0;
   bool forces_ready_ = false;
   bool reference_ = false;
+  // Per thread of parallel_step: whether one of its particles moved beyond half the skin (a cache line each).
+  struct alignas(64) ThreadFlag {
+    bool far = false;
+  };
+  std::vector<ThreadFlag> far_;
   contact::PairBlocks blocks_;  // of the parallel path, for the list of build blocks_builds_ (-1: none)
   long blocks_builds_ = -1;
   std::size_t blocks_pairs_ = 0;

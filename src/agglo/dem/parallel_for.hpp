@@ -30,6 +30,22 @@ inline int max_threads() {
 #endif
 }
 
+// This thread's number in its team and the team's size (0 and 1 outside a parallel region or without OpenMP).
+inline int thread_id() {
+#ifdef _OPENMP
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+inline int team_size() {
+#ifdef _OPENMP
+  return omp_get_num_threads();
+#else
+  return 1;
+#endif
+}
+
 template <class F>
 void parallel_for(std::int64_t n, const F& f) {
   if (n > kParallelThreshold) {

@@ -25,14 +25,13 @@ PairBlocks make_pair_blocks(const std::vector<Pair>& pairs, std::size_t n_partic
         std::lower_bound(pairs.begin(), pairs.end(), first, [](const Pair& p, std::uint32_t i) { return p.i < i; }) -
         pairs.begin());
   }
-  b.crossing_out.assign(nb, {});
   b.crossing_in.assign(nb, {});
   for (std::size_t t = 0; t < nb; ++t)
     for (std::size_t k = b.first_pair[t]; k < b.first_pair[t + 1]; ++k) {
       const std::uint32_t j = pairs[k].j;
       if (j < b.first_particle[t + 1]) continue;
       const auto owner = std::upper_bound(b.first_particle.begin(), b.first_particle.end(), j) - b.first_particle.begin() - 1;
-      b.crossing_out[t].push_back(k);
+      b.crossing.push_back(k);
       b.crossing_in[static_cast<std::size_t>(owner)].push_back(k);
     }
   return b;
