@@ -108,9 +108,7 @@ TEST(DemReferenceTwin, ParallelBlocksBitIdentical) {
     ASSERT_TRUE(runs_parallel(static_cast<std::int64_t>(fast.pairs().size())));
     EXPECT_EQ(twin_differences(fast, ref), 0) << threads << " threads";
     const auto blocks = contact::make_pair_blocks(fast.pairs(), fast.particles().size(), threads);
-    std::size_t crossing = 0;
-    crossing = blocks.crossing.size();
-    EXPECT_GT(crossing, 0u);  // (pairs between the blocks exist: the buffered path was taken)
+    EXPECT_GT(blocks.crossing.size(), 0u);  // (pairs between the blocks exist: the buffered path was taken)
   }
   omp_set_num_threads(saved);
 }
@@ -137,6 +135,65 @@ TEST(DemReferenceTwin, RebuildTestInTheParallelDriftBitIdentical) {
     EXPECT_EQ(twin_differences(fast, ref), 0) << threads << " threads";
   }
   omp_set_num_threads(saved);
+}
+
+// The parallel step with the forces it adds after its region (a wall and gravity: DemSystem::parallel_step's
+// closing kick after the region) and the exact gas-drag kick: a 13^3 block (more than kParallelThreshold
+// pairs) with its particles moving, dragged by a gas flow and pulled onto a wall it touches, on 2 and 3 threads against
+// the reference twin on one thread, every bit (it fails when the wall forces are left out of the parallel step).
+TEST(DemReferenceTwin, ParallelStepWithWallGravityAndDragBitIdentical) {
+  const int saved = omp_get_max_threads();
+  auto make = [](bool reference) {
+    auto prm = twin_params(true);
+    prm.gravity = Vec3{0.0, 0.0, -2.0e4};
+    prm.gas.enabled = true;
+    prm.gas.viscosity = 1.8e-5;
+    prm.gas.mean_free_path = 68e-9;
+    prm.gas.flow = Vec3{0.05, 0.0, 0.0};
+    prm.walls.push_back(Wall{Vec3{0.0, 0.0, -0.999 * kTwinR}, Vec3{0.0, 0.0, 1.0}});
+    DemSystem sys(twin_block(13, 0.05), prm);
+    sys.set_reference_kernel(reference);
+    return sys;
+  };
+  omp_set_num_threads(1);
+  DemSystem ref = make(true);
+  ref.run(120);
+  ASSERT_GT(ref.wall_contacts(), 0);  // (the wall was touched)
+  for (int threads : {2, 3}) {
+    omp_set_num_threads(threads);
+    DemSystem fast = make(false);
+    fast.run(120);
+    ASSERT_TRUE(runs_parallel(static_cast<std::int64_t>(fast.pairs().size())));
+    EXPECT_EQ(twin_differences(fast, ref), 0) << threads << " threads";
+  }
+  omp_set_num_threads(saved);
+}
+
+// The blocks own about equal numbers of pairs with both particles inside (phase 2 of the parallel pair step
+// is balanced; the crossing pairs are spread evenly in phase 1): on the 13^3 block after 60 steps, 2 to 4
+// blocks own counts within 1 % of their mean, against the split by pair count alone (the blocks of
+// pairs [t np / B, (t+1) np / B)), whose first block owns C_0 fewer than its pairs (the negative control).
+TEST(DemReferenceTwin, PairBlocksOwnEqualShares) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  DemSystem sys(twin_block(13, 0.05), twin_params(true));
+  sys.run(60);
+  omp_set_num_threads(saved);
+  const auto& pairs = sys.pairs();
+  for (std::size_t nb : {2u, 3u, 4u}) {
+    const auto b = contact::make_pair_blocks(pairs, sys.particles().size(), nb);
+    ASSERT_EQ(b.blocks(), nb);
+    std::vector<double> own(nb, 0.0);
+    for (std::size_t t = 0; t < nb; ++t)
+      for (std::size_t k = b.first_pair[t]; k < b.first_pair[t + 1]; ++k) own[t] += pairs[k].j < b.first_particle[t + 1];
+    const double mean = static_cast<double>(pairs.size() - b.crossing.size()) / static_cast<double>(nb);
+    for (std::size_t t = 0; t < nb; ++t) EXPECT_NEAR(own[t], mean, 0.01 * mean) << nb << " blocks, block " << t;
+    // The split by pair count: block 0 = pairs [0, np / nb) ends at the particle of pair np / nb.
+    const std::uint32_t end0 = pairs[pairs.size() / nb].i;
+    double own0 = 0.0;
+    for (const Pair& pr : pairs) own0 += pr.i < end0 && pr.j < end0;
+    EXPECT_GT(std::abs(own0 - mean), 0.02 * mean) << nb << " blocks (the control is not balanced)";
+  }
 }
 
 TEST(DemReferenceTwin, ImpactOnWallBitIdentical) {

@@ -3,7 +3,8 @@
 // pair forces can be added straight into the particles on several threads with the sums of the serial
 // loop (contact_kernel.hpp, accumulate_pairs), bit for bit:
 //   block b owns the particles [first_particle[b], first_particle[b+1]) and the pairs whose i it owns,
-//   [first_pair[b], first_pair[b+1]) (about n_pairs / B each; a particle's pairs as i stay in one block);
+//   [first_pair[b], first_pair[b+1]) (chosen so that the blocks own about equal numbers of pairs with both
+//   particles in the block; a particle's pairs as i stay in one block);
 //   a pair whose j lies beyond its block's particles is a crossing pair: its force is computed first into
 //   a buffer (phase 1: all crossing pairs, split evenly over the threads whatever their blocks) and added
 //   to j by j's block before that block's own pairs (phase 2, one block per thread). In the serial order the pairs

@@ -62,7 +62,7 @@ class PairKernel final : public ContactKernel {
       for (Pair& pr : pairs) add_pair_force(pr, pair_force(pr, p, dt), p);
       return;
     }
-    accumulate_range(pairs, p, dt, 0, pairs.size(), kNoCrossing, nullptr);
+    accumulate_range<false>(pairs, p, dt, 0, pairs.size(), 0, nullptr);
   }
 
   // Pairs [k0, k1) added to their particles in pair order, in chunks of kRadiusChunk pairs, two passes per chunk:
@@ -70,15 +70,17 @@ class PairKernel final : public ContactKernel {
   // law with that radius (Models::force_at_radius) and the sums. The same operations on the same operands as
   // Models::force, pair by pair, so the same bits; the contact radii of several pairs are solved together, so
   // that the core overlaps their Newton iterations (each a dependent chain of divisions). A pair whose j is
-  // >= j_end (a crossing pair of a block, pair_blocks.hpp) was evaluated before: its force crossing[k] goes to i.
+  // >= j_end (a crossing pair of a block, pair_blocks.hpp; only with Crossing) was evaluated before: its force
+  // crossing[k] goes to i.
+  template <bool Crossing>
   [[gnu::always_inline]] void accumulate_range(std::vector<Pair>& pairs, Particles& p, double dt, std::size_t k0,
                                                std::size_t k1, std::uint32_t j_end, const PairForce* crossing) const {
     for (std::size_t c0 = k0; c0 < k1; c0 += kRadiusChunk) {
       const std::size_t c1 = std::min(k1, c0 + kRadiusChunk);
-      update_radii(pairs, p, c0, c1, j_end);
+      update_radii<Crossing>(pairs, p, c0, c1, j_end);
       for (std::size_t k = c0; k < c1; ++k) {
         Pair& pr = pairs[k];
-        if (pr.j >= j_end) {
+        if (Crossing && pr.j >= j_end) {
           p.f[pr.i] += crossing[k].f_on_i;
           p.t[pr.i] += crossing[k].t_on_i;
           continue;
@@ -90,9 +92,10 @@ class PairKernel final : public ContactKernel {
     }
   }
 
-  // The first pass of accumulate_range over pairs [k0, k1) (but those with j >= j_end): step 1 of every pair,
-  // then the contact radii of the engaged ones, Normal::kLanes at a time where the normal model can
+  // The first pass of accumulate_range over pairs [k0, k1) (but, with Crossing, those with j >= j_end): step 1
+  // of every pair, then the contact radii of the engaged ones, Normal::kLanes at a time where the normal model can
   // (Normal::contact_radii).
+  template <bool Crossing>
   [[gnu::always_inline]] void update_radii(std::vector<Pair>& pairs, const Particles& p, std::size_t k0,
                                            std::size_t k1, std::uint32_t j_end) const {
     std::array<std::size_t, kRadiusChunk> engaged;
@@ -100,7 +103,7 @@ class PairKernel final : public ContactKernel {
     std::size_t ne = 0;
     for (std::size_t k = k0; k < k1; ++k) {
       Pair& pr = pairs[k];
-      if (pr.j >= j_end) continue;
+      if (Crossing && pr.j >= j_end) continue;
       const double dk = p.r[pr.i] + p.r[pr.j] - norm(p.x[pr.j] - p.x[pr.i]);
       if (models_[pr.kind].engaged(pr.jkr, dk, pr.state)) {
         engaged[ne] = k;
@@ -149,7 +152,7 @@ class PairKernel final : public ContactKernel {
       p.f[pairs[k].j] -= crossing[k].f_on_i;
       p.t[pairs[k].j] += crossing[k].t_on_j;
     }
-    accumulate_range(pairs, p, dt, b.first_pair[t], b.first_pair[t + 1], end, crossing.data());
+    accumulate_range<true>(pairs, p, dt, b.first_pair[t], b.first_pair[t + 1], end, crossing.data());
   }
 
   PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
@@ -308,8 +311,6 @@ class PairKernel final : public ContactKernel {
 
   // Pairs per chunk of accumulate_pairs' two passes (their states stay in the L1 cache between the passes).
   static constexpr std::size_t kRadiusChunk = 64;
-  // j_end of accumulate_range when no pair crosses (the one-thread loop).
-  static constexpr std::uint32_t kNoCrossing = ~std::uint32_t{0};
 
   std::vector<Models> models_;
 };
