@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <omp.h>
 #include <random>
@@ -71,6 +72,13 @@ int twin_differences(const DemSystem& a, const DemSystem& b) {
   return bad;
 }
 
+// AGGLO_THREAD_PROBE=off for the guard's lifetime: DemSystem::step keeps the whole team at every step (no
+// probes at one thread, core/thread_choice.hpp), so that a test of the parallel path runs it throughout.
+struct FixedThreadCount {
+  FixedThreadCount() { setenv("AGGLO_THREAD_PROBE", "off", 1); }
+  ~FixedThreadCount() { unsetenv("AGGLO_THREAD_PROBE"); }
+};
+
 }  // namespace
 
 TEST(DemReferenceTwin, BlockAtEquilibriumBitIdentical) {
@@ -95,6 +103,7 @@ TEST(DemReferenceTwin, BlockAtEquilibriumBitIdentical) {
 // kParallelThreshold pairs) against the reference twin on one thread: a 13^3 block (6084 lattice contacts),
 // every particle moving, so that contacts also form and break; 2 and 3 threads (uneven blocks).
 TEST(DemReferenceTwin, ParallelBlocksBitIdentical) {
+  const FixedThreadCount fixed;
   const int saved = omp_get_max_threads();
   for (int threads : {2, 3}) {
     omp_set_num_threads(1);
@@ -120,6 +129,7 @@ TEST(DemReferenceTwin, ParallelBlocksBitIdentical) {
 // rebuilt during the run (not vacuous: more builds than the first), 2 and 3 threads; the same rebuild steps
 // and every bit of the state.
 TEST(DemReferenceTwin, RebuildTestInTheParallelDriftBitIdentical) {
+  const FixedThreadCount fixed;
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
   DemSystem ref(twin_block(17, 2.0), twin_params(true));
@@ -142,6 +152,7 @@ TEST(DemReferenceTwin, RebuildTestInTheParallelDriftBitIdentical) {
 // pairs) with its particles moving, dragged by a gas flow and pulled onto a wall it touches, on 2 and 3 threads against
 // the reference twin on one thread, every bit (it fails when the wall forces are left out of the parallel step).
 TEST(DemReferenceTwin, ParallelStepWithWallGravityAndDragBitIdentical) {
+  const FixedThreadCount fixed;
   const int saved = omp_get_max_threads();
   auto make = [](bool reference) {
     auto prm = twin_params(true);
@@ -194,6 +205,27 @@ TEST(DemReferenceTwin, PairBlocksOwnEqualShares) {
     for (const Pair& pr : pairs) own0 += pr.i < end0 && pr.j < end0;
     EXPECT_GT(std::abs(own0 - mean), 0.02 * mean) << nb << " blocks (the control is not balanced)";
   }
+}
+
+// The thread count chosen per step by timed probes (DemSystem::step, core/thread_choice.hpp): the first
+// kProbeSteps steps run on the whole team, the next kProbeSteps on one thread, then the faster count; a
+// 13^3 block on 2 threads for 3 kProbeSteps steps has taken both counts (whatever the timings), and every
+// bit equals the reference twin's on one thread.
+TEST(DemReferenceTwin, StepsOfBothThreadCountsBitIdentical) {
+  const int saved = omp_get_max_threads();
+  const long steps = 3 * static_cast<long>(ThreadChoice::kProbeSteps);
+  omp_set_num_threads(1);
+  DemSystem ref(twin_block(13, 0.05), twin_params(true));
+  ref.set_reference_kernel(true);
+  ref.run(steps);
+  omp_set_num_threads(2);
+  DemSystem fast(twin_block(13, 0.05), twin_params(true));
+  fast.run(steps);
+  omp_set_num_threads(saved);
+  EXPECT_GE(fast.thread_choice().steps_at_one(), ThreadChoice::kProbeSteps);  // (the third kProbeSteps: either)
+  EXPECT_GE(fast.thread_choice().steps_at_max(), ThreadChoice::kProbeSteps);
+  EXPECT_EQ(fast.thread_choice().steps_at_max() + fast.thread_choice().steps_at_one(), static_cast<std::uint64_t>(steps));
+  EXPECT_EQ(twin_differences(fast, ref), 0);
 }
 
 TEST(DemReferenceTwin, ImpactOnWallBitIdentical) {

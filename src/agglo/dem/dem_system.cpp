@@ -1,6 +1,7 @@
 #include "agglo/dem/dem_system.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -267,6 +268,25 @@ void DemSystem::gather_pair_forces() {
 
 void DemSystem::step() {
   if (!forces_ready_) compute_forces();
+  const int max = max_threads();
+  if (max > 1 && runs_parallel(static_cast<std::int64_t>(nl_.pairs().size()))) {
+    const int count = threads_.next(max);
+    const bool timed = threads_.measuring();
+    const auto wall0 = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+    if (count == max) {
+      advance();
+    } else {
+      const TeamSize one(count);
+      advance();
+    }
+    if (timed) threads_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
+  } else {
+    advance();
+  }
+  if (step_ % 256 == 0) check_state();
+}
+
+void DemSystem::advance() {
   if (parallel_step_applies()) {
     parallel_step();
   } else {
@@ -286,7 +306,6 @@ void DemSystem::step() {
     compute_forces(tracked ? (far ? 1 : 0) : -1);
     parallel_for(n, [&](std::int64_t q) { kick(q); });
   }
-  if (step_ % 256 == 0) check_state();
 }
 
 void DemSystem::check_state() const {

@@ -17,6 +17,7 @@
 #include "agglo/dem/particles.hpp"
 #include "agglo/dem/wall.hpp"
 #include "agglo/core/error.hpp"
+#include "agglo/core/thread_choice.hpp"
 
 namespace agglo::dem {
 
@@ -65,6 +66,9 @@ class DemSystem {
   void set_reference_kernel(bool on) { reference_ = on; }
   bool reference_kernel() const { return reference_; }
 
+  // One step. With more than kParallelThreshold pairs and several OpenMP threads, the step's thread count (all
+  // or one) is chosen by timed probes (core/thread_choice.hpp): the bits are those of any count, the wall time
+  // that of the faster one on this machine at this time.
   void step();
   void run(long nsteps) {
     for (long s = 0; s < nsteps; ++s) step();
@@ -80,6 +84,7 @@ class DemSystem {
   Particles& particles() { return p_; }
   const std::vector<Pair>& pairs() const { return nl_.pairs(); }
   const NeighborList& neighbors() const { return nl_; }
+  const ThreadChoice& thread_choice() const { return threads_; }
 
   // Diagnostics.
   double kinetic_energy() const;                // translational + rotational [J]
@@ -122,6 +127,7 @@ class DemSystem {
   void pair_phases();           // inside a parallel region: the two phases of the blocks on this thread
   bool parallel_step_applies() const;
   void parallel_step();  // step() as one parallel region (no external force)
+  void advance();        // step() without the choice of the thread count and the state check
 
   Particles p_;
   DemParams params_;
@@ -145,6 +151,7 @@ class DemSystem {
     bool far = false;
   };
   std::vector<ThreadFlag> far_;
+  ThreadChoice threads_;        // thread count of the steps (wall time only)
   contact::PairBlocks blocks_;  // of the parallel path, for the list of build blocks_builds_ (-1: none)
   long blocks_builds_ = -1;
   std::size_t blocks_pairs_ = 0;
