@@ -13,8 +13,8 @@
 #   t2_spin   two threads at every step, GOMP_SPINCOUNT=300000 (libgomp's own default: spinning waits)
 #   V_before  variant V of the build at BEFORE_BUILD (its bench_dem_scaling and agglo; e.g. main's build:
 #             before and after in the same rounds); ratios against t1_before
-# Prints `uptime` before and after, every run (with the 1-min load average), then per system the median wall
-# and CPU of each variant, the speed-up wall(t1) / wall(V) and CPU(V) / CPU(t1) (the extra CPU of the
+# Prints `uptime` before and after, every run (with the 1-min load average), then (bench/threads_summary.py)
+# per system the median wall and CPU of each variant, the speed-up wall(t1) / wall(V) and CPU(V) / CPU(t1) (the extra CPU of the
 # second thread: waits, fork/joins). On two otherwise idle cores the speed-up is the parallel one; on a
 # shared machine only the ratios of one invocation mean anything. Timing only (never a test).
 #   bench/dem_threads.sh [OUT_DIR]    BUILD=build, SIZES="10000 100000", WARM=200, STEPS=1000, ROUNDS=3,
@@ -71,27 +71,11 @@ systems=()
 for n in $SIZES; do systems+=("block_$n"); done
 [ "$COLLIDE" = 1 ] && systems+=(collide)
 read -r -a vars <<< "$VARIANTS"
-for r in $(seq 1 "$ROUNDS"); do
-  for k in $(seq 0 $((${#vars[@]} - 1))); do
-    v=${vars[$(((k + r - 1) % ${#vars[@]}))]}
+for r in $(seq 1 "$ROUNDS"); do  # round r starts at variant r - 1 (so that a load trend favours none)
+  shift_by=$(((r - 1) % ${#vars[@]}))
+  for v in "${vars[@]:shift_by}" "${vars[@]:0:shift_by}"; do
     for s in "${systems[@]}"; do run "$s" "$v" "$r"; done
   done
 done
 echo "after: $(uptime)"
-/usr/bin/python3 - "$table" <<'PY'
-import csv, statistics, sys
-rows = list(csv.DictReader(open(sys.argv[1]), delimiter="\t"))
-for system in dict.fromkeys(r["system"] for r in rows):
-    rs = [r for r in rows if r["system"] == system]
-    loads = [float(r["load"]) for r in rs]
-    med = {}
-    for v in dict.fromkeys(r["variant"] for r in rs):
-        vr = [r for r in rs if r["variant"] == v]
-        med[v] = (statistics.median(float(r["wall_s"]) for r in vr), statistics.median(float(r["cpu_s"]) for r in vr))
-    print(f"{system}: medians over {len(vr)} rounds (1-min load average {min(loads):.1f}-{max(loads):.1f})")
-    for v, (w, c) in med.items():
-        one = "t1_before" if v.endswith("_before") else "t1"
-        base = med.get(one)
-        ratio = f"  speed-up {base[0] / w:.2f}x, CPU {c / base[1]:.2f}x of {one}" if base and w > 0 and base[1] > 0 else ""
-        print(f"  {v:16s} wall {w:8.3f} s  CPU {c:8.3f} s{ratio}")
-PY
+/usr/bin/python3 "$SRC/bench/threads_summary.py" "$table"
