@@ -74,6 +74,13 @@ case $name in
   dsmc_table_cost)
     run "$AGGLO" "$T/out"
     expect '^  break +dry collisions [0-9]+: stuck [0-9]+, bounced [0-9]+, broke [1-9][0-9]*$' ;;
+  dem_threads)  # (the before/after variants with this build as BEFORE_BUILD)
+    BUILD=$BUILD BEFORE_BUILD=$BUILD VARIANTS="t1 t2 t1_before t2_before" run "$T/out"
+    for s in block_10000 collide; do
+      expect "^$s: medians over 1 rounds \\(1-min load average [0-9.]+-[0-9.]+\\)$"
+    done
+    [ "$(grep -Ec '^  t2(_before)? +wall +[0-9.]+ s  CPU +[0-9.]+ s  speed-up [0-9.]+x, CPU [0-9.]+x of t1(_before)?$' "$log")" = 4 ] ||
+      { cat "$log"; echo "FAIL: bench/$name.sh: no t2 and t2_before line for each system"; exit 1; } ;;
   dsmc_threads)  # (the before/after variants with this agglo as BEFORE_AGGLO)
     BEFORE_AGGLO=$AGGLO VARIANTS="j1 j2 j1_before j2_before" run "$AGGLO" "$T/out"
     for v in "j2      " "j2_before"; do

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <omp.h>
 #include <random>
@@ -71,6 +72,13 @@ int twin_differences(const DemSystem& a, const DemSystem& b) {
   return bad;
 }
 
+// AGGLO_THREAD_PROBE=off for the guard's lifetime: DemSystem::step keeps the whole team at every step (no
+// probes at one thread, core/thread_choice.hpp), so that a test of the parallel path runs it throughout.
+struct FixedThreadCount {
+  FixedThreadCount() { setenv("AGGLO_THREAD_PROBE", "off", 1); }
+  ~FixedThreadCount() { unsetenv("AGGLO_THREAD_PROBE"); }
+};
+
 }  // namespace
 
 TEST(DemReferenceTwin, BlockAtEquilibriumBitIdentical) {
@@ -95,6 +103,7 @@ TEST(DemReferenceTwin, BlockAtEquilibriumBitIdentical) {
 // kParallelThreshold pairs) against the reference twin on one thread: a 13^3 block (6084 lattice contacts),
 // every particle moving, so that contacts also form and break; 2 and 3 threads (uneven blocks).
 TEST(DemReferenceTwin, ParallelBlocksBitIdentical) {
+  const FixedThreadCount fixed;
   const int saved = omp_get_max_threads();
   for (int threads : {2, 3}) {
     omp_set_num_threads(1);
@@ -108,9 +117,7 @@ TEST(DemReferenceTwin, ParallelBlocksBitIdentical) {
     ASSERT_TRUE(runs_parallel(static_cast<std::int64_t>(fast.pairs().size())));
     EXPECT_EQ(twin_differences(fast, ref), 0) << threads << " threads";
     const auto blocks = contact::make_pair_blocks(fast.pairs(), fast.particles().size(), threads);
-    std::size_t crossing = 0;
-    for (const auto& c : blocks.crossing_out) crossing += c.size();
-    EXPECT_GT(crossing, 0u);  // (pairs between the blocks exist: the buffered path was taken)
+    EXPECT_GT(blocks.crossing.size(), 0u);  // (pairs between the blocks exist: the buffered path was taken)
   }
   omp_set_num_threads(saved);
 }
@@ -122,6 +129,7 @@ TEST(DemReferenceTwin, ParallelBlocksBitIdentical) {
 // rebuilt during the run (not vacuous: more builds than the first), 2 and 3 threads; the same rebuild steps
 // and every bit of the state.
 TEST(DemReferenceTwin, RebuildTestInTheParallelDriftBitIdentical) {
+  const FixedThreadCount fixed;
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
   DemSystem ref(twin_block(17, 2.0), twin_params(true));
@@ -137,6 +145,87 @@ TEST(DemReferenceTwin, RebuildTestInTheParallelDriftBitIdentical) {
     EXPECT_EQ(twin_differences(fast, ref), 0) << threads << " threads";
   }
   omp_set_num_threads(saved);
+}
+
+// The parallel step with the forces it adds after its region (a wall and gravity: DemSystem::parallel_step's
+// closing kick after the region) and the exact gas-drag kick: a 13^3 block (more than kParallelThreshold
+// pairs) with its particles moving, dragged by a gas flow and pulled onto a wall it touches, on 2 and 3 threads against
+// the reference twin on one thread, every bit (it fails when the wall forces are left out of the parallel step).
+TEST(DemReferenceTwin, ParallelStepWithWallGravityAndDragBitIdentical) {
+  const FixedThreadCount fixed;
+  const int saved = omp_get_max_threads();
+  auto make = [](bool reference) {
+    auto prm = twin_params(true);
+    prm.gravity = Vec3{0.0, 0.0, -2.0e4};
+    prm.gas.enabled = true;
+    prm.gas.viscosity = 1.8e-5;
+    prm.gas.mean_free_path = 68e-9;
+    prm.gas.flow = Vec3{0.05, 0.0, 0.0};
+    prm.walls.push_back(Wall{Vec3{0.0, 0.0, -0.999 * kTwinR}, Vec3{0.0, 0.0, 1.0}});
+    DemSystem sys(twin_block(13, 0.05), prm);
+    sys.set_reference_kernel(reference);
+    return sys;
+  };
+  omp_set_num_threads(1);
+  DemSystem ref = make(true);
+  ref.run(120);
+  ASSERT_GT(ref.wall_contacts(), 0);  // (the wall was touched)
+  for (int threads : {2, 3}) {
+    omp_set_num_threads(threads);
+    DemSystem fast = make(false);
+    fast.run(120);
+    ASSERT_TRUE(runs_parallel(static_cast<std::int64_t>(fast.pairs().size())));
+    EXPECT_EQ(twin_differences(fast, ref), 0) << threads << " threads";
+  }
+  omp_set_num_threads(saved);
+}
+
+// The blocks own about equal numbers of pairs with both particles inside (phase 2 of the parallel pair step
+// is balanced; the crossing pairs are spread evenly in phase 1): on the 13^3 block after 60 steps, 2 to 4
+// blocks own counts within 1 % of their mean, against the split by pair count alone (the blocks of
+// pairs [t np / B, (t+1) np / B)), whose first block owns C_0 fewer than its pairs (the negative control).
+TEST(DemReferenceTwin, PairBlocksOwnEqualShares) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  DemSystem sys(twin_block(13, 0.05), twin_params(true));
+  sys.run(60);
+  omp_set_num_threads(saved);
+  const auto& pairs = sys.pairs();
+  for (std::size_t nb : {2u, 3u, 4u}) {
+    const auto b = contact::make_pair_blocks(pairs, sys.particles().size(), nb);
+    ASSERT_EQ(b.blocks(), nb);
+    std::vector<double> own(nb, 0.0);
+    for (std::size_t t = 0; t < nb; ++t)
+      for (std::size_t k = b.first_pair[t]; k < b.first_pair[t + 1]; ++k) own[t] += pairs[k].j < b.first_particle[t + 1];
+    const double mean = static_cast<double>(pairs.size() - b.crossing.size()) / static_cast<double>(nb);
+    for (std::size_t t = 0; t < nb; ++t) EXPECT_NEAR(own[t], mean, 0.01 * mean) << nb << " blocks, block " << t;
+    // The split by pair count: block 0 = pairs [0, np / nb) ends at the particle of pair np / nb.
+    const std::uint32_t end0 = pairs[pairs.size() / nb].i;
+    double own0 = 0.0;
+    for (const Pair& pr : pairs) own0 += pr.i < end0 && pr.j < end0;
+    EXPECT_GT(std::abs(own0 - mean), 0.02 * mean) << nb << " blocks (the control is not balanced)";
+  }
+}
+
+// The thread count chosen per step by timed probes (DemSystem::step, core/thread_choice.hpp): the first
+// kProbeSteps steps run on the whole team, the next kProbeSteps on one thread, then the faster count; a
+// 13^3 block on 2 threads for 3 kProbeSteps steps has taken both counts (whatever the timings), and every
+// bit equals the reference twin's on one thread.
+TEST(DemReferenceTwin, StepsOfBothThreadCountsBitIdentical) {
+  const int saved = omp_get_max_threads();
+  const long steps = 3 * static_cast<long>(ThreadChoice::kProbeSteps);
+  omp_set_num_threads(1);
+  DemSystem ref(twin_block(13, 0.05), twin_params(true));
+  ref.set_reference_kernel(true);
+  ref.run(steps);
+  omp_set_num_threads(2);
+  DemSystem fast(twin_block(13, 0.05), twin_params(true));
+  fast.run(steps);
+  omp_set_num_threads(saved);
+  EXPECT_GE(fast.thread_choice().steps_at_one(), ThreadChoice::kProbeSteps);  // (the third kProbeSteps: either)
+  EXPECT_GE(fast.thread_choice().steps_at_max(), ThreadChoice::kProbeSteps);
+  EXPECT_EQ(fast.thread_choice().steps_at_max() + fast.thread_choice().steps_at_one(), static_cast<std::uint64_t>(steps));
+  EXPECT_EQ(twin_differences(fast, ref), 0);
 }
 
 TEST(DemReferenceTwin, ImpactOnWallBitIdentical) {

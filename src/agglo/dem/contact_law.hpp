@@ -30,10 +30,16 @@ class ContactLaw {
   void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const {
     kernel_->accumulate_pairs(pairs, p, dt);
   }
-  // The same sums on several threads (pair_blocks.hpp), bit for bit those of accumulate_pairs.
-  void accumulate_pairs_in_blocks(std::vector<Pair>& pairs, Particles& p, double dt, const contact::PairBlocks& blocks,
-                                  std::vector<PairForce>& crossing) const {
-    kernel_->accumulate_pairs_in_blocks(pairs, p, dt, blocks, crossing);
+  // The same sums on several threads (pair_blocks.hpp), bit for bit those of accumulate_pairs: phase 1 (part
+  // `part` of `parts` of the crossing pairs) on every thread, a barrier, then phase 2 of each block
+  // (contact_kernel.hpp; DemSystem::pair_phases).
+  void crossing_forces(std::vector<Pair>& pairs, const Particles& p, double dt, const contact::PairBlocks& blocks,
+                       std::size_t part, std::size_t parts, std::vector<PairForce>& crossing) const {
+    kernel_->crossing_forces(pairs, p, dt, blocks, part, parts, crossing);
+  }
+  void block_forces(std::vector<Pair>& pairs, Particles& p, double dt, const contact::PairBlocks& blocks, std::size_t b,
+                    const std::vector<PairForce>& crossing) const {
+    kernel_->block_forces(pairs, p, dt, blocks, b, crossing);
   }
   // One contact evaluation: updates `s` (formation, break, springs) and returns the forces.
   PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,

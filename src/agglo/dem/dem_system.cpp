@@ -1,6 +1,7 @@
 #include "agglo/dem/dem_system.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -142,12 +143,15 @@ JkrPair DemSystem::jkr_for(std::uint32_t i, std::uint32_t j) const {
   return JkrPair::make(R, c.estar(), c.surface_energy);
 }
 
+void DemSystem::rebuild_list() {
+  nl_.build(p_.x, p_.r, skin_, [this](Pair& pr) {
+    pr.kind = mats_.kind(p_.mat[pr.i], p_.mat[pr.j]);
+    pr.jkr = jkr_for(pr.i, pr.j);
+  });
+}
+
 void DemSystem::compute_forces(int rebuild) {
-  if (rebuild < 0 ? nl_.needs_rebuild(p_.x, skin_) : rebuild == 1)
-    nl_.build(p_.x, p_.r, skin_, [this](Pair& pr) {
-      pr.kind = mats_.kind(p_.mat[pr.i], p_.mat[pr.j]);
-      pr.jkr = jkr_for(pr.i, pr.j);
-    });
+  if (rebuild < 0 ? nl_.needs_rebuild(p_.x, skin_) : rebuild == 1) rebuild_list();
   if (reference_)
     gather_pair_forces();
   else if (runs_parallel(static_cast<std::int64_t>(nl_.pairs().size())))
@@ -159,9 +163,9 @@ void DemSystem::compute_forces(int rebuild) {
   forces_ready_ = true;
 }
 
-// The parallel path: blocks of pairs, one per thread (pair_blocks.hpp), made again after every rebuild of
-// the list (and when the thread count or the particle count changes); the sums of the serial fast path.
-void DemSystem::accumulate_in_blocks() {
+// The blocks of pairs, one per thread (pair_blocks.hpp), made again after every rebuild of the list (and when
+// the thread count or the particle count changes).
+void DemSystem::ensure_blocks() {
   const auto nb = static_cast<std::size_t>(std::max(1, max_threads()));
   const auto& pairs = nl_.pairs();
   if (blocks_builds_ != nl_.builds() || blocks_.blocks() != nb || blocks_pairs_ != pairs.size() ||
@@ -170,7 +174,74 @@ void DemSystem::accumulate_in_blocks() {
     blocks_builds_ = nl_.builds();
     blocks_pairs_ = pairs.size();
   }
-  law_.accumulate_pairs_in_blocks(nl_.pairs(), p_, dt_, blocks_, pair_forces_);
+  pair_forces_.resize(pairs.size());
+}
+
+// Inside a parallel region, on every thread of its team: phase 1 (this thread's share of the crossing pairs),
+// a barrier, phase 2 of the blocks this thread takes (block b on thread b mod team size).
+void DemSystem::pair_phases() {
+  const auto tid = static_cast<std::size_t>(thread_id()), nth = static_cast<std::size_t>(team_size());
+  law_.crossing_forces(nl_.pairs(), p_, dt_, blocks_, tid, nth, pair_forces_);
+#pragma omp barrier
+  for (std::size_t b = tid; b < blocks_.blocks(); b += nth) law_.block_forces(nl_.pairs(), p_, dt_, blocks_, b, pair_forces_);
+}
+
+// The parallel path: the fast path's sums on blocks of pairs, bit for bit.
+void DemSystem::accumulate_in_blocks() {
+  ensure_blocks();
+#pragma omp parallel num_threads(static_cast<int>(blocks_.blocks()))
+  pair_phases();
+}
+
+// The fused parallel step (parallel_step): above kParallelThreshold pairs on several threads, for a list built
+// for the current particles, without an external force (called between the phases of a step).
+bool DemSystem::parallel_step_applies() const {
+  return !reference_ && !ext_ && nl_.built_for(p_.size()) &&
+         runs_parallel(static_cast<std::int64_t>(nl_.pairs().size()));
+}
+
+// step() in one parallel region: each thread kicks and drifts the particles of its blocks and tests them
+// against the skin; a barrier (the OR of the threads' flags); a rebuild of the list by one thread when a
+// particle moved beyond half the skin; the two phases of the pair blocks (one barrier); the closing kick of
+// each block's particles by the thread that summed their forces. With walls or gravity their forces and the
+// closing kick follow the region. The same operations per particle and pair as the serial step.
+void DemSystem::parallel_step() {
+  ensure_blocks();
+  const int nt = std::max(1, max_threads());
+  far_.assign(static_cast<std::size_t>(nt), ThreadFlag{});
+  const bool kick_inside = walls_.empty() && norm2(params_.gravity) == 0.0;
+  const double lim2 = 0.25 * skin_ * skin_;
+#pragma omp parallel num_threads(nt)
+  {
+    const auto tid = static_cast<std::size_t>(thread_id()), nth = static_cast<std::size_t>(team_size());
+    bool far = false;
+    for (std::size_t b = tid; b < blocks_.blocks(); b += nth)
+      for (std::uint32_t q = blocks_.first_particle[b]; q < blocks_.first_particle[b + 1]; ++q) {
+        kick(q);
+        p_.x[q] += dt_ * p_.v[q];
+        far = nl_.moved_beyond(q, p_.x[q], lim2) || far;
+      }
+    far_[tid].far = far;
+#pragma omp barrier
+    bool any = false;
+    for (std::size_t t = 0; t < nth; ++t) any = any || far_[t].far;
+    if (any) {
+#pragma omp single
+      {
+        rebuild_list();
+        ensure_blocks();
+      }
+    }
+    pair_phases();
+    if (kick_inside)
+      for (std::size_t b = tid; b < blocks_.blocks(); b += nth)
+        for (std::uint32_t q = blocks_.first_particle[b]; q < blocks_.first_particle[b + 1]; ++q) kick(q);
+  }
+  time_ += dt_;
+  ++step_;
+  if (kick_inside) return;
+  add_wall_and_body_forces();
+  parallel_for(static_cast<std::int64_t>(p_.size()), [&](std::int64_t q) { kick(q); });
 }
 
 void DemSystem::gather_pair_forces() {
@@ -197,22 +268,44 @@ void DemSystem::gather_pair_forces() {
 
 void DemSystem::step() {
   if (!forces_ready_) compute_forces();
-  const std::int64_t n = static_cast<std::int64_t>(p_.size());
-  // The neighbour list's rebuild test (NeighborList::needs_rebuild) in the drift loop, in parallel: the
-  // same test of the same positions, not a serial pass of its own (the reference twin: the serial pass).
-  const bool tracked = !reference_ && nl_.built_for(p_.size());
-  const double lim2 = 0.25 * skin_ * skin_;
-  auto kick_drift = [&](std::int64_t q) {
-    kick(q);
-    p_.x[q] += dt_ * p_.v[q];
-    return tracked && nl_.moved_beyond(static_cast<std::size_t>(q), p_.x[q], lim2);
-  };
-  const bool far = parallel_any(n, kick_drift);
-  time_ += dt_;
-  ++step_;
-  compute_forces(tracked ? (far ? 1 : 0) : -1);
-  parallel_for(n, [&](std::int64_t q) { kick(q); });
+  const int max = max_threads();
+  if (max > 1 && runs_parallel(static_cast<std::int64_t>(nl_.pairs().size()))) {
+    const int count = threads_.next(max);
+    const bool timed = threads_.measuring();
+    const auto wall0 = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+    if (count == max) {
+      advance();
+    } else {
+      const TeamSize one(count);
+      advance();
+    }
+    if (timed) threads_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
+  } else {
+    advance();
+  }
   if (step_ % 256 == 0) check_state();
+}
+
+void DemSystem::advance() {
+  if (parallel_step_applies()) {
+    parallel_step();
+  } else {
+    const std::int64_t n = static_cast<std::int64_t>(p_.size());
+    // The neighbour list's rebuild test (NeighborList::needs_rebuild) in the drift loop, in parallel: the
+    // same test of the same positions, not a serial pass of its own (the reference twin: the serial pass).
+    const bool tracked = !reference_ && nl_.built_for(p_.size());
+    const double lim2 = 0.25 * skin_ * skin_;
+    auto kick_drift = [&](std::int64_t q) {
+      kick(q);
+      p_.x[q] += dt_ * p_.v[q];
+      return tracked && nl_.moved_beyond(static_cast<std::size_t>(q), p_.x[q], lim2);
+    };
+    const bool far = parallel_any(n, kick_drift);
+    time_ += dt_;
+    ++step_;
+    compute_forces(tracked ? (far ? 1 : 0) : -1);
+    parallel_for(n, [&](std::int64_t q) { kick(q); });
+  }
 }
 
 void DemSystem::check_state() const {

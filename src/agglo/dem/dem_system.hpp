@@ -1,8 +1,9 @@
 #pragma once
 // DEM engine: particles + adhesive contacts + optional non-contact forces, advanced by the
 // velocity-Verlet scheme (kick-drift-kick, symplectic for conservative forces; velocity-dependent
-// contact forces use the half-step velocity). Pair forces are computed in parallel into a per-pair
-// buffer and gathered per particle in a fixed order: results do not depend on the thread count.
+// contact forces use the half-step velocity). Pair forces are summed per particle in the order of the
+// pair list on any number of threads (blocks of pairs, contact/pair_blocks.hpp): results do not depend
+// on the thread count. On several threads a step is one parallel region (parallel_step).
 #include <memory>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "agglo/dem/particles.hpp"
 #include "agglo/dem/wall.hpp"
 #include "agglo/core/error.hpp"
+#include "agglo/core/thread_choice.hpp"
 
 namespace agglo::dem {
 
@@ -64,6 +66,9 @@ class DemSystem {
   void set_reference_kernel(bool on) { reference_ = on; }
   bool reference_kernel() const { return reference_; }
 
+  // One step. With more than kParallelThreshold pairs and several OpenMP threads, the step's thread count (all
+  // or one) is chosen by timed probes (core/thread_choice.hpp): the bits are those of any count, the wall time
+  // that of the faster one on this machine at this time.
   void step();
   void run(long nsteps) {
     for (long s = 0; s < nsteps; ++s) step();
@@ -79,6 +84,7 @@ class DemSystem {
   Particles& particles() { return p_; }
   const std::vector<Pair>& pairs() const { return nl_.pairs(); }
   const NeighborList& neighbors() const { return nl_; }
+  const ThreadChoice& thread_choice() const { return threads_; }
 
   // Diagnostics.
   double kinetic_energy() const;                // translational + rotational [J]
@@ -116,6 +122,12 @@ class DemSystem {
   void kick(std::int64_t q);
   void gather_pair_forces();  // the reference path: per-pair buffer, then a gather per particle
   void accumulate_in_blocks();  // the parallel path: the fast path's sums on blocks of pairs
+  void rebuild_list();          // the neighbour list built again (pair kinds and JKR constants of new pairs)
+  void ensure_blocks();         // blocks_ (and the crossing buffer) for the current list and thread count
+  void pair_phases();           // inside a parallel region: the two phases of the blocks on this thread
+  bool parallel_step_applies() const;
+  void parallel_step();  // step() as one parallel region (no external force)
+  void advance();        // step() without the choice of the thread count and the state check
 
   Particles p_;
   DemParams params_;
@@ -134,6 +146,12 @@ class DemSystem {
   long step_ = 0;
   bool forces_ready_ = false;
   bool reference_ = false;
+  // Per thread of parallel_step: whether one of its particles moved beyond half the skin (a cache line each).
+  struct alignas(64) ThreadFlag {
+    bool far = false;
+  };
+  std::vector<ThreadFlag> far_;
+  ThreadChoice threads_;        // thread count of the steps (wall time only)
   contact::PairBlocks blocks_;  // of the parallel path, for the list of build blocks_builds_ (-1: none)
   long blocks_builds_ = -1;
   std::size_t blocks_pairs_ = 0;

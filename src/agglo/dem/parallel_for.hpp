@@ -30,6 +30,40 @@ inline int max_threads() {
 #endif
 }
 
+// This thread's number in its team and the team's size (0 and 1 outside a parallel region or without OpenMP).
+inline int thread_id() {
+#ifdef _OPENMP
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+inline int team_size() {
+#ifdef _OPENMP
+  return omp_get_num_threads();
+#else
+  return 1;
+#endif
+}
+
+// The thread count of the parallel regions this thread starts, set to `count` for the guard's lifetime
+// (omp_set_num_threads; restored by the destructor, also when an exception leaves the scope).
+class TeamSize {
+ public:
+  explicit TeamSize(int count) : saved_(max_threads()) { set(count); }
+  ~TeamSize() { set(saved_); }
+  TeamSize(const TeamSize&) = delete;
+  TeamSize& operator=(const TeamSize&) = delete;
+
+ private:
+  static void set([[maybe_unused]] int count) {
+#ifdef _OPENMP
+    omp_set_num_threads(count);
+#endif
+  }
+  int saved_;
+};
+
 template <class F>
 void parallel_for(std::int64_t n, const F& f) {
   if (n > kParallelThreshold) {

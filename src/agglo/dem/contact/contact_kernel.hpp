@@ -23,10 +23,16 @@ class ContactKernel {
   // force goes to i (+) and j (-) as k grows, the order in which the per-pair buffer is gathered, so
   // the sums are bit for bit those of evaluate_pairs + gather (DemSystem), without the buffer.
   virtual void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const = 0;
-  // The same sums on blocks.blocks() OpenMP threads (pair_blocks.hpp: the crossing pairs' forces go through
-  // `crossing`, resized to pairs.size()), bit for bit those of accumulate_pairs.
-  virtual void accumulate_pairs_in_blocks(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& blocks,
-                                          std::vector<PairForce>& crossing) const = 0;
+  // The same sums on blocks (pair_blocks.hpp), in two phases with a barrier between them, bit for bit those
+  // of accumulate_pairs (ContactLaw::accumulate_pairs_in_blocks, DemSystem::step). Phase 1: the forces of part
+  // `part` of `parts` equal parts of blocks.crossing into crossing[k] (sized pairs.size(); updates those pairs'
+  // states; reads no force or torque).
+  virtual void crossing_forces(std::vector<Pair>& pairs, const Particles& p, double dt, const PairBlocks& blocks,
+                               std::size_t part, std::size_t parts, std::vector<PairForce>& crossing) const = 0;
+  // Phase 2, block b: its particles' forces and torques zeroed, the incoming crossing forces added, then its own
+  // pairs in order (a crossing pair's buffered force to its i only); touches only block b's particles and pairs.
+  virtual void block_forces(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& blocks, std::size_t b,
+                            const std::vector<PairForce>& crossing) const = 0;
   // One pair of material pair `kind` (tests and diagnostics; a virtual call per pair).
   virtual PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
                                   std::uint32_t kind) const = 0;

@@ -52,12 +52,9 @@ class PairKernel final : public ContactKernel {
     });
   }
 
-  // Serially in pair order, in chunks of kRadiusChunk pairs, two passes per chunk: first the overlap, the
-  // hysteresis and the contact radius of every pair (update_radii), then the rest of the law with that radius
-  // (Models::force_at_radius) and the sums. The same operations on the same operands as Models::force, pair
-  // by pair, so the same bits; the contact radii of several pairs are solved together, so that the core overlaps
-  // their Newton iterations (each a dependent chain of divisions). flatten: the sub-model calls are inlined
-  // into the loop (without it GCC keeps the contact radius and the tangential force out of line).
+  // Serially in pair order, in chunks of kRadiusChunk pairs, two passes per chunk (accumulate_range). flatten:
+  // the sub-model calls are inlined into the loop (without it GCC keeps the contact radius and the tangential
+  // force out of line).
   [[gnu::flatten]] void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
     std::fill(p.f.begin(), p.f.end(), Vec3{});
     std::fill(p.t.begin(), p.t.end(), Vec3{});
@@ -65,11 +62,29 @@ class PairKernel final : public ContactKernel {
       for (Pair& pr : pairs) add_pair_force(pr, pair_force(pr, p, dt), p);
       return;
     }
-    for (std::size_t k0 = 0; k0 < pairs.size(); k0 += kRadiusChunk) {
-      const std::size_t k1 = std::min(pairs.size(), k0 + kRadiusChunk);
-      update_radii(pairs, p, k0, k1);
-      for (std::size_t k = k0; k < k1; ++k) {
+    accumulate_range<false>(pairs, p, dt, 0, pairs.size(), 0, nullptr);
+  }
+
+  // Pairs [k0, k1) added to their particles in pair order, in chunks of kRadiusChunk pairs, two passes per chunk:
+  // first the overlap, the hysteresis and the contact radius of every pair (update_radii), then the rest of the
+  // law with that radius (Models::force_at_radius) and the sums. The same operations on the same operands as
+  // Models::force, pair by pair, so the same bits; the contact radii of several pairs are solved together, so
+  // that the core overlaps their Newton iterations (each a dependent chain of divisions). A pair whose j is
+  // >= j_end (a crossing pair of a block, pair_blocks.hpp; only with Crossing) was evaluated before: its force
+  // crossing[k] goes to i.
+  template <bool Crossing>
+  [[gnu::always_inline]] void accumulate_range(std::vector<Pair>& pairs, Particles& p, double dt, std::size_t k0,
+                                               std::size_t k1, std::uint32_t j_end, const PairForce* crossing) const {
+    for (std::size_t c0 = k0; c0 < k1; c0 += kRadiusChunk) {
+      const std::size_t c1 = std::min(k1, c0 + kRadiusChunk);
+      update_radii<Crossing>(pairs, p, c0, c1, j_end);
+      for (std::size_t k = c0; k < c1; ++k) {
         Pair& pr = pairs[k];
+        if (Crossing && pr.j >= j_end) {
+          p.f[pr.i] += crossing[k].f_on_i;
+          p.t[pr.i] += crossing[k].t_on_i;
+          continue;
+        }
         const PairKinematics kin{p.x[pr.i], p.x[pr.j], p.v[pr.i], p.v[pr.j], p.w[pr.i], p.w[pr.j],
                                  p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
         add_pair_force(pr, models_[pr.kind].force_at_radius(pr.jkr, kin, pr.state, dt), p);
@@ -77,15 +92,18 @@ class PairKernel final : public ContactKernel {
     }
   }
 
-  // The first pass of accumulate_pairs over pairs [k0, k1): step 1 of every pair, then the contact radii of
-  // the engaged ones, Normal::kLanes at a time where the normal model can (Normal::contact_radii).
+  // The first pass of accumulate_range over pairs [k0, k1) (but, with Crossing, those with j >= j_end): step 1
+  // of every pair, then the contact radii of the engaged ones, Normal::kLanes at a time where the normal model can
+  // (Normal::contact_radii).
+  template <bool Crossing>
   [[gnu::always_inline]] void update_radii(std::vector<Pair>& pairs, const Particles& p, std::size_t k0,
-                                           std::size_t k1) const {
+                                           std::size_t k1, std::uint32_t j_end) const {
     std::array<std::size_t, kRadiusChunk> engaged;
     std::array<double, kRadiusChunk> delta;
     std::size_t ne = 0;
     for (std::size_t k = k0; k < k1; ++k) {
       Pair& pr = pairs[k];
+      if (Crossing && pr.j >= j_end) continue;
       const double dk = p.r[pr.i] + p.r[pr.j] - norm(p.x[pr.j] - p.x[pr.i]);
       if (models_[pr.kind].engaged(pr.jkr, dk, pr.state)) {
         engaged[ne] = k;
@@ -114,42 +132,27 @@ class PairKernel final : public ContactKernel {
     }
   }
 
-  // Two phases per block (pair_blocks.hpp), block b on thread b of the team (static schedule, chunk 1, the
-  // same thread in both loops): zero the owned particles and buffer the crossing pairs' forces; then add
-  // the incoming crossing forces, and the own pairs in order (a crossing pair's force only to its i).
-  void accumulate_pairs_in_blocks(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& b,
-                                  std::vector<PairForce>& crossing) const override {
-    crossing.resize(pairs.size());
-    const auto nb = static_cast<std::int64_t>(b.blocks());
-#pragma omp parallel num_threads(static_cast<int>(nb))
-    {
-#pragma omp for schedule(static, 1)
-      for (std::int64_t t = 0; t < nb; ++t) {
-        for (std::uint32_t q = b.first_particle[t]; q < b.first_particle[t + 1]; ++q) p.f[q] = p.t[q] = Vec3{};
-        for (std::size_t k : b.crossing_out[t]) crossing[k] = pair_force(pairs[k], p, dt);
-      }
-#pragma omp for schedule(static, 1)
-      for (std::int64_t t = 0; t < nb; ++t) {
-        for (std::size_t k : b.crossing_in[t]) {
-          p.f[pairs[k].j] -= crossing[k].f_on_i;
-          p.t[pairs[k].j] += crossing[k].t_on_j;
-        }
-        const std::uint32_t end = b.first_particle[t + 1];
-        for (std::size_t k = b.first_pair[t]; k < b.first_pair[t + 1]; ++k) {
-          Pair& pr = pairs[k];
-          if (pr.j >= end) {
-            p.f[pr.i] += crossing[k].f_on_i;
-            p.t[pr.i] += crossing[k].t_on_i;
-            continue;
-          }
-          const PairForce out = pair_force(pr, p, dt);
-          p.f[pr.i] += out.f_on_i;
-          p.t[pr.i] += out.t_on_i;
-          p.f[pr.j] -= out.f_on_i;
-          p.t[pr.j] += out.t_on_j;
-        }
-      }
+  // Phase 1 of the blocks (contact_kernel.hpp): the crossing pairs of part `part`, one pair at a time.
+  [[gnu::flatten]] void crossing_forces(std::vector<Pair>& pairs, const Particles& p, double dt, const PairBlocks& b,
+                                        std::size_t part, std::size_t parts,
+                                        std::vector<PairForce>& crossing) const override {
+    const std::size_t n = b.crossing.size();
+    for (std::size_t c = part * n / parts; c < (part + 1) * n / parts; ++c) {
+      const std::size_t k = b.crossing[c];
+      crossing[k] = pair_force(pairs[k], p, dt);
     }
+  }
+
+  // Phase 2, block t: the own pairs in the chunks of the one-thread loop (accumulate_range).
+  [[gnu::flatten]] void block_forces(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& b,
+                                     std::size_t t, const std::vector<PairForce>& crossing) const override {
+    const std::uint32_t end = b.first_particle[t + 1];
+    for (std::uint32_t q = b.first_particle[t]; q < end; ++q) p.f[q] = p.t[q] = Vec3{};
+    for (std::size_t k : b.crossing_in[t]) {
+      p.f[pairs[k].j] -= crossing[k].f_on_i;
+      p.t[pairs[k].j] += crossing[k].t_on_j;
+    }
+    accumulate_range<true>(pairs, p, dt, b.first_pair[t], b.first_pair[t + 1], end, crossing.data());
   }
 
   PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,

@@ -1,0 +1,61 @@
+// The step's thread count on a shared machine (core/thread_choice.hpp), on a synthetic machine: the count
+// of every step of a long run, while two threads are first slower (a busy machine) and then faster than
+// one; and AGGLO_THREAD_PROBE=off. (What the DEM does with it, bit for bit: test_dem_reference_twin.cpp.)
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <vector>
+
+#include "agglo/core/thread_choice.hpp"
+
+using agglo::ThreadChoice;
+
+namespace {
+
+// Lengths of the runs of equal counts over `steps` steps, each taking `two` seconds on 2 threads up to step
+// `change` and `two_after` after it, 1 s on one thread; counts[k] is the count of run k.
+std::vector<std::uint64_t> runs_of(ThreadChoice& tc, std::uint64_t steps, double two, std::uint64_t change,
+                                   double two_after, std::vector<int>& counts) {
+  std::vector<std::uint64_t> len;
+  for (std::uint64_t s = 0; s < steps; ++s) {
+    const int t = tc.next(2);
+    if (counts.empty() || counts.back() != t) {
+      counts.push_back(t);
+      len.push_back(0);
+    }
+    ++len.back();
+    tc.record(t == 1 ? 1.0 : s < change ? two : two_after);
+  }
+  return len;
+}
+
+}  // namespace
+
+TEST(ThreadChoice, RunsTheFasterCountBetweenProbes) {
+  constexpr std::uint64_t P = ThreadChoice::kProbeSteps, S = ThreadChoice::kFirstStretch;
+  ThreadChoice tc;
+  std::vector<int> counts;
+  // busy until step 2P + S + 2P + 4S (two threads 1.5x slower), then free (0.6x): probe (2 then 1), one
+  // thread for S, probe, one thread for 4S (the same choice), probe: two threads now, for S again
+  const std::uint64_t busy = 2 * P + S + 2 * P + 4 * S;
+  const auto len = runs_of(tc, busy + 2 * P + S, 1.5, busy, 0.6, counts);
+  const std::vector<int> want_counts{2, 1, 2, 1, 2, 1, 2};
+  const std::vector<std::uint64_t> want_len{P, P + S, P, P + 4 * S, P, P, S};
+  EXPECT_EQ(counts, want_counts);
+  EXPECT_EQ(len, want_len);
+  EXPECT_EQ(tc.steps_at_one(), 3 * P + 5 * S);
+  EXPECT_TRUE(tc.measuring());
+}
+
+TEST(ThreadChoice, NothingTimedOnOneThreadOrWhenOff) {
+  ThreadChoice one;
+  EXPECT_EQ(one.next(1), 1);
+  EXPECT_FALSE(one.measuring());
+  setenv("AGGLO_THREAD_PROBE", "off", 1);
+  ThreadChoice fixed;
+  std::vector<int> counts;
+  runs_of(fixed, 4 * ThreadChoice::kProbeSteps, 1.5, 0, 1.5, counts);
+  unsetenv("AGGLO_THREAD_PROBE");
+  EXPECT_EQ(counts, std::vector<int>{2});  // always the whole team
+  EXPECT_FALSE(fixed.measuring());
+}
