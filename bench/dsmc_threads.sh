@@ -4,7 +4,7 @@
 # each shortened to T, ROUNDS interleaved rounds of
 #   j1        --threads 1
 #   j2        --threads 2 (agglo's default: passive OpenMP waits, apps/agglo/omp_wait/omp_wait.cpp, and the
-#             step's thread count chosen by timed probes, src/agglo/acoustics/thread_choice.hpp)
+#             step's thread count chosen by timed probes, src/agglo/core/thread_choice.hpp)
 #   j2_fixed  --threads 2 with AGGLO_THREAD_PROBE=off: two threads at every step (agglo before the probes)
 #   j2_spin   --threads 2 with GOMP_SPINCOUNT=300000, libgomp's own default (agglo before passive waits)
 #   V_before  variant V (j1, j2, ...) of the agglo at BEFORE_AGGLO (another build, e.g. of the previous

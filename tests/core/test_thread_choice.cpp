@@ -51,6 +51,11 @@ TEST(ThreadChoice, NothingTimedOnOneThreadOrWhenOff) {
   ThreadChoice one;
   EXPECT_EQ(one.next(1), 1);
   EXPECT_FALSE(one.measuring());
+  ThreadChoice restarted;  // a new max count starts the probes again, at that count
+  std::vector<int> seen;
+  runs_of(restarted, ThreadChoice::kProbeSteps + 1, 1.5, 0, 1.5, seen);
+  EXPECT_EQ(restarted.next(3), 3);
+  EXPECT_TRUE(restarted.measuring());
   setenv("AGGLO_THREAD_PROBE", "off", 1);
   ThreadChoice fixed;
   std::vector<int> counts;

@@ -23,7 +23,7 @@
 #include "agglo/acoustics/samples.hpp"
 #include "agglo/acoustics/populations.hpp"
 #include "agglo/acoustics/initial_placement.hpp"
-#include "agglo/acoustics/thread_choice.hpp"
+#include "agglo/core/thread_choice.hpp"
 
 namespace agglo::acoustics {
 

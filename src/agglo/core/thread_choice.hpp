@@ -1,6 +1,6 @@
 #pragma once
 // Thread count of a parallel time step on a shared machine (issue 27 item 3: threads help, never hurt).
-// For an engine whose step gives the same bits at any thread count (the DEM: dem_system.hpp), only the
+// For an engine whose step gives the same bits at any thread count (the DEM and the DSMC), only the
 // wall time depends on the count: on a machine whose cores are busy with other work, T threads that meet
 // at a step's barriers can take longer than one thread alone. So both are timed, in turn:
 //   probe   kProbeSteps steps at T threads, then kProbeSteps at one thread (wall time, steady clock);
@@ -10,8 +10,8 @@
 // The cost is the probes of the slower count: kProbeSteps of every kFirstStretch + 2 kProbeSteps steps at
 // first (3 %), of every kMaxStretch + 2 kProbeSteps later (0.2 %), each slower by the ratio of the two
 // counts' step times. With T = 1, or `AGGLO_THREAD_PROBE=off` in the environment (always T: for measuring
-// the fixed count), nothing is timed. (The same rule as acoustics::ThreadChoice of the DSMC step, which can
-// become this class.)
+// the fixed count), nothing is timed. Used by the DSMC step
+// (acoustics/engine.hpp) and the DEM step (dem/dem_system.hpp).
 #include <cstdint>
 
 namespace agglo {
