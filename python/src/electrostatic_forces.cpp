@@ -189,6 +189,7 @@ max_steps, max_memory : number, str or None
     through an octree; default "dense"),
     preconditioner ("none", "contact_low", or the measuring tools "coarse", "pair", "contact";
     spectral: right preconditioner of GMRES, contact_low the fast one; default "none"),
+    preconditioner_steps (int, contact_low: its Neumann steps, 1-16; default 2),
     patches_per_sphere (int, bem; default 2000),
     tolerance (bem, spectral: relative GMRES tolerance; default 1e-6),
     max_iterations (int, most GMRES iterations; default 200),

@@ -125,7 +125,8 @@ std::string option_toml_value(const std::string& name, const py::handle& v) {
 const std::vector<const settings::Setting*>& option_settings() {
   const auto& k = es::es_keys();
   static const std::vector<const settings::Setting*> s{
-      &k.max_degree, &k.target_accuracy, &k.max_degree_limit, &k.far_field, &k.preconditioner, &k.patches_per_sphere, &k.tolerance,
+      &k.max_degree, &k.target_accuracy, &k.max_degree_limit, &k.far_field, &k.preconditioner, &k.preconditioner_steps,
+      &k.patches_per_sphere, &k.tolerance,
       &k.max_iterations, &k.matvec, &k.fmm_order, &k.fmm_leaf_size};
   return s;
 }

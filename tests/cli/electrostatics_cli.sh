@@ -45,6 +45,7 @@ expect_bad unknown_key  's/^min_gap = 0.0/min_gap = 0.0\nmin_gapp = 0.1/' "min_g
 expect_bad medium       's/^min_gap = 0.0/min_gap = 0.0\nmedium_permittivity = 0.0/' "medium_permittivity"
 expect_bad solver_name  's/solver = "spectral"/solver = "magic"/' "solver"
 expect_bad precond_name 's/solver = "spectral"/solver = "spectral"\npreconditioner = "ilu"/' "preconditioner"
+expect_bad precond_steps 's/solver = "spectral"/solver = "spectral"\npreconditioner_steps = 0/' "preconditioner_steps"
 
 # electrostatics.preconditioner reaches the solver: the seed's tetrahedron (kappa_p = 15, touching
 # spheres) takes fewer GMRES iterations with contact_low (16 and 12 measured), the same energy to the
@@ -61,6 +62,13 @@ energy() { sed -n 's/^  "energy_J": \(.*\)$/\1/p' "$1/energy.json"; }
 awk -v a="$(energy "$TMP/pc_none")" -v b="$(energy "$TMP/pc_contact_low")" \
   'BEGIN { d = (a - b) / a; if (d < 0) d = -d; exit !(d < 1e-5) }' || fail "contact_low changed the energy beyond 1e-5"
 grep -q "preconditioner = 'contact_low'" "$TMP/pc_contact_low/config.resolved.toml" || fail "resolved config lacks the key"
+# electrostatics.preconditioner_steps reaches it too: another iterate (iterations or energy differ from two steps)
+"$AGGLO" -q electrostatics "$SRC/cases/electrostatics_tetrahedron.toml" --out "$TMP/pc_steps4" \
+  --set electrostatics.preconditioner=contact_low --set electrostatics.preconditioner_steps=4 > /dev/null 2>&1 ||
+  fail "preconditioner_steps = 4 failed"
+[ "$(iterations "$TMP/pc_steps4") $(energy "$TMP/pc_steps4")" != "$it_low $(energy "$TMP/pc_contact_low")" ] ||
+  fail "preconditioner_steps = 4 gave the iterations and energy of two steps"
+grep -q "preconditioner_steps = 4" "$TMP/pc_steps4/config.resolved.toml" || fail "resolved config lacks preconditioner_steps"
 
 # overlap only after shrinking is fine with min_gap = 0.01 when centres are 2.0 r apart? No:
 # touching spheres (distance 2r) are separated by the regularisation and must be accepted.

@@ -28,13 +28,14 @@ TEST(EsConfig, DefaultsAreWrittenBack) {
     EXPECT_NE(txt.find(key), std::string::npos) << key;
   // electrostatics.preconditioner is read only when set: a case that does not name it resolves as before
   EXPECT_EQ(txt.find("preconditioner"), std::string::npos) << txt;
+  EXPECT_EQ(ec.options.contact_low_steps, kContactLowSteps);  // and so is preconditioner_steps
 }
 
 TEST(EsConfig, ValuesAndRangeErrors) {
   auto cfg = Config::from_string(
       "[electrostatics]\nsolver='coulomb'\nmedium_permittivity=2.5\nmin_gap=0\nexternal_field=[1,2,3]\n"
       "max_degree=30\nmatvec='direct'\nupdate_interval=10\nforce_scale_chi=true\nfar_field='fmm'\n"
-      "preconditioner='contact_low'\n");
+      "preconditioner='contact_low'\npreconditioner_steps=3\n");
   auto ec = parse_electrostatics(cfg.root().section("electrostatics"));
   EXPECT_EQ(ec.options.solver, "coulomb");
   EXPECT_EQ(ec.medium_permittivity, 2.5);
@@ -46,8 +47,10 @@ TEST(EsConfig, ValuesAndRangeErrors) {
   EXPECT_TRUE(ec.force_scale_chi);
   EXPECT_EQ(ec.options.far_field, "fmm");
   EXPECT_EQ(ec.options.preconditioner, "contact_low");
+  EXPECT_EQ(ec.options.contact_low_steps, 3);
   for (const char* bad : {"medium_permittivity=0", "medium_permittivity=-1", "medium_permittivity=1e300", "min_gap=-0.1",
-                          "update_fraction=0", "update_fraction=1.5", "solver='fast'", "matvec='gpu'", "far_field='tree'", "preconditioner='ilu'", "tolerance=0",
+                          "update_fraction=0", "update_fraction=1.5", "solver='fast'", "matvec='gpu'", "far_field='tree'", "preconditioner='ilu'", "preconditioner_steps=0",
+                          "preconditioner_steps=17", "tolerance=0",
                           "max_degree=-1", "max_degree=100", "target_accuracy=2"}) {
     auto c = Config::from_string(std::string("[electrostatics]\n") + bad + "\n", "case.toml");
     try {

@@ -165,6 +165,12 @@ def test_preconditioner_reaches_the_solver(agglo_module):
     assert low.stats["iterations"] <= none.stats["iterations"] - 2, (low.stats, none.stats)
     scale = np.max(np.linalg.norm(none.forces, axis=1))
     assert np.max(np.linalg.norm(low.forces - none.forces, axis=1)) < 1e-5 * scale
+    # preconditioner_steps (electrostatics.preconditioner_steps) reaches it as well: another iterate
+    four = agglo_module.electrostatic_forces(*args, min_gap=0.01, preconditioner="contact_low", preconditioner_steps=4)
+    assert (four.stats["iterations"], four.energy) != (low.stats["iterations"], low.energy)
+    assert np.max(np.linalg.norm(four.forces - none.forces, axis=1)) < 1e-5 * scale
+    with pytest.raises(config_error(agglo_module), match="preconditioner_steps"):
+        agglo_module.electrostatic_forces(*args, min_gap=0.01, preconditioner_steps=0)
 
 
 def test_touching_spheres_need_min_gap(agglo_module):
@@ -206,7 +212,7 @@ GOOD = dict(positions=[[0.0, 0.0, 0.0], [0.0, 0.0, 30e-6]], radii=[10e-6, 10e-6]
     (dict(preconditioner="ilu"), "argument 'preconditioner' = \"ilu\""),
     (dict(matvec=[1]), "argument 'matvec' has type list (must be a number or a string)"),
     (dict(degree=10), "unknown option 'degree' (allowed: max_degree, target_accuracy, max_degree_limit, "
-                      "far_field, preconditioner, patches_per_sphere, tolerance, max_iterations, matvec, fmm_order, fmm_leaf_size)"),
+                      "far_field, preconditioner, preconditioner_steps, patches_per_sphere, tolerance, max_iterations, matvec, fmm_order, fmm_leaf_size)"),
     (dict(threads=-1), "argument 'threads' = -1 (must be a whole number >= 0"),
     # The physical ranges of the CLI's [[particles]] and [electrostatics] keys (issue 23 item 10: all ran).
     (dict(radii=10.0), "radii[0] = 10 m (must be in (0, 0.1] m, the range of particles.radius)"),

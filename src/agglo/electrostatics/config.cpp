@@ -28,6 +28,7 @@ EsConfig parse_electrostatics(const ConfigSection& s) {
   o.max_degree_limit = static_cast<int>(k.max_degree_limit.read(s));
   o.far_field = k.far_field.read(s);
   if (k.preconditioner.present(s)) o.preconditioner = k.preconditioner.read(s);
+  if (k.preconditioner_steps.present(s)) o.contact_low_steps = static_cast<int>(k.preconditioner_steps.read(s));
   o.patches_per_sphere = static_cast<int>(k.patches_per_sphere.read(s));
   o.tolerance = k.tolerance.read(s);
   o.max_iterations = static_cast<int>(k.max_iterations.read(s));

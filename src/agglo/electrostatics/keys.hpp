@@ -67,6 +67,14 @@ struct SolverKeys {
        "(docs/electrostatics.md)"},
       kPreconditionerNames[0],
       std::vector<std::string_view>(kPreconditionerNames.begin(), kPreconditionerNames.end())};
+  // Read only when set, as preconditioner.
+  settings::Integer preconditioner_steps{
+      t,
+      {"electrostatics.preconditioner_steps", "",
+       "spectral, contact_low: Neumann steps of the preconditioner (3 saves an iteration at kappa_p = 15)"},
+      kContactLowSteps,
+      1,
+      16};
   settings::Integer patches_per_sphere{t,
                                        {"electrostatics.patches_per_sphere", "", "bem: surface patches per sphere"},
                                        2000,

@@ -65,8 +65,8 @@ constexpr int kContactLowOrder = 2;
 // iterations than one at any size, and the warm start's guess (I + X) beta_prev is then P beta_prev up to
 // X^3 (with one step, up to X^2). docs/electrostatics.md, "Seventh session". Three (SolverOptions::
 // contact_low_steps): one iteration fewer on the kappa_p = 15 acceptance rows at L = 43, 44, 47 (8 against 9),
-// the same 4 on kappa_p = 2.5's, whose solve a third step makes dearer ("Eighth session").
-constexpr int kContactLowSteps = 2;
+// the same 4 on kappa_p = 2.5's, whose solve a third step makes dearer ("Eighth session"). The default,
+// kContactLowSteps, is declared in solver.hpp.
 
 // A block of matvec_M's pair products (SpectralSolver::index_blocks): pairs [begin, end) of the solver's
 // pairs, whether it has the work to run in parallel (whether or not threads > 1), and its spheres
@@ -751,7 +751,7 @@ void SpectralSolver::precondition(const double* u, double* z) {
 #pragma omp parallel for schedule(static) if (std::size_t(n) >= kSpectralParallelLength)
   for (std::ptrdiff_t c = 0; c < n; ++c) z[c] = u[c];
   if (pc_contact_) contact_inverse(u, z);
-  const int steps = opt_.contact_low_steps > 0 ? opt_.contact_low_steps : kContactLowSteps;
+  const int steps = opt_.contact_low_steps;
   for (int k = 0; pc_contact_low_ && k < steps; ++k) apply_contact_low(z, u, z, -1.0);
   for (std::size_t q : matched_) pair_block_inverse(pairs_[q], u, z);
   if (coarse_) coarse_inverse(u, z);
