@@ -73,6 +73,10 @@ run sectional partmc_additive --set time.end=150 --set "output.psd_times=[0.0,15
 # The binned selection: a shortened DSMC run of the Brownian case (the case sets it), and the acoustic
 # baseline with it (into seed002_baseline_binned-acoustic; the default run's folder is set aside meanwhile).
 run acoustic partmc_brownian --set population.0.samples=2000 --set time.end=3600 --set "output.psd_times=[0.0,3600.0]"
+# PartMC's constant and additive kernels through the DSMC (binned selection, no motion), whole runs at 2000
+# samples (0.02 s of CPU each): their outputs were in no regression run.
+run acoustic partmc_constant --set population.0.samples=2000
+run acoustic partmc_additive --set population.0.samples=2000
 mv "$O/seed002_baseline-acoustic" "$O/.nanbu" 2>/dev/null
 run acoustic seed002_baseline --set time.selection=binned --set time.end=0.02 --set "output.snapshot_times=[0.0,0.01]" --set "output.psd_times=[0.0,0.02]"
 rm -rf "$O/seed002_baseline_binned-acoustic"
