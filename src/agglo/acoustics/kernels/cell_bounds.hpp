@@ -38,7 +38,8 @@ struct CellBounds {
   bool need_cbar = false;    // track cbar_max (Fuchs only)
   void include(const SampleSet& p, std::size_t i, const Gas& gas);
   // include(p, idx[members[k]], gas) for k = 0 .. n-1 in that order, bit for bit (the binned selection's
-  // bounds of a whole group): one loop with the maxima in registers instead of a call per sample.
+  // bounds of a whole group): one loop with the maxima in registers instead of a call per sample (both are
+  // one function, cell_bounds.cpp).
   void include_all(const SampleSet& p, const std::uint32_t* idx, const std::uint32_t* members, std::size_t n,
                    const Gas& gas);
   void finalize() { speed_dev_max = std::sqrt(speed_dev2_max); }
