@@ -1,7 +1,6 @@
 #include "agglo/acoustics/engine.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <exception>
 
@@ -423,9 +422,7 @@ void Engine::step() {
   GroupReuse reuse = GroupReuse::rebuild;
   // The thread count changes only the wall time (threads_: one thread where T were slower here).
   const bool parallel = n >= kParallelMinSamples;
-  const int nt = parallel ? threads_.next(omp_get_max_threads()) : 1;
-  const bool timed = parallel && threads_.measuring();
-  const auto wall0 = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+  const int nt = parallel ? threads_.begin(omp_get_max_threads()) : 1;
   const Resort resort = prepare_step(move, nt);
 #pragma omp parallel num_threads(nt) if (parallel)
   {
@@ -472,7 +469,7 @@ void Engine::step() {
 #pragma omp barrier
     if (!serial_error) collide_pass(ctx, reuse, errors, thread, team);
   }
-  if (timed) threads_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
+  if (parallel) threads_.end();
   if (serial_error) std::rethrow_exception(serial_error);
   for (int c = 0; c < nc; ++c)
     if (!errors[static_cast<std::size_t>(c)].empty()) throw NumericalError(errors[static_cast<std::size_t>(c)]);

@@ -25,6 +25,16 @@ int ThreadChoice::next(int max_threads) {
   return count;
 }
 
+int ThreadChoice::begin(int max_threads) {
+  const int count = next(max_threads);
+  if (measuring()) began_ = std::chrono::steady_clock::now();
+  return count;
+}
+
+void ThreadChoice::end() {
+  if (measuring()) record(std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count());
+}
+
 void ThreadChoice::record(double seconds) {
   if (!measuring()) return;
   if (phase_ == Phase::probe_many) wall_many_ += seconds;

@@ -12,6 +12,7 @@
 // counts' step times. With T = 1, or `AGGLO_THREAD_PROBE=off` in the environment (always T: for measuring
 // the fixed count), nothing is timed. Used by the DSMC step
 // (acoustics/engine.hpp) and the DEM step (dem/dem_system.hpp).
+#include <chrono>
 #include <cstdint>
 
 namespace agglo {
@@ -26,6 +27,10 @@ class ThreadChoice {
   void record(double seconds);
   // Whether record() wants the step's wall time (false when nothing is compared).
   bool measuring() const { return max_ > 1 && !fixed_; }
+  // next() with the step's clock: begin() before the step, end() after it records its wall time when
+  // measuring (what the engines call; next and record are the parts, driven by the tests' synthetic times).
+  int begin(int max_threads);
+  void end();
   std::uint64_t steps_at_max() const { return at_max_; }  // steps taken with max_threads (> 1)
   std::uint64_t steps_at_one() const { return at_one_; }  // steps taken with one thread instead
 
@@ -38,6 +43,7 @@ class ThreadChoice {
   std::uint64_t left_ = 0, stretch_ = kFirstStretch;  // steps left in the phase; length of the next run
   double wall_many_ = 0.0, wall_one_ = 0.0;           // the probes' wall times [s]
   std::uint64_t at_max_ = 0, at_one_ = 0;
+  std::chrono::steady_clock::time_point began_{};  // begin()'s time when measuring
 };
 
 }  // namespace agglo

@@ -1,7 +1,6 @@
 #include "agglo/dem/dem_system.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -270,16 +269,9 @@ void DemSystem::step() {
   if (!forces_ready_) compute_forces();
   const int max = max_threads();
   if (max > 1 && runs_parallel(static_cast<std::int64_t>(nl_.pairs().size()))) {
-    const int count = threads_.next(max);
-    const bool timed = threads_.measuring();
-    const auto wall0 = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    if (count == max) {
-      advance();
-    } else {
-      const TeamSize one(count);
-      advance();
-    }
-    if (timed) threads_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
+    const TeamSize team(threads_.begin(max));
+    advance();
+    threads_.end();
   } else {
     advance();
   }
