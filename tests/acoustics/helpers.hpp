@@ -48,6 +48,59 @@ inline std::string soot_population(int samples, const std::string& primary_radiu
          "samples = " + std::to_string(samples) + "\nstructure = \"fractal\"\nprimary_radius = " + primary_radius + "\n";
 }
 
+// One [[population]] section of the acoustics tests' cases. The doubles are written with an exponent, so the
+// values parse as TOML floats exactly as typed in a case file.
+struct Population {
+  std::string name, phase;       // "fines" / "solid", "droplets" / "liquid", ...
+  double diameter = 0.0;         // monodisperse diameter, or the lognormal geometric mean diameter [m]
+  double concentration = 0.0;    // number concentration [1/m^3]
+  long samples = 0;
+  double geometric_std = 0.0;    // > 0: lognormal with this geometric standard deviation, else monodisperse
+  int bins = 0;                  // lognormal bins (0: the default)
+  std::string extra;             // more lines of the section (e.g. weight_rounding = "conserving")
+};
+inline std::string population(const Population& p) {
+  std::string s = fmt::format("[[population]]\nname = \"{}\"\nphase = \"{}\"\n", p.name, p.phase);
+  if (p.geometric_std > 0.0) {
+    s += fmt::format("distribution = \"lognormal\"\ngeometric_mean_diameter = {:e}\ngeometric_std = {:e}\n",
+                     p.diameter, p.geometric_std);
+    if (p.bins > 0) s += fmt::format("bins = {}\n", p.bins);
+  } else {
+    s += fmt::format("distribution = \"monodisperse\"\ndiameter = {:e}\n", p.diameter);
+  }
+  s += fmt::format("number_concentration = {:e}\nsamples = {}\n", p.concentration, p.samples);
+  return s + p.extra;
+}
+// A monodisperse population (diameter `d` [m], `n` [1/m^3]).
+inline std::string monodisperse(const std::string& name, const std::string& phase, double d, double n, long samples,
+                                const std::string& extra = "") {
+  return population({name, phase, d, n, samples, 0.0, 0, extra});
+}
+
+// The `extra` line of a population whose sample weights are rounded conserving the number.
+inline constexpr const char* kConserving = "weight_rounding = \"conserving\"\n";
+
+// Solid fines, lognormal with geometric std 2, and monodisperse water droplets: the two populations of the
+// paper's cases (`extra`: more lines of both sections).
+inline std::string fines_and_droplets(double fine_dg, double fine_n, long fine_samples, int bins, double droplet_d,
+                                      double droplet_n, long droplet_samples, const std::string& extra = "") {
+  return population({"fines", "solid", fine_dg, fine_n, fine_samples, 2.0, bins, extra}) +
+         population({"droplets", "liquid", droplet_d, droplet_n, droplet_samples, 0.0, 0, extra});
+}
+
+// The orthokinetic-only physics of the scavenging tests: no wake, radiation pressure, Brownian motion or
+// inertia correction, no fine-fine collisions, and every fine that meets a droplet joins it.
+inline constexpr const char* kOrthokineticOnly = R"(
+[kernels]
+acoustic_wake = false
+radiation_pressure = false
+brownian = false
+inertia_correction = false
+exclude_same_population = true
+[outcomes]
+always_coalesce = true
+)";
+
 // docs/model.md §C.7.3: mean orthokinetic kernel of fine sample f and droplet sample d in the wave [m^3/s],
 //   <beta> = (pi/4)(d_d+d_f)^2 (2/pi) u_amp w |tau_d - tau_f| / sqrt((1 + w^2 tau_d^2)(1 + w^2 tau_f^2)).
 inline double mean_orthokinetic_kernel(const Engine& e, std::size_t f, std::size_t d) {
@@ -82,23 +135,9 @@ min_cells_per_wavelength = 1
 end = 1.5e-3
 collision_dt = 2.5e-5
 motion_dt = 2.5e-5
-[[population]]
-name = "fines"
-phase = "solid"
-distribution = "lognormal"
-geometric_mean_diameter = {:g}
-geometric_std = 2.0
-number_concentration = {:g}
-samples = {}
-[[population]]
-name = "droplets"
-phase = "liquid"
-distribution = "monodisperse"
-diameter = 30e-6
-number_concentration = {:g}
-samples = {}
-)", w.seed, w.fines_diameter, w.fines_concentration, w.fines_samples, w.droplet_concentration,
-                     w.droplet_samples) + output;
+
+)", w.seed) + fines_and_droplets(w.fines_diameter, w.fines_concentration, w.fines_samples, 0, 30e-6,
+                                  w.droplet_concentration, w.droplet_samples) + output;
 }
 
 // Number concentration of the samples: the sum of their weights [m^-3].

@@ -150,23 +150,8 @@ min_cells_per_wavelength = 10
 end = 0.03
 collision_dt = 5e-5
 selection = "{}"
-[[population]]
-name = "fines"
-phase = "solid"
-distribution = "lognormal"
-geometric_mean_diameter = 0.5e-6
-geometric_std = 2.0
-number_concentration = 5e11
-samples = 1500
-[[population]]
-name = "droplets"
-phase = "liquid"
-distribution = "monodisperse"
-diameter = 30e-6
-number_concentration = 2e10
-samples = 200
 )",
-                     seed, selection);
+                     seed, selection) + test::fines_and_droplets(0.5e-6, 5e11, 1500, 0, 30e-6, 2e10, 200);
 }
 
 // Size classes of the free fines' number distribution compared between the selections: d below d_g, d_g to

@@ -29,24 +29,8 @@ frequency_hz = 2000.0
 end = {}
 collision_dt = 1e-5
 {}
-[[population]]
-name = "fines"
-phase = "solid"
-distribution = "lognormal"
-geometric_mean_diameter = 0.2e-6
-geometric_std = 2.0
-bins = 20
-number_concentration = 5e11
-samples = {}
-[[population]]
-name = "droplets"
-phase = "liquid"
-distribution = "monodisperse"
-diameter = 30e-6
-number_concentration = 5e9
-samples = 200
 )",
-                     end, extra_time, fine_samples);
+                     end, extra_time) + test::fines_and_droplets(0.2e-6, 5e11, fine_samples, 20, 30e-6, 5e9, 200);
 }
 
 }  // namespace
@@ -274,21 +258,8 @@ level_db = 150.0
 end = 0.002
 collision_dt = 1e-3
 motion_dt = 1e-5
-[[population]]
-name = "fines"
-phase = "solid"
-distribution = "monodisperse"
-diameter = 1e-6
-number_concentration = 1e12
-samples = 2000
-[[population]]
-name = "droplets"
-phase = "liquid"
-distribution = "monodisperse"
-diameter = 50e-6
-number_concentration = 1e8
-samples = 100
-)";
+)" + test::monodisperse("fines", "solid", 1e-6, 1e12, 2000) +
+                             test::monodisperse("droplets", "liquid", 50e-6, 1e8, 100);
   Engine c = test::make_engine(coarse);
   EXPECT_GT(c.max_guard_pn(), 1.0);
   c.step();

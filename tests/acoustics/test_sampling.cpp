@@ -36,27 +36,10 @@ min_cells_per_wavelength = 20
 [time]
 end = 1e-4
 collision_dt = 1e-5
-[[population]]
-name = "fines"
-phase = "solid"
-distribution = "lognormal"
-geometric_mean_diameter = 0.2e-6
-geometric_std = 2.0
-bins = 20
-number_concentration = 5e11
-samples = {}
-[[population]]
-name = "droplets"
-phase = "liquid"
-distribution = "monodisperse"
-diameter = 30e-6
-number_concentration = 1e9
-samples = {}
-weight_rounding = "conserving"
-[sampling]
-{}
 )",
-                     seed, fines, droplets, sampling);
+                     seed) +
+         test::fines_and_droplets(0.2e-6, 5e11, fines, 20, 30e-6, 1e9, droplets, test::kConserving) +
+         "[sampling]\n" + sampling + "\n";
 }
 
 // Cell index of every sample, by the engine's binning rule.

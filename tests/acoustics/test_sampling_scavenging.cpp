@@ -24,10 +24,10 @@ using namespace agglo::acoustics;
 
 namespace {
 
-constexpr double kFineSamples = 2000;
+constexpr long kFineSamples = 2000;
 
 std::string two_droplets_per_cell(const std::string& sampling) {
-  return fmt::format(R"(
+  return std::string(R"(
 seed = 7
 [gas]
 gravity = false
@@ -39,34 +39,9 @@ cells_x = 100
 [time]
 end = 0.025
 collision_dt = 5e-5
-[[population]]
-name = "fines"
-phase = "solid"
-distribution = "monodisperse"
-diameter = 0.5e-6
-number_concentration = 2e10
-samples = {}
-weight_rounding = "conserving"
-[[population]]
-name = "droplets"
-phase = "liquid"
-distribution = "monodisperse"
-diameter = 20e-6
-number_concentration = 2.8e11
-samples = 200
-weight_rounding = "conserving"
-[sampling]
-{}
-[kernels]
-acoustic_wake = false
-radiation_pressure = false
-brownian = false
-inertia_correction = false
-exclude_same_population = true
-[outcomes]
-always_coalesce = true
-)",
-                     kFineSamples, sampling);
+)") + test::monodisperse("fines", "solid", 0.5e-6, 2e10, kFineSamples, test::kConserving) +
+         test::monodisperse("droplets", "liquid", 20e-6, 2.8e11, 200, test::kConserving) + "[sampling]\n" + sampling +
+         "\n" + test::kOrthokineticOnly;
 }
 
 struct Survival {

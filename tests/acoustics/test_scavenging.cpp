@@ -18,7 +18,7 @@
 using namespace agglo::acoustics;
 
 TEST(Scavenging, FineNumberDecaysExponentiallyAtTheOrthokineticRate) {
-  const char* toml = R"(
+  const std::string toml = R"(
 seed = 5
 [gas]
 gravity = false
@@ -31,29 +31,8 @@ min_cells_per_wavelength = 10
 [time]
 end = 0.025
 collision_dt = 1e-5
-[[population]]
-name = "fines"
-phase = "solid"
-distribution = "monodisperse"
-diameter = 0.5e-6
-number_concentration = 1e11
-samples = 3500
-[[population]]
-name = "droplets"
-phase = "liquid"
-distribution = "monodisperse"
-diameter = 20e-6
-number_concentration = 2.8e11
-samples = 500
-[kernels]
-acoustic_wake = false
-radiation_pressure = false
-brownian = false
-inertia_correction = false
-exclude_same_population = true
-[outcomes]
-always_coalesce = true
-)";
+)" + test::monodisperse("fines", "solid", 0.5e-6, 1e11, 3500) +
+                           test::monodisperse("droplets", "liquid", 20e-6, 2.8e11, 500) + test::kOrthokineticOnly;
   Engine e = test::make_engine(toml);
   const auto& p0 = e.particles();
   const double V = e.settings().motion.domain.volume();
