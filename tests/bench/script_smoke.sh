@@ -81,6 +81,10 @@ case $name in
     done
     [ "$(grep -Ec '^  t2(_before)? +wall +[0-9.]+ s  CPU +[0-9.]+ s  speed-up [0-9.]+x, CPU [0-9.]+x of t1(_before)?$' "$log")" = 4 ] ||
       { cat "$log"; echo "FAIL: bench/$name.sh: no t2 and t2_before line for each system"; exit 1; } ;;
+  threads_every_command)
+    run "$AGGLO" "$T/out"
+    [ "$(grep -Ec '^  t2 +wall +[0-9.]+ s  CPU +[0-9.]+ s  speed-up [0-9.]+x, CPU [0-9.]+x of t1$' "$log")" = 4 ] ||
+      { cat "$log"; echo "FAIL: bench/$name.sh: no t2 line for each of the four smoke commands"; exit 1; } ;;
   dsmc_threads)  # (the before/after variants with this agglo as BEFORE_AGGLO)
     BEFORE_AGGLO=$AGGLO VARIANTS="j1 j2 j1_before j2_before" run "$AGGLO" "$T/out"
     for v in "j2      " "j2_before"; do
