@@ -1,11 +1,8 @@
 #!/usr/bin/env bash
 # agglo acoustic: bad input gives exit code 2 and a one-line message naming the key; a short valid
 # run writes every output file. $1 = agglo executable, $2 = source dir.
-set -u
-AGGLO="$1"
-SRC="$2"
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
+. "$(dirname "$0")/lib.sh"  # A, SRC, T (removed on exit), fail
+AGGLO=$A TMP=$T
 fail=0
 base="$SRC/cases/seed002_baseline.toml"
 short=(--set time.end=0.001 --set "output.psd_times=[0.0,0.001]" --set "output.snapshot_times=[0.0]" --set output.plots=false)

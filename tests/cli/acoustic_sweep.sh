@@ -1,11 +1,8 @@
 #!/usr/bin/env bash
 # agglo sweep over an acoustic key: one row per value in sweep.csv, one folder per case, values in
 # order; a bad key or value is rejected (exit 2) before any case runs. $1 = agglo, $2 = source dir.
-set -u
-AGGLO="$1"
-SRC="$2"
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
+. "$(dirname "$0")/lib.sh"  # A, SRC, T (removed on exit), fail
+AGGLO=$A TMP=$T
 fail=0
 base="$SRC/cases/seed002_baseline.toml"
 short=(--set time.end=0.0005 --set "output.psd_times=[0.0,0.0005]" --set "output.snapshot_times=[0.0]" --set output.plots=false)

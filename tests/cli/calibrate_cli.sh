@@ -8,11 +8,9 @@
 # (4) bad input: unknown key, empty range, unreachable target -> exit 2, one line; (5) a [[prediction]]
 # at the best fit equals a plain vcrit run there.
 # $1 = agglo executable, $2 = source dir.
-set -u
-AGGLO="$1"
-SRC=$(cd "$2" && pwd)
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
+. "$(dirname "$0")/lib.sh"  # A, SRC, T (removed on exit), fail
+AGGLO=$A TMP=$T
+SRC=$(cd "$SRC" && pwd)
 fail=0
 PY=/usr/bin/python3
 neutral="$SRC/cases/seed000_neutral_tetrahedron.toml"

@@ -1,12 +1,8 @@
 #!/usr/bin/env bash
 # CLI checks of `agglo electrostatics`: bad input -> exit code 2 and a one-line message;
 # a good case writes forces.csv with the documented header and the other outputs.
-set -u
-AGGLO="$1"
-SRC="$2"
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"  # A, SRC, T (removed on exit), fail
+AGGLO=$A TMP=$T
 
 good() {
   cat <<'TOML'

@@ -4,11 +4,9 @@
 # 0.176 and 0.197 m/s within the calibration's tolerance of 5 mm/s; and the targets of
 # cases/calibrate_seed000_tetrahedron.toml are those numbers, for those cases.
 # $1 = agglo executable, $2 = source dir.
-set -u
-AGGLO="$1"
-SRC=$(cd "$2" && pwd)
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
+. "$(dirname "$0")/lib.sh"  # A, SRC, T (removed on exit), fail
+AGGLO=$A TMP=$T
+SRC=$(cd "$SRC" && pwd)
 fail=0
 for pair in "seed000_neutral_tetrahedron 0.176" "seed000_charged_tetrahedron_k1 0.197"; do
   set -- $pair
