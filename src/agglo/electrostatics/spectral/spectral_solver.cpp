@@ -265,11 +265,12 @@ void SpectralSolver::pair_product_at(const Pair& pr, const double* b_i, const do
     pr.P.to_frame2(pivot_, pr.L, pr.M, b_k, b_i, bk, bi);
   else
     pr.R.to_frame2(pr.L, pr.M, b_k, b_i, bk, bi);
-  std::fill(ai, ai + 2 * np, 0.0);  // ai, ak
-  // out_i, out_k: written whole by the rotation back (add = false; the same numbers as adding to zeros but
-  // for the sign of a zero, and alpha, which starts at +0, sums them to the same bits either way)
+  // ai, ak: their frame orders <= pr.M written by the translation (add = false), the only ones the rotation
+  // back reads (no zeroing first). out_i, out_k: written whole by the rotation back (add = false). Both the
+  // same numbers as adding to zeros but for the sign of a zero, and alpha, which starts at +0, sums them to
+  // the same bits either way.
   // source k seen from i sits at +t z; source i seen from k at -t z.
-  T_.apply_pair(pr.L, pr.M, pr.ui, pr.uk, bk, bi, ai, ak, pr.powers.empty() ? nullptr : pr.powers.data());
+  T_.apply_pair(pr.L, pr.M, pr.ui, pr.uk, bk, bi, ai, ak, pr.powers.empty() ? nullptr : pr.powers.data(), false);
   if (pr.pivot)
     pr.P.from_frame2(pivot_, pr.L, pr.M, ai, ak, out_i, out_k, false);
   else
