@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <map>
 #include <random>
+#include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "agglo/electrostatics/config.hpp"
@@ -275,6 +277,7 @@ TEST(SpectralPreconditioner, ContactLowDoesNotDependOnTheThreadCount) {
   const Problem p = random_cluster(300, 1.0, 15.0, 3);
   const auto [one, two] = solve_on_one_and_two_threads(o, p);
   EXPECT_TRUE(two.stats.extra.at("contact_low_parallel").get<bool>()) << "the contact_low passes ran serially";
+  EXPECT_TRUE(two.stats.extra.at("closed_from_kept_products").get<bool>()) << "the cold solve took a product more";
   EXPECT_GT(two.stats.iterations, 0);
   expect_same_bits(two, one);
   // the warm re-solve (solve_warm_shifted) after a move of 1e-3 r, on one and on two threads
@@ -290,7 +293,43 @@ TEST(SpectralPreconditioner, ContactLowDoesNotDependOnTheThreadCount) {
   }
   omp_set_num_threads(saved);
   EXPECT_GT(warm[0].stats.iterations, 0);
+  EXPECT_TRUE(warm[1].stats.extra.at("closed_from_kept_products").get<bool>()) << "the warm solve took a product more";
   expect_same_bits(warm[1], warm[0]);
+}
+
+// contact_low's GMRES closes without its explicit residual's product (solve_kept): alpha = M P^-1 u as the
+// combination of the products it kept, beta = P^-1 u, the residual checked from them. Cold and warm solves at
+// GMRES tolerance 1e-10 (kappa_p = 15, N = 30) against the unpreconditioned solve at 1e-12: forces and energy
+// within 1e-8 (a wrong combination, e.g. one term short, misses by orders of magnitude more); the reported
+// residual is the explicit one, <= 1e-10. Past kKeptProducts basis vectors (the cold solve at tolerance 1e-14:
+// 25 iterations) the solve takes GMRES's own explicit residual instead and gives the same forces.
+TEST(SpectralPreconditioner, ContactLowClosesFromKeptProducts) {
+  const Problem p = random_cluster(30, 1.0, 15.0, 11);
+  Problem q = p;
+  q.spheres[3].center = q.spheres[3].center + Vec3{2e-3 * kR, 0, 0};
+  SolverOptions ro = far_field_options("fmm");
+  ro.tolerance = 1e-12;
+  const Solution ref_p = make_solver(ro)->solve(p), ref_q = make_solver(ro)->solve(q);
+  for (double tol : {1e-10, 1e-14}) {
+    SolverOptions o = far_field_options("fmm");
+    o.preconditioner = "contact_low";
+    o.tolerance = tol;
+    auto solver = make_solver(o);
+    const Solution cold = solver->solve(p), warm = solver->solve(q);
+    for (const auto& [name, s, ref] : {std::tuple{"cold", cold, ref_p}, std::tuple{"warm", warm, ref_q}}) {
+      std::printf("contact_low, GMRES %.0e, %s: %d iterations, residual %.2e, kept %d, forces %.2e, energy %.2e\n",
+                  tol, name, s.stats.iterations, s.stats.residual,
+                  int(s.stats.extra.at("closed_from_kept_products").get<bool>()), force_difference(s, ref),
+                  std::abs(s.energy - ref.energy) / std::abs(ref.energy));
+      // the cold solve at 1e-14 takes 25 iterations (> kKeptProducts = 24), the others 13-20
+      const bool past = tol < 1e-12 && std::string_view(name) == "cold";
+      EXPECT_EQ(s.stats.extra.at("closed_from_kept_products").get<bool>(), !past) << name << " " << tol;
+      EXPECT_EQ(s.stats.iterations > 24, past) << name << " " << tol;
+      EXPECT_LE(s.stats.residual, tol) << name;
+      EXPECT_LT(force_difference(s, ref), 1e-8) << name << " " << tol;
+      EXPECT_LT(std::abs(s.energy - ref.energy), 1e-8 * std::abs(ref.energy)) << name << " " << tol;
+    }
+  }
 }
 
 // The near pairs of degree >= 20 rotate through the shared quarter turns (pivot_rotation.hpp); their twin

@@ -68,6 +68,11 @@ constexpr int kContactLowOrder = 2;
 // the same 4 on kappa_p = 2.5's, whose solve a third step makes dearer ("Eighth session"). The default,
 // kContactLowSteps, is declared in solver.hpp.
 
+// contact_low's GMRES (solve_kept): the operator's products M P^-1 v it keeps for the closing combination
+// (the cycle's start and up to this many basis vectors; 15.5 MB each at N = 1000, L = 43, touched only as
+// GMRES reaches them). Past it the solve takes GMRES's own explicit residual, one product more.
+constexpr int kKeptProducts = 24;
+
 // A block of matvec_M's pair products (SpectralSolver::index_blocks): pairs [begin, end) of the solver's
 // pairs, whether it has the work to run in parallel (whether or not threads > 1), and its spheres
 // [sphere_begin, sphere_end) in the solver's per-block sphere list.
@@ -136,6 +141,8 @@ class SpectralSolver final : public Solver {
   void precondition(const double* u, double* z);
   void precondition_forward(const double* x, double* u);
   GmresResult solve_warm_shifted(const LargeVector& rhs, const GmresOptions& go);
+  GmresResult solve_kept(const LargeVector& b, LargeVector& u, const GmresOptions& go);
+  bool close_kept(const LargeVector& b, const LargeVector& u, double tol, double& residual);
   void coarse_inverse(const double* u, double* z);
   void pair_block_inverse(const Pair& pr, const double* u, double* z);
   void contact_inverse(const double* u, double* z);
@@ -193,8 +200,12 @@ class SpectralSolver final : public Solver {
   std::unique_ptr<SpectralSolver> coarse_;
   std::vector<std::size_t> matched_;
   LargeVector z_;
+  // contact_low (solve_kept): M P^-1 of the vectors GMRES applied its operator to, n numbers each: the
+  // cycle's start, then V(0), V(1), ... (kKeptProducts + 1 reserved, sized as they are reached)
+  LargeVector kept_;
   std::vector<double> pc_uc_, pc_zc_;
   long inner_iterations_ = 0;  // inner GMRES iterations of the preconditioner in the last solve
+  bool kept_closed_ = false;   // contact_low: the last solve's alpha_ came from the kept products (solve_kept)
   // warm start
   LargeVector prev_beta_;
   int prev_L_ = -1, prev_N_ = -1;
@@ -254,11 +265,12 @@ void SpectralSolver::pair_product_at(const Pair& pr, const double* b_i, const do
     pr.P.to_frame2(pivot_, pr.L, pr.M, b_k, b_i, bk, bi);
   else
     pr.R.to_frame2(pr.L, pr.M, b_k, b_i, bk, bi);
-  std::fill(ai, ai + 2 * np, 0.0);  // ai, ak
-  // out_i, out_k: written whole by the rotation back (add = false; the same numbers as adding to zeros but
-  // for the sign of a zero, and alpha, which starts at +0, sums them to the same bits either way)
+  // ai, ak: their frame orders <= pr.M written by the translation (add = false), the only ones the rotation
+  // back reads (no zeroing first). out_i, out_k: written whole by the rotation back (add = false). Both the
+  // same numbers as adding to zeros but for the sign of a zero, and alpha, which starts at +0, sums them to
+  // the same bits either way.
   // source k seen from i sits at +t z; source i seen from k at -t z.
-  T_.apply_pair(pr.L, pr.M, pr.ui, pr.uk, bk, bi, ai, ak, pr.powers.empty() ? nullptr : pr.powers.data());
+  T_.apply_pair(pr.L, pr.M, pr.ui, pr.uk, bk, bi, ai, ak, pr.powers.empty() ? nullptr : pr.powers.data(), false);
   if (pr.pivot)
     pr.P.from_frame2(pivot_, pr.L, pr.M, ai, ak, out_i, out_k, false);
   else
@@ -528,7 +540,7 @@ GmresResult SpectralSolver::solve_multipoles(const Problem& p, const LargeVector
         precondition(us.data(), z_.data());
         apply_system(z_, ys);
       };
-      gr = gmres(apply_pc, rhs, u, {}, go, &ws_);
+      gr = pc_contact_low_ ? solve_kept(rhs, u, go) : gmres(apply_pc, rhs, u, {}, go, &ws_);
       beta_ = z_;
     }
   } else {
@@ -565,21 +577,10 @@ GmresResult SpectralSolver::solve_warm_shifted(const LargeVector& rhs, const Gmr
     bn += b[c] * b[c];
   }
   std::fill(w.begin(), w.end(), 0.0);
-  z_.assign(n, 0.0);
-  std::fill(alpha_.begin(), alpha_.end(), 0.0);  // M z_ while no application has run
-  auto apply = [&](std::span<const double> ws, std::span<double> ys) {
-    if (std::all_of(ws.begin(), ws.end(), [](double v) { return v == 0.0; })) {
-      std::fill(z_.begin(), z_.end(), 0.0);
-      std::fill(alpha_.begin(), alpha_.end(), 0.0);
-      std::fill(ys.begin(), ys.end(), 0.0);
-      return;
-    }
-    precondition(ws.data(), z_.data());
-    apply_system(z_, ys);
-  };
+  z_.resize(n);
   GmresOptions g = go;
   if (bn > 0.0) g.tolerance = go.tolerance * std::sqrt(rn / bn);
-  GmresResult gr = gmres(apply, b, w, {}, g, &ws_);
+  GmresResult gr = solve_kept(b, w, g);
   if (rn > 0.0) gr.residual *= std::sqrt(bn / rn);
 #pragma omp parallel for schedule(static) if (threaded)
   for (std::size_t c = 0; c < n; ++c) {
@@ -587,6 +588,110 @@ GmresResult SpectralSolver::solve_warm_shifted(const LargeVector& rhs, const Gmr
     alpha_[c] += alpha0[c];
   }
   return gr;
+}
+
+// contact_low (P^-1 = I - X + X^2 - ..., linear): GMRES on A P^-1 u = b from u, keeping M P^-1 v of every
+// vector v it applies the operator to (kept_: the cycle's start u_0, then V(0), V(1), ...). When GMRES's
+// Givens estimate has converged, u = u_0 + sum_i y_i V(i), so M P^-1 u is the same combination of the kept
+// products: alpha_ from it, z_ = P^-1 u from one preconditioner pass, and the explicit residual
+// ||b - (z_ + gamma alpha_)|| <= tol ||b|| checked (close_kept): 1 + iterations products instead of GMRES's
+// 2 + iterations. If that check fails, or more than kKeptProducts basis vectors were applied, GMRES with
+// its own explicit residual continues from u. On return z_ = P^-1 u and alpha_ = M z_ (to rounding); a
+// start at u = 0 costs no product (the application to 0 is 0). Element-wise passes and per-sphere sums
+// added in sphere order: the same bits at any thread count.
+GmresResult SpectralSolver::solve_kept(const LargeVector& b, LargeVector& u, const GmresOptions& go) {
+  const std::size_t n = b.size();
+  if (kept_.capacity() < std::size_t(kKeptProducts + 1) * n) {
+    kept_.clear();
+    kept_.reserve(std::size_t(kKeptProducts + 1) * n);
+  }
+  kept_closed_ = false;
+  std::ptrdiff_t last = -1;  // kept slot of the last application
+  auto apply = [&](std::span<const double> us, std::span<double> ys) {
+    const std::ptrdiff_t slot = us.data() == u.data() ? 0 : (us.data() - ws_.V.data()) / std::ptrdiff_t(n) + 1;
+    last = slot <= kKeptProducts ? slot : -1;
+    double* a = alpha_.data();
+    if (last >= 0) {
+      kept_.resize(std::max(kept_.size(), std::size_t(slot + 1) * n));
+      a = kept_.data() + std::size_t(slot) * n;
+    }
+    if (slot == 0 && std::all_of(us.begin(), us.end(), [](double v) { return v == 0.0; })) {
+      std::fill(z_.begin(), z_.end(), 0.0);
+      std::fill(a, a + n, 0.0);
+      std::fill(ys.begin(), ys.end(), 0.0);
+      return;
+    }
+    precondition(us.data(), z_.data());
+    matvec_M(z_.data(), a);
+    add_gamma_times(z_.data(), a, ys.data());
+  };
+  GmresOptions once = go;
+  once.recheck_true_residual = false;
+  GmresResult gr = gmres(apply, b, u, {}, once, &ws_);
+  if (gr.matvecs == 0) {  // b = 0: u = 0 without an application
+    z_.assign(n, 0.0);
+    alpha_.assign(n, 0.0);
+    return gr;
+  }
+  if (gr.converged && last == 0) {  // GMRES's explicit residual at u: z_, kept slot 0 are P^-1 u, M P^-1 u
+    std::copy(kept_.begin(), kept_.begin() + std::ptrdiff_t(n), alpha_.begin());
+    kept_closed_ = true;
+    return gr;
+  }
+  kept_closed_ = gr.converged && last == std::ptrdiff_t(ws_.y.size()) && close_kept(b, u, go.tolerance, gr.residual);
+  if (kept_closed_) return gr;
+  GmresOptions rest = go;
+  rest.max_iterations = std::max(0, go.max_iterations - gr.iterations);
+  auto plain = [&](std::span<const double> us, std::span<double> ys) {
+    precondition(us.data(), z_.data());
+    apply_system(z_, ys);
+  };
+  const GmresResult more = gmres(plain, b, u, {}, rest, &ws_);
+  gr.iterations += more.iterations;
+  gr.matvecs += more.matvecs;
+  gr.residual = more.residual;
+  gr.converged = more.converged;
+  return gr;
+}
+
+// solve_kept's close: alpha_ = kept start + sum_i y_i kept V(i) (each number alone, the terms in GMRES's
+// order), z_ = P^-1 u, and the relative explicit residual of b - (z_ + gamma alpha_) (per sphere, the
+// spheres' sums added in sphere order); whether it is <= tol.
+bool SpectralSolver::close_kept(const LargeVector& b, const LargeVector& u, double tol, double& residual) {
+  const std::size_t n = b.size();
+  const std::vector<double>& y = ws_.y;
+  const double* kp = kept_.data();
+  alpha_.resize(n);
+#pragma omp parallel for schedule(static) if (n >= kSpectralParallelLength)
+  for (std::size_t j = 0; j < n; ++j) {
+    double a = kp[j];
+    for (std::size_t i = 0; i < y.size(); ++i) a += y[i] * kp[(i + 1) * n + j];
+    alpha_[j] = a;
+  }
+  precondition(u.data(), z_.data());
+  std::vector<double> rr(static_cast<std::size_t>(N_)), bb(static_cast<std::size_t>(N_));
+  const std::size_t nc = std::size_t(nc_);
+#pragma omp parallel for schedule(static) if (n >= kSpectralParallelLength)
+  for (int i = 0; i < N_; ++i) {
+    const double* g = &gamma_[std::size_t(i) * (L_ + 1)];
+    double r2 = 0.0, b2 = 0.0;
+    for (int l = 0; l <= L_; ++l)
+      for (int m = -l; m <= l; ++m) {
+        const std::size_t c = std::size_t(i) * nc + std::size_t(sh::idx(l, m));
+        const double r = b[c] - (z_[c] + g[l] * alpha_[c]);
+        r2 += r * r;
+        b2 += b[c] * b[c];
+      }
+    rr[std::size_t(i)] = r2;
+    bb[std::size_t(i)] = b2;
+  }
+  double r2 = 0.0, b2 = 0.0;
+  for (int i = 0; i < N_; ++i) {
+    r2 += rr[std::size_t(i)];
+    b2 += bb[std::size_t(i)];
+  }
+  residual = b2 > 0.0 ? std::sqrt(r2 / b2) : 0.0;
+  return std::sqrt(r2) <= tol * std::sqrt(b2);
 }
 
 // Forces, torques (closed forms of spectral_solver.hpp) and energy from beta_ and alpha_ (the
@@ -673,6 +778,7 @@ Solution SpectralSolver::solve(const Problem& p) {
     sol.stats.extra["preconditioner_inner_iterations"] = inner_iterations_;
     sol.stats.extra["matched_pairs"] = matched_.size();
     sol.stats.extra["contact_low_parallel"] = low_parallel_;
+    if (pc_contact_low_) sol.stats.extra["closed_from_kept_products"] = kept_closed_;
   }
   if (far_) {
     sol.stats.extra["far_field_order"] = far_->order();

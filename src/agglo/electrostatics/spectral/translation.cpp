@@ -42,12 +42,13 @@ void translation_source(int Lmax, int m, double v, double vp0, int sign, const d
     vp *= v;
   }
 }
-// out += the target scaling s_j u^j of y (up: powers of u).
-void translation_target(int Lmax, int m, const double* up, int sign, const double* y, double* out) {
+// out += the target scaling s_j u^j of y (up: powers of u); with add = false out = it.
+void translation_target(int Lmax, int m, const double* up, int sign, const double* y, double* out, bool add = true) {
   for (int j = m; j <= Lmax; ++j) {
     double s = (sign < 0 && (j & 1)) ? -up[j] : up[j];
-    out[idx(j, m)] += s * y[2 * (j - m)];
-    if (m > 0) out[idx(j, -m)] += s * y[2 * (j - m) + 1];
+    const double a = add ? out[idx(j, m)] : 0.0;
+    out[idx(j, m)] = a + s * y[2 * (j - m)];
+    if (m > 0) out[idx(j, -m)] = (add ? out[idx(j, -m)] : 0.0) + s * y[2 * (j - m) + 1];
   }
 }
 }  // namespace
@@ -77,7 +78,7 @@ void AxialTranslation::source_powers(int Mmax, double u, double v, std::vector<d
 }
 
 void AxialTranslation::apply_pair(int Lmax, int Mmax, double u, double v, const double* in_b, const double* in_a,
-                                  double* out_a, double* out_b, const double* powers) const {
+                                  double* out_a, double* out_b, const double* powers, bool add) const {
   double pu[1024], pv[1024];
   double p = 1.0, q = 1.0;
   for (int j = 0; j <= Lmax; ++j) {
@@ -92,8 +93,8 @@ void AxialTranslation::apply_pair(int Lmax, int Mmax, double u, double v, const 
     translation_source(Lmax, m, v, powers ? powers[2 * m] : std::pow(v, m + 1), +1, in_b, x);
     translation_source(Lmax, m, u, powers ? powers[2 * m + 1] : std::pow(u, m + 1), -1, in_a, x2);
     kern::gemv2x2(&f_[off_[m]], L_ - m + 1, nn, nn, x, x2, y, y2);
-    translation_target(Lmax, m, pu, +1, y, out_a);
-    translation_target(Lmax, m, pv, -1, y2, out_b);
+    translation_target(Lmax, m, pu, +1, y, out_a, add);
+    translation_target(Lmax, m, pv, -1, y2, out_b, add);
   }
 }
 

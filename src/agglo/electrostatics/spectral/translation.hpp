@@ -25,8 +25,10 @@ class AxialTranslation {
   // out_b += apply(v, u, -1, in_a), each the same bits as the two apply calls. `powers` (optional): the
   // source scalings v^(m+1), u^(m+1) of source_powers for orders m <= min(Lmax, Mmax), else computed here
   // (std::pow, both ways: the same numbers).
+  // With add = false the orders |m| <= min(Lmax, Mmax) of out_a, out_b are written instead (the same numbers
+  // as adding to +0, but for the sign of a zero), the others left as they are.
   void apply_pair(int Lmax, int Mmax, double u, double v, const double* in_b, const double* in_a, double* out_a,
-                  double* out_b, const double* powers = nullptr) const;
+                  double* out_b, const double* powers = nullptr, bool add = true) const;
   // powers[2m] = v^(m+1), powers[2m+1] = u^(m+1) (std::pow), m = 0..Mmax: apply_pair's per-order
   // source scalings, kept by a caller that translates the same pair many times.
   static void source_powers(int Mmax, double u, double v, std::vector<double>& powers);
