@@ -5,9 +5,11 @@ numeric quantity (NetCDF variables, CSV columns, JSON numbers), relative to the 
 quantity in the older tree, and whether every discrete output (integers, booleans, strings: contact counts,
 outcomes, classifications) is equal. VTK snapshots are skipped (their fields are in results.nc).
 
-Usage: compare_dem_outputs.py OLD_DIR NEW_DIR [--bound 1e-6]
-Prints one line per file that differs and exits 1 when a relative difference exceeds the bound or a discrete
-output differs.
+Usage: compare_dem_outputs.py OLD_DIR NEW_DIR [--bound 1e-10] [--diagnostic-bound 1e-7]
+Prints one line per file that differs and exits 1 when a relative difference exceeds the bound (for the
+electrostatics' error-control diagnostics, names containing "hold_error": the diagnostic bound) or a discrete
+output differs. Chaotic runs exceed it in the reference itself (docs/benchmarks_dem.md §8): compare them with
+the reference run at a speed changed by 1e-12 relative.
 """
 import argparse
 import csv
@@ -117,7 +119,8 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("old")
     ap.add_argument("new")
-    ap.add_argument("--bound", type=float, default=1e-6)
+    ap.add_argument("--bound", type=float, default=1e-10)
+    ap.add_argument("--diagnostic-bound", type=float, default=1e-7)
     args = ap.parse_args()
     old, new = Path(args.old), Path(args.new)
     compare = {".csv": compare_csv, ".json": compare_json, ".nc": compare_nc}
@@ -130,7 +133,8 @@ def main():
         nums, discrete = compare[f.suffix](f, g)
         worst = max(nums.items(), key=lambda kv: kv[1], default=("-", 0.0))
         overall = max(overall, worst[1])
-        fail = worst[1] > args.bound or bool(discrete)
+        beyond = [k for k, v in nums.items() if v > (args.diagnostic_bound if "hold_error" in k else args.bound)]
+        fail = bool(beyond) or bool(discrete)
         bad += fail
         print(f"{'FAIL' if fail else 'ok  '} {f.relative_to(old)}: largest relative difference {worst[1]:.2e} "
               f"({worst[0]}){'; discrete outputs differ: ' + ', '.join(sorted(discrete)[:6]) if discrete else ''}")
