@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <vector>
 
 #include "agglo/dem/contact/alpha_damping.hpp"
 #include "agglo/dem/jkr.hpp"
@@ -82,42 +84,73 @@ TEST(Jkr, InversionRoundTrip) {
     }
 }
 
-// a_of_delta_lanes (the one-thread pair loop's radii, eight at a time) gives a_of_delta's bits in every lane:
-// lanes of different pairs, at or below the turning point delta = -delta_C (no Newton), cold starts, warm
-// starts on either side of the root and near the turning point (slow convergence), mixed in one call so that
-// lanes stop at different iterations.
-TEST(Jkr, LanesBitIdenticalToAOfDelta) {
-  const JkrPair pairs[2] = {seed_pair(), JkrPair::make(2.5e-6, 3e8, 0.03)};
-  constexpr int L = 8;
-  unsigned seed = 12345u;
-  auto uniform = [&seed] {
-    seed = seed * 1664525u + 1013904223u;
-    return (seed >> 8) * (1.0 / 16777216.0);
-  };
-  int compared = 0;
-  for (int call = 0; call < 400; ++call) {
-    const JkrPair* jkr[L];
-    double delta[L], guess[L], a[L];
-    double* out[L];
-    for (int l = 0; l < L; ++l) {
-      jkr[l] = &pairs[(call + l) % 2];
-      const double x = -1.3 + 21.3 * uniform();  // delta / delta_C, also below the turning point -1
-      delta[l] = (l == 0 && call % 4 == 0 ? -0.9999 : x) * jkr[l]->deltaC;  // -0.9999: slow Newton
-      const double exact = jkr[l]->a_of_delta(delta[l]);
-      const int kind = (call + 3 * l) % 4;  // none, left of the root, right of it, far off
-      guess[l] = kind == 0 ? 0.0 : exact * (kind == 1 ? 0.999 : kind == 2 ? 1.001 : 1.0 + 2.0 * uniform());
-      a[l] = guess[l];
-      out[l] = &a[l];
-    }
-    agglo::dem::a_of_delta_lanes<L>(jkr, delta, out);
-    for (int l = 0; l < L; ++l) {
-      const double ref = jkr[l]->a_of_delta(delta[l], guess[l]);
-      ASSERT_EQ(std::memcmp(&a[l], &ref, sizeof ref), 0)
-          << "call " << call << " lane " << l << ": " << a[l] << " vs " << ref;
-      ++compared;
-    }
+// The exact root s of 2 s^4 - 4/3 s = t for a double t >= -s_min, by bisection in long double on the form
+// without the double root, (s - m) (2 s^2 + 4 m s + 6 m^2)^(1/2) = (t + m)^(1/2) (independent of the table's
+// Newton on the same form and of a_of_delta's Newton on f).
+long double exact_root(double t) {
+  const long double m = 1.0L / std::cbrt(6.0L);
+  const long double w = std::sqrt(std::max(static_cast<long double>(t) + m, 0.0L));
+  long double lo = m, hi = m + 1.0L + w;
+  for (int it = 0; it < 160; ++it) {
+    const long double mid = 0.5L * (lo + hi);
+    ((mid - m) * std::sqrt(2.0L * mid * mid + 4.0L * m * mid + 6.0L * m * m) > w ? hi : lo) = mid;
   }
-  EXPECT_EQ(compared, 400 * L);
+  return 0.5L * (lo + hi);
+}
+
+// The fast path's root (jkr_root_fast: table + one Halley step, no warm start, no convergence test) against the
+// exact root over the whole range of an engaged contact: from the turning point t = -s_min (delta = -delta_C,
+// the pull-off branch of break_rule "marshall") through fresh contacts (delta >= 0) to beyond the table
+// (t >= 63.4, the Newton fallback). Bounds per distance tau = t + s_min from the turning point, where the root
+// is ill-conditioned (ds/dt = 1/f'(s) -> infinity); a_of_delta's own error is checked against the same bounds
+// (the exact root is right; and the fast root is no worse than the reference twin's), and F_ne from s against
+// force_of_a(s^2 a0).
+TEST(Jkr, FastRootAgainstExactRoot) {
+  const double m = agglo::dem::kJkrSMin;
+  struct Bin {
+    double tau_lo, tau_hi, bound;
+    double fast = 0.0, ref = 0.0;
+    int n = 0;
+  };
+  Bin bins[] = {{0.0, 1e-6, 5e-9}, {1e-6, 1e-2, 1e-13}, {1e-2, 80.0, 1e-15}};
+  std::vector<double> taus;
+  for (double x = -16.0; x < -2.0; x += 0.01) taus.push_back(std::pow(10.0, x));
+  for (double x = 1e-2; x < 80.0; x += 1.37e-3) taus.push_back(x);
+  const JkrPair p = seed_pair();
+  for (double tau : taus) {
+    const double t = -m + tau;
+    const long double ex = exact_root(t);
+    const double fast = agglo::dem::jkr_root_fast(t);
+    const double ref = std::sqrt(p.a_of_delta(t / p.t_per_delta) / p.a0);  // the reference (cold start)
+    for (Bin& b : bins)
+      if (tau >= b.tau_lo && tau < b.tau_hi) {
+        b.fast = std::max(b.fast, static_cast<double>(std::abs(fast - ex) / ex));
+        b.ref = std::max(b.ref, static_cast<double>(std::abs(ref - ex) / ex));
+        ++b.n;
+      }
+    const double f_fast = agglo::dem::jkr_force_of_root(p, fast), f_ref = p.force_of_a(fast * fast * p.a0);
+    ASSERT_NEAR(f_fast, f_ref, 1e-14 * (std::abs(f_ref) + p.Fc)) << "t " << t;
+  }
+  for (const Bin& b : bins) {
+    EXPECT_GT(b.n, 100);
+    EXPECT_LE(b.fast, b.bound) << "tau in [" << b.tau_lo << ", " << b.tau_hi << "): " << b.n << " points";
+    EXPECT_LE(b.ref, b.bound) << "reference, tau in [" << b.tau_lo << ", " << b.tau_hi << ")";
+    std::printf("tau in [%g, %g): %d points, max relative error fast %.2e, reference %.2e\n", b.tau_lo, b.tau_hi, b.n,
+                b.fast, b.ref);
+  }
+  // The table's own error (no Halley step) is far above the bounds: the polish is doing the work (control).
+  double table_err = 0.0;
+  for (double tau : taus) {
+    if (tau >= 63.0) continue;
+    const double x = std::sqrt(tau) * (agglo::dem::kJkrTableCells / agglo::dem::kJkrTableW);
+    const int cell = static_cast<int>(x);
+    const double u = x - cell;
+    const double* c = agglo::dem::kJkrRootTable.c[cell];
+    const double s0 = c[0] + u * (c[1] + u * (c[2] + u * c[3]));
+    table_err = std::max(table_err, static_cast<double>(std::abs(s0 - exact_root(-m + tau)) / exact_root(-m + tau)));
+  }
+  EXPECT_GT(table_err, 1e-10);
+  EXPECT_LT(table_err, 3e-8);
 }
 
 TEST(Jkr, DampingCoefficient) {

@@ -22,8 +22,11 @@ struct JkrPair {
   double Fc = 0.0;      // pull-off force [N]
   double a0 = 0.0;      // equilibrium contact radius [m]
   double deltaC = 0.0;  // critical overlap [m]
+  double t_per_delta = 0.0;  // 1 / (6^(1/3) delta_C) [1/m] (derived: set by make() and derive())
 
   static JkrPair make(double R, double Estar, double gamma);
+  // The derived constant t_per_delta from deltaC (make() calls it; so must code that sets deltaC by hand).
+  void derive() { t_per_delta = 1.0 / (kJkrCbrt6 * deltaC); }
 
   // Overlap for contact radius a (the JKR relation; valid on the stable branch a >= 6^(-2/3) a0).
   double delta_of_a(double a) const;
@@ -84,56 +87,59 @@ inline double JkrPair::a_of_delta(double delta, double a_guess) const {
   return n.s * n.s * a0;
 }
 
-// a[l] = p[l]->a_of_delta(delta[l], a[l]) for the lanes l < L (L even), bit for bit, with the L Newton
-// iterations interleaved in two-double vectors (GCC vector extensions; IEEE operations lane by lane, the same
-// as JkrNewton::step's): L independent chains of divisions, no branch per lane. A converged lane keeps its
-// s (selected by mask), as a_of_delta stops; the loop ends when every lane has converged.
-template <int L>
-[[gnu::always_inline]] inline void a_of_delta_lanes(const JkrPair* const (&p)[L], const double (&delta)[L],
-                                                    double* const (&a)[L]) {
-  static_assert(L % 2 == 0);
-  typedef double v2d __attribute__((vector_size(16)));
-  typedef long long v2l __attribute__((vector_size(16)));
-  constexpr int V = L / 2;
-  v2d t[V], s[V];
-  v2l run[V];
-  bool solve[L];
-  for (int l = 0; l < L; ++l) {
-    JkrNewton n;
-    solve[l] = jkr_newton_start(*p[l], delta[l], *a[l], n);
-    t[l / 2][l % 2] = n.t;
-    s[l / 2][l % 2] = solve[l] ? n.s : 1.0;
-    run[l / 2][l % 2] = solve[l] ? -1 : 0;
-  }
-  const v2d smin = {kJkrSMin, kJkrSMin};
-  const v2l sign = {static_cast<long long>(1ULL << 63), static_cast<long long>(1ULL << 63)};
-  for (int it = 0; it < kJkrNewtonCap; ++it) {
-    v2l any = {0, 0};
-    for (int v = 0; v < V; ++v) {
-      const v2d sv = s[v];
-      const v2d s3 = sv * sv * sv;
-      const v2d f = 2.0 * s3 * sv - 4.0 / 3.0 * sv - t[v];
-      const v2d fp = 8.0 * s3 - 4.0 / 3.0;
-      const v2d x = sv - f / fp;
-      const v2l below = x < smin;  // std::max(x, s_min)
-      const v2d s_new = (v2d)(((v2l)smin & below) | ((v2l)x & ~below));
-      const v2d change = (v2d)((v2l)(s_new - sv) & ~sign);
-      const v2l converged = change <= 4e-16 * s_new;
-      s[v] = (v2d)(((v2l)s_new & run[v]) | ((v2l)sv & ~run[v]));
-      run[v] &= ~converged;
-      any |= run[v];
-    }
-    if ((any[0] | any[1]) == 0) break;
-  }
-  for (int l = 0; l < L; ++l) {
-    const double sl = s[l / 2][l % 2];
-    *a[l] = solve[l] ? sl * sl * p[l]->a0 : kJkrSMin * kJkrSMin * p[l]->a0;
-  }
-}
-
 inline double JkrPair::force_of_a(double a) const {
   double x = a / a0;
   return 4.0 * Fc * (x * x * x - x * std::sqrt(x));
+}
+
+// The fast path's contact radius (docs/benchmarks_dem.md §8; issue 27): the root s = (a/a0)^(1/2) of
+//   f(s) = 2 s^4 - 4/3 s = t,   t = delta / (6^(1/3) delta_C) >= -s_min,   s_min = 6^(-1/3),
+// without a warm start and without a convergence test. With w = (t + s_min)^(1/2) the equation reads
+// (s - s_min) q(s)^(1/2) = w, q(s) = 2 s^2 + 4 s_min s + 6 s_min^2, so s(w) is smooth down to the turning
+// point w = 0 (where s(t) has a square-root singularity). s(w) is tabulated as one cubic per interval of
+// w in [0, kJkrTableW) (kJkrTableCells intervals; the cubics interpolate the root at the four Chebyshev
+// points of each interval, computed once at start-up in long double), then polished by one Halley step
+//   s <- s - 2 f' (f - t) / (2 f'^2 - (f - t) f'').
+// Table error <= 1.2e-8 relative; after the Halley step the root is within a few ulp of the exact root of
+// t for t + s_min >= 1e-2, within 1e-13 for 1e-6 <= t + s_min < 1e-2 and within 1e-8 below, the same
+// order as a_of_delta's own (the root is ill-conditioned there: ds/dt = 1/f'(s) -> infinity); tested in
+// tests/dem/test_jkr.cpp (Jkr.FastRootAgainstExactRoot). Beyond the table (t >= kJkrTableW^2 - s_min,
+// about 63 delta_C 6^(1/3)) the Newton iteration of a_of_delta from its cold start.
+inline constexpr int kJkrTableCells = 128;
+inline constexpr double kJkrTableW = 8.0;
+struct JkrRootTable {
+  double c[kJkrTableCells][4];  // s = c0 + c1 x + c2 x^2 + c3 x^3, x = w kJkrTableCells / kJkrTableW - cell
+};
+extern const JkrRootTable kJkrRootTable;
+
+// s = (a/a0)^(1/2) for t = delta t_per_delta >= -s_min (an engaged contact; t below -s_min gives s_min).
+[[gnu::always_inline]] inline double jkr_root_fast(double t) {
+  const double x = std::sqrt(std::max(t + kJkrSMin, 0.0)) * (kJkrTableCells / kJkrTableW);
+  if (!(x < kJkrTableCells)) [[unlikely]] {  // beyond the table: the iteration of a_of_delta, cold start
+    JkrNewton n;
+    n.t = t;
+    n.s = std::max(1.0, std::sqrt(std::sqrt(t / 2.0 + 1.0)) + 0.5);
+    for (int it = 0; it < kJkrNewtonCap && n.step(); ++it) {
+    }
+    return n.s;
+  }
+  const int cell = static_cast<int>(x);
+  const double u = x - cell;
+  const double* c = kJkrRootTable.c[cell];
+  const double s = c[0] + u * (c[1] + u * (c[2] + u * c[3]));
+  const double s3 = s * s * s;
+  const double g = 2.0 * s3 * s - 4.0 / 3.0 * s - t;
+  const double gp = 8.0 * s3 - 4.0 / 3.0;
+  const double den = 2.0 * gp * gp - g * (24.0 * s * s);
+  const double step = den != 0.0 ? 2.0 * g * gp / den : 0.0;  // (0 / 0 only exactly at the turning point)
+  return std::max(s - step, kJkrSMin);
+}
+
+// The fast path's radius and elastic force from the root s (same formulas as a = s^2 a0 and force_of_a):
+//   a = s^2 a0,  F_ne = 4 F_C s^3 (s^3 - 1)
+[[gnu::always_inline]] inline double jkr_force_of_root(const JkrPair& p, double s) {
+  const double s3 = s * s * s;
+  return 4.0 * p.Fc * s3 * (s3 - 1.0);
 }
 
 // Overlap at which the pair force is the pull-off minimum -F_C: delta = -0.48075 delta_C.

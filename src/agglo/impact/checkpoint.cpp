@@ -63,6 +63,7 @@ std::vector<dem::Pair> read_pairs(CheckpointReader& r) {
     pr.j = static_cast<std::uint32_t>(r.u64());
     pr.state = read_state(r);
     for (double* c : {&pr.jkr.R, &pr.jkr.Estar, &pr.jkr.gamma, &pr.jkr.Fc, &pr.jkr.a0, &pr.jkr.deltaC}) *c = r.f64();
+    pr.jkr.derive();  // t_per_delta (not stored)
   }
   return pairs;
 }

@@ -23,13 +23,10 @@ class JkrNormal {
   }
   // Contact radius for overlap delta; `a_prev` (0: none) is the last step's radius (warm start) [m].
   double contact_radius(const JkrPair& jkr, double delta, double a_prev) const { return jkr.a_of_delta(delta, a_prev); }
-  // kLanes contacts at once, bit for bit kLanes contact_radius calls (their Newton iterations interleaved);
-  // a[l] holds the last radius on entry (independent of the break rule, hence static).
-  static constexpr int kLanes = 8;
-  static void contact_radii(const JkrPair* const (&p)[kLanes], const double (&delta)[kLanes],
-                            double* const (&a)[kLanes]) {
-    a_of_delta_lanes<kLanes>(p, delta, a);
-  }
+  // The fast path (jkr.hpp, jkr_root_fast): s = (a/a0)^(1/2) at overlap delta >= -delta_C, no warm start.
+  static double contact_root(const JkrPair& jkr, double delta) { return jkr_root_fast(delta * jkr.t_per_delta); }
+  // F_ne from s (the same formula as force(jkr, s^2 a0)) [N].
+  static double force_of_root(const JkrPair& jkr, double s) { return jkr_force_of_root(jkr, s); }
   double force(const JkrPair& jkr, double a) const { return jkr.force_of_a(a); }
   double stiffness(const JkrPair& jkr, double a) const { return jkr.stiffness(a); }
 

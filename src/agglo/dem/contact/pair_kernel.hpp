@@ -52,32 +52,32 @@ class PairKernel final : public ContactKernel {
     });
   }
 
-  // Serially in pair order, in chunks of kRadiusChunk pairs, two passes per chunk (accumulate_range). flatten:
-  // the sub-model calls are inlined into the loop (without it GCC keeps the contact radius and the tangential
-  // force out of line).
+  // Serially in pair order, with the fast arithmetic (Models::fast_force). flatten: the sub-model calls are
+  // inlined into the loop (without it GCC keeps the tangential force out of line).
   [[gnu::flatten]] void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
     std::fill(p.f.begin(), p.f.end(), Vec3{});
     std::fill(p.t.begin(), p.t.end(), Vec3{});
-    if (pairs.size() < kRadiusChunk) {  // a small system (the seed's agglomerates): one pass, nothing to overlap
-      for (Pair& pr : pairs) add_pair_force(pr, pair_force(pr, p, dt), p);
-      return;
-    }
     accumulate_range<false>(pairs, p, dt, 0, pairs.size(), 0, nullptr);
   }
 
-  // Pairs [k0, k1) added to their particles in pair order, in chunks of kRadiusChunk pairs, two passes per chunk:
-  // first the overlap, the hysteresis and the contact radius of every pair (update_radii), then the rest of the
-  // law with that radius (Models::force_at_radius) and the sums. The same operations on the same operands as
-  // Models::force, pair by pair, so the same bits; the contact radii of several pairs are solved together, so
-  // that the core overlaps their Newton iterations (each a dependent chain of divisions). A pair whose j is
-  // >= j_end (a crossing pair of a block, pair_blocks.hpp; only with Crossing) was evaluated before: its force
-  // crossing[k] goes to i.
+  // Pairs [k0, k1) added to their particles in pair order, in chunks of kChunk pairs, two passes per chunk: first
+  // step 1 and the contact root of every pair (Models::fast_engage: short independent chains of a square root and
+  // a division, which the core overlaps across pairs), then the rest of the law (Models::fast_respond) and the
+  // sums. The same operations as fast_force pair by pair, so the same bits as fast_pair_force, which the
+  // parallel path's phase 1 uses: a pair whose j is >= j_end (a crossing pair of a block, pair_blocks.hpp; only
+  // with Crossing) was evaluated there, and its force crossing[k] goes to i. So the sums are the same bits on
+  // any number of threads.
   template <bool Crossing>
   [[gnu::always_inline]] void accumulate_range(std::vector<Pair>& pairs, Particles& p, double dt, std::size_t k0,
                                                std::size_t k1, std::uint32_t j_end, const PairForce* crossing) const {
-    for (std::size_t c0 = k0; c0 < k1; c0 += kRadiusChunk) {
-      const std::size_t c1 = std::min(k1, c0 + kRadiusChunk);
-      update_radii<Crossing>(pairs, p, c0, c1, j_end);
+    std::array<double, kChunk> root;
+    for (std::size_t c0 = k0; c0 < k1; c0 += kChunk) {
+      const std::size_t c1 = std::min(k1, c0 + kChunk);
+      for (std::size_t k = c0; k < c1; ++k) {
+        Pair& pr = pairs[k];
+        if (Crossing && pr.j >= j_end) continue;
+        models_[pr.kind].fast_engage(pr.jkr, kinematics(pr, p), pr.state, root[k - c0]);
+      }
       for (std::size_t k = c0; k < c1; ++k) {
         Pair& pr = pairs[k];
         if (Crossing && pr.j >= j_end) {
@@ -85,50 +85,11 @@ class PairKernel final : public ContactKernel {
           p.t[pr.i] += crossing[k].t_on_i;
           continue;
         }
-        const PairKinematics kin{p.x[pr.i], p.x[pr.j], p.v[pr.i], p.v[pr.j], p.w[pr.i], p.w[pr.j],
-                                 p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
-        add_pair_force(pr, models_[pr.kind].force_at_radius(pr.jkr, kin, pr.state, dt), p);
+        // (an engaged contact is active after step 1, any other inactive; its zero force is added too, as
+        // fast_pair_force's would be)
+        add_pair_force(pr, pr.state.active ? models_[pr.kind].fast_respond(pr.jkr, kinematics(pr, p), pr.state, dt, root[k - c0])
+                                           : PairForce{}, p);
       }
-    }
-  }
-
-  // The first pass of accumulate_range over pairs [k0, k1) (but, with Crossing, those with j >= j_end): step 1
-  // of every pair, then the contact radii of the engaged ones, Normal::kLanes at a time where the normal model can
-  // (Normal::contact_radii).
-  template <bool Crossing>
-  [[gnu::always_inline]] void update_radii(std::vector<Pair>& pairs, const Particles& p, std::size_t k0,
-                                           std::size_t k1, std::uint32_t j_end) const {
-    std::array<std::size_t, kRadiusChunk> engaged;
-    std::array<double, kRadiusChunk> delta;
-    std::size_t ne = 0;
-    for (std::size_t k = k0; k < k1; ++k) {
-      Pair& pr = pairs[k];
-      if (Crossing && pr.j >= j_end) continue;
-      const double dk = p.r[pr.i] + p.r[pr.j] - norm(p.x[pr.j] - p.x[pr.i]);
-      if (models_[pr.kind].engaged(pr.jkr, dk, pr.state)) {
-        engaged[ne] = k;
-        delta[ne++] = dk;
-      }
-    }
-    std::size_t e = 0;
-    if constexpr (requires { Normal::kLanes; }) {
-      constexpr int L = Normal::kLanes;
-      for (; e + L <= ne; e += L) {
-        const JkrPair* jkr[L];
-        double d[L];
-        double* a[L];
-        for (int l = 0; l < L; ++l) {
-          Pair& pr = pairs[engaged[e + l]];
-          jkr[l] = &pr.jkr;
-          d[l] = delta[e + l];
-          a[l] = &pr.state.a;
-        }
-        Normal::contact_radii(jkr, d, a);
-      }
-    }
-    for (; e < ne; ++e) {
-      Pair& pr = pairs[engaged[e]];
-      pr.state.a = models_[pr.kind].normal_.contact_radius(pr.jkr, delta[e], pr.state.a);
     }
   }
 
@@ -139,7 +100,7 @@ class PairKernel final : public ContactKernel {
     const std::size_t n = b.crossing.size();
     for (std::size_t c = part * n / parts; c < (part + 1) * n / parts; ++c) {
       const std::size_t k = b.crossing[c];
-      crossing[k] = pair_force(pairs[k], p, dt);
+      crossing[k] = fast_pair_force(pairs[k], p, dt);
     }
   }
 
@@ -175,10 +136,14 @@ class PairKernel final : public ContactKernel {
   }
 
  private:
-  [[gnu::always_inline]] PairForce pair_force(Pair& pr, const Particles& p, double dt) const {
-    const PairKinematics kin{p.x[pr.i], p.x[pr.j], p.v[pr.i], p.v[pr.j], p.w[pr.i], p.w[pr.j],
-                             p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
-    return models_[pr.kind].force(pr.jkr, kin, pr.state, dt);
+  [[gnu::always_inline]] static PairKinematics kinematics(const Pair& pr, const Particles& p) {
+    return PairKinematics{p.x[pr.i], p.x[pr.j], p.v[pr.i], p.v[pr.j], p.w[pr.i], p.w[pr.j],
+                          p.r[pr.i], p.r[pr.j], p.m[pr.i], p.m[pr.j]};
+  }
+
+  // The fast path's force of one pair (Models::fast_force).
+  [[gnu::always_inline]] PairForce fast_pair_force(Pair& pr, const Particles& p, double dt) const {
+    return models_[pr.kind].fast_force(pr.jkr, kinematics(pr, p), pr.state, dt);
   }
 
   // Pair pr's force and torques added to its two particles, in the order of the gathered buffer.
@@ -219,14 +184,52 @@ class PairKernel final : public ContactKernel {
       return respond(jkr, delta, geometry(k, d, dist), s, dt);
     }
 
-    // Models::force after step 1 and the contact radius (PairKernel::update_radii): the rest with s.a (on an
-    // engaged contact s.active is true after step 1, on any other false).
-    [[gnu::always_inline]] PairForce force_at_radius(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
-                                                     double dt) const {
-      if (!s.active) return PairForce{};
+    // The fast path (docs/benchmarks_dem.md §8; the reference twin is force): the same law with the contact
+    // radius from Normal::contact_root where the model has one (no warm start, no convergence test; a = s^2 a0,
+    // F_ne from s), one division 1/|d| for n and the levers. Within the documented tolerance of force, not its
+    // bits. In two parts (PairKernel::accumulate_range runs them in two passes).
+    [[gnu::always_inline]] PairForce fast_force(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
+                                                double dt) const {
+      double root = 0.0;
+      if (!fast_engage(jkr, k, s, root)) return PairForce{};
+      return fast_respond(jkr, k, s, dt, root);
+    }
+
+    // Step 1 and the contact radius s.a (root: s = (a/a0)^(1/2) of Normal::contact_root); true while engaged.
+    [[gnu::always_inline]] bool fast_engage(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
+                                            double& root) const {
       const Vec3 d = k.xj - k.xi;
-      const double dist = norm(d);
-      return respond_at_radius(jkr, geometry(k, d, dist), s, dt);
+      const double delta = k.ri + k.rj - std::sqrt(norm2(d));
+      if (!engaged(jkr, delta, s)) return false;
+      if constexpr (requires { normal_.contact_root(jkr, delta); }) {
+        root = normal_.contact_root(jkr, delta);
+        s.a = root * root * jkr.a0;
+      } else {  // a normal model without a fast root: its contact_radius, as in force
+        s.a = normal_.contact_radius(jkr, delta, s.a);
+      }
+      return true;
+    }
+
+    // Steps 2-4 of an engaged contact after fast_engage.
+    [[gnu::always_inline]] PairForce fast_respond(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
+                                                  double dt, double root) const {
+      const Vec3 d = k.xj - k.xi;
+      const double dist2 = norm2(d);
+      const double dist = std::sqrt(dist2);
+      const double inv = 1.0 / dist;
+      Geometry g;
+      g.n = d * inv;
+      g.mstar = k.mi * k.mj / (k.mi + k.mj);
+      g.li = (dist2 + k.ri * k.ri - k.rj * k.rj) * (0.5 * inv);
+      g.lj = dist - g.li;
+      g.vrel = k.vi - k.vj + cross(g.li * k.wi + g.lj * k.wj, g.n);
+      g.w_rel = k.wi - k.wj;
+      double f_ne;
+      if constexpr (requires { normal_.force_of_root(jkr, root); })
+        f_ne = normal_.force_of_root(jkr, root);
+      else
+        f_ne = normal_.force(jkr, s.a);
+      return respond_with(jkr, g, s, dt, f_ne);
     }
 
     // A sphere against a wall (wall.hpp): the partner of infinite radius and mass, at rest.
@@ -271,11 +274,17 @@ class PairKernel final : public ContactKernel {
 
     // Steps 2-4 with the contact radius s.a already updated.
     PairForce respond_at_radius(const JkrPair& jkr, const Geometry& g, ContactState& s, double dt) const {
+      return respond_with(jkr, g, s, dt, normal_.force(jkr, s.a));
+    }
+
+    // Steps 2-4 with the contact radius s.a and the elastic normal force f_ne [N] already computed.
+    [[gnu::always_inline]] PairForce respond_with(const JkrPair& jkr, const Geometry& g, ContactState& s, double dt,
+                                                  double f_ne) const {
       PairForce out;
       ContactPoint c;
       c.n = g.n;
       c.a = s.a;
-      c.f_ne = normal_.force(jkr, c.a);
+      c.f_ne = f_ne;
       c.eta_n = damping_.coefficient(g.mstar, normal_.stiffness(jkr, c.a));
       const double ddelta_dt = dot(g.vrel, c.n);
       c.vs = g.vrel - ddelta_dt * c.n;
@@ -309,8 +318,8 @@ class PairKernel final : public ContactKernel {
     Twisting twisting_;
   };
 
-  // Pairs per chunk of accumulate_pairs' two passes (their states stay in the L1 cache between the passes).
-  static constexpr std::size_t kRadiusChunk = 64;
+  // Pairs per chunk of accumulate_range's two passes (their states stay in the L1 cache between the passes).
+  static constexpr std::size_t kChunk = 64;
 
   std::vector<Models> models_;
 };
