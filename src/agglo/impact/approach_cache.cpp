@@ -115,6 +115,7 @@ void ImpactRun::skip_free_flight(ApproachCache& cache) {
     if (!s.coupling.x_at_solve.empty()) s.coupling.x_at_solve.push_back(x_start);
   }
   restore(s);
+  shared_steps_ = start->dem.step;
 }
 
 }  // namespace agglo::impact

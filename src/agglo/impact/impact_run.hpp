@@ -34,6 +34,8 @@ class ImpactRun {
 
   // Runs of one case may share their free flight before contact (approach_cache.hpp): set before run().
   void share_free_flight(ApproachCache* cache) { approach_ = cache; }
+  // Steps of the free flight taken from that cache instead of integrated (0: none).
+  long shared_steps() const { return shared_steps_; }
 
   double since_launch() const { return sys_.time() - at_.t_launch; }
   long steps() const { return sys_.steps(); }
@@ -76,6 +78,7 @@ class ImpactRun {
   dem::Particles launch_agg_;               // the agglomerate at the launch, at rest (breakage.hpp)
   std::vector<ContactEdge> launch_edges_;   // its contacts
   ApproachCache* approach_ = nullptr;       // the case's shared free flight, if any
+  long shared_steps_ = 0;
 };
 
 // The case's DEM parameters with the time step of its runs (time_step: the projectile, added after the
