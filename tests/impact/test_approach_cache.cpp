@@ -44,15 +44,17 @@ End run(const ImpactCase& c, const dem::Particles& relaxed, double v, ApproachCa
   return e;
 }
 
-// Every component of positions, velocities, spins, forces and torques equal (bits, but the sign of zero).
-bool same_particles(const dem::Particles& a, const dem::Particles& b) {
+// Every component equal (bits, but the sign of zero).
+bool same_vectors(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   if (a.size() != b.size()) return false;
-  auto same = [](const Vec3& u, const Vec3& w) { return u.x == w.x && u.y == w.y && u.z == w.z; };
   for (std::size_t k = 0; k < a.size(); ++k)
-    if (!same(a.x[k], b.x[k]) || !same(a.v[k], b.v[k]) || !same(a.w[k], b.w[k]) || !same(a.f[k], b.f[k]) ||
-        !same(a.t[k], b.t[k]))
-      return false;
+    if (!(a[k].x == b[k].x && a[k].y == b[k].y && a[k].z == b[k].z)) return false;
   return true;
+}
+
+bool same_particles(const dem::Particles& a, const dem::Particles& b) {
+  return same_vectors(a.x, b.x) && same_vectors(a.v, b.v) && same_vectors(a.w, b.w) && same_vectors(a.f, b.f) &&
+         same_vectors(a.t, b.t);
 }
 
 }  // namespace shared_flight
@@ -80,6 +82,30 @@ TEST(ApproachCache, RunsFromTheCacheEndInTheSameState) {
         EXPECT_EQ(own.outcome.es_solves, shared.outcome.es_solves) << at;
       }
     }
+  }
+}
+
+// The spectral solver (kappa_p = 15, error-controlled re-solves; cut short): the coupling state (held forces,
+// warm start, adapted threshold) comes from the cache with the agglomerate's, and the projectile (kappa_p = 1,
+// uncharged) stays outside the solve.
+TEST(ApproachCache, SpectralRunsEndInTheSameState) {
+  ImpactCase c = shared_flight::load_case("seed000_charged_tetrahedron_k15.toml",
+                                          {"time.after_contact=2e-5", "projectile.gap_radii=0.3",
+                                           "time.relax_time=2e-5", "electrostatics.target_accuracy=1e-2"});
+  ASSERT_TRUE(ApproachCache::applies(c));
+  const dem::Particles relaxed = relaxed_agglomerate(c);
+  ApproachCache cache(c, relaxed);
+  for (double v : {0.1}) {
+    const shared_flight::End own = shared_flight::run(c, relaxed, v, nullptr);
+    const shared_flight::End shared = shared_flight::run(c, relaxed, v, &cache);
+    EXPECT_GT(shared.shared, own.approach_steps - 2 * ApproachCache::kStride) << v;
+    EXPECT_GT(own.outcome.es_solves, 0) << v;
+    EXPECT_TRUE(shared_flight::same_particles(own.state.dem.particles, shared.state.dem.particles)) << v;
+    EXPECT_EQ(own.outcome.steps, shared.outcome.steps) << v;
+    EXPECT_EQ(own.outcome.es_solves, shared.outcome.es_solves) << v;
+    EXPECT_TRUE(shared_flight::same_vectors(own.state.coupling.force, shared.state.coupling.force)) << v;
+    EXPECT_EQ(own.state.coupling.solution_energy, shared.state.coupling.solution_energy) << v;
+    EXPECT_EQ(own.state.coupling.fraction, shared.state.coupling.fraction) << v;
   }
 }
 
