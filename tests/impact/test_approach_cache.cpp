@@ -109,6 +109,23 @@ TEST(ApproachCache, SpectralRunsEndInTheSameState) {
   }
 }
 
+// Beyond its memory budget the cache keeps no more states: a run takes what there is and integrates the rest.
+TEST(ApproachCache, ABudgetOfAFewStates) {
+  ImpactCase c = shared_flight::load_case("seed000_neutral_tetrahedron.toml");
+  c.time.bisection = true;
+  const dem::Particles relaxed = relaxed_agglomerate(c);
+  ApproachCache one(c, relaxed, 1.0);  // bytes: the first state only
+  EXPECT_NE(one.at(0), nullptr);
+  EXPECT_EQ(one.at(1), nullptr);
+  ApproachCache few(c, relaxed, 1e4);  // a few states of the tetrahedron (about 2 kB each)
+  const shared_flight::End own = shared_flight::run(c, relaxed, 0.02, nullptr);
+  const shared_flight::End shared = shared_flight::run(c, relaxed, 0.02, &few);
+  EXPECT_GT(shared.shared, 0);
+  EXPECT_LT(shared.shared, own.approach_steps / 2);
+  EXPECT_TRUE(shared_flight::same_particles(own.state.dem.particles, shared.state.dem.particles));
+  EXPECT_EQ(own.outcome.steps, shared.outcome.steps);
+}
+
 TEST(ApproachCache, TheComparisonResolvesTheState) {
   ImpactCase c = shared_flight::load_case("seed000_neutral_tetrahedron.toml");
   c.time.bisection = true;

@@ -10,7 +10,8 @@
 
 namespace agglo::impact {
 
-ApproachCache::ApproachCache(const ImpactCase& c, const dem::Particles& agglomerate) : c_(c), agglomerate_(agglomerate) {}
+ApproachCache::ApproachCache(const ImpactCase& c, const dem::Particles& agglomerate, double budget)
+    : c_(c), agglomerate_(agglomerate), budget_(budget) {}
 
 ApproachCache::~ApproachCache() = default;
 
@@ -20,9 +21,28 @@ bool ApproachCache::applies(const ImpactCase& c) {
          !d.gas.enabled && (!c.electrostatics || (c.coupling.grounded.empty() && c.coupling.es.hold != "pair_corrected"));
 }
 
+namespace {
+
+// The heap memory of a kept state, roughly [bytes].
+double kept_bytes(const ApproachCache::Kept& k) {
+  const auto& p = k.dem.particles;
+  const auto& c = k.coupling;
+  const double n = static_cast<double>(p.size());
+  return sizeof(k) + n * (6.0 * sizeof(Vec3) + 5.0 * sizeof(double) + sizeof(std::uint32_t)) +
+         static_cast<double>(k.dem.neighbors.pairs.size() * sizeof(dem::Pair)) +
+         static_cast<double>((c.force.size() + c.torque.size() + c.x_at_solve.size() + c.n_s.size()) * sizeof(Vec3)) +
+         static_cast<double>((c.visible.size() + c.f_s.size() + c.u_s.size() + c.warm.ints.size() + c.warm.values.size()) * 8);
+}
+
+}  // namespace
+
 std::shared_ptr<const ApproachCache::Kept> ApproachCache::at(std::size_t m) {
   const std::lock_guard<std::mutex> lock(mutex_);
-  while (kept_.size() <= m) extend();
+  while (kept_.size() <= m) {
+    if (!kept_.empty() && kept_.size() >= limit_) return nullptr;
+    extend();
+    if (kept_.size() == 1) limit_ = static_cast<std::size_t>(std::max(1.0, budget_ / kept_bytes(*kept_.front())));
+  }
   return kept_[m];
 }
 
@@ -89,7 +109,7 @@ void ImpactRun::skip_free_flight(ApproachCache& cache) {
   Vec3 x_start;
   for (std::size_t m = 1; projectile_clear(*k, x); ++m) {
     k = cache.at(m);
-    if (!(k->dem.time - at_.t_launch < max_approach_)) break;  // the approach would have ended before
+    if (!k || !(k->dem.time - at_.t_launch < max_approach_)) break;  // the approach would have ended before
     start = k;
     x_start = x;
   }

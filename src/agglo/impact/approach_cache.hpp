@@ -32,6 +32,9 @@ namespace agglo::impact {
 class ApproachCache {
  public:
   static constexpr long kStride = 64;  // steps between kept states
+  // Memory the kept states may take [bytes]: a large agglomerate with the spectral solver's warm start keeps
+  // fewer (its runs then integrate the rest of their approach themselves).
+  static constexpr double kBudget = 128.0 * 1024.0 * 1024.0;
 
   // The agglomerate after m kStride steps from the launch.
   struct Kept {
@@ -41,8 +44,8 @@ class ApproachCache {
     double reach = 0.0;  // largest distance a particle moves from here over the next kStride steps [m]
   };
 
-  // `c` and `agglomerate` (the launch state of the runs) must outlive the cache.
-  ApproachCache(const ImpactCase& c, const dem::Particles& agglomerate);
+  // `c` and `agglomerate` (the launch state of the runs) must outlive the cache; `budget`: bytes of kept states.
+  ApproachCache(const ImpactCase& c, const dem::Particles& agglomerate, double budget = kBudget);
   ~ApproachCache();
   ApproachCache(const ApproachCache&) = delete;
   ApproachCache& operator=(const ApproachCache&) = delete;
@@ -51,7 +54,7 @@ class ApproachCache {
   // projectile's charge and permittivity are checked by the run).
   static bool applies(const ImpactCase& c);
   // Kept state m, integrating further when needed (thread-safe; the states do not depend on the order
-  // in which runs ask for them).
+  // in which runs ask for them); null beyond the memory budget.
   std::shared_ptr<const Kept> at(std::size_t m);
 
  private:
@@ -63,6 +66,8 @@ class ApproachCache {
   std::unique_ptr<dem::ExternalForce> es_;
   std::unique_ptr<dem::DemSystem> sys_;
   std::vector<std::shared_ptr<const Kept>> kept_;
+  double budget_;
+  std::size_t limit_ = 0;  // kept states the budget allows (set by the first)
 };
 
 }  // namespace agglo::impact
