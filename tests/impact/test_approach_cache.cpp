@@ -61,13 +61,14 @@ bool same_particles(const dem::Particles& a, const dem::Particles& b) {
 
 TEST(ApproachCache, RunsFromTheCacheEndInTheSameState) {
   for (const std::string name : {"seed000_neutral_tetrahedron.toml", "seed000_charged_tetrahedron_k1.toml"}) {
+    const ImpactCase base = shared_flight::load_case(name);
+    ASSERT_TRUE(ApproachCache::applies(base));
+    const dem::Particles relaxed = relaxed_agglomerate(base);
+    ApproachCache cache(base, relaxed);  // one cache for both offsets, as impact_batch shares it
     for (double offset : {0.05, -0.2}) {
-      ImpactCase c = shared_flight::load_case(name);
+      ImpactCase c = base;
       c.projectile.offset_radii = offset;
       c.time.bisection = true;
-      ASSERT_TRUE(ApproachCache::applies(c));
-      const dem::Particles relaxed = relaxed_agglomerate(c);
-      ApproachCache cache(c, relaxed);
       for (double v : {0.02, 0.125, 0.175, 0.2, 0.3}) {
         const shared_flight::End own = shared_flight::run(c, relaxed, v, nullptr), shared = shared_flight::run(c, relaxed, v, &cache);
         const std::string at = name + " offset " + std::to_string(offset) + " v " + std::to_string(v);
