@@ -86,21 +86,30 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
   visible_.clear();
   for (std::size_t k = 0; k < p.size(); ++k)
     if (p.q[k] != 0.0 || p.kappa[k] != s_.es.medium_permittivity) visible_.push_back(k);
-  std::vector<Vec3> x;
-  std::vector<double> radius, q, kappa;
-  for (auto k : visible_) {
-    x.push_back(p.x[k]);
-    radius.push_back(p.r[k]);
-    q.push_back(p.q[k]);
-    kappa.push_back(p.kappa[k]);
+  // The visible spheres and their mirror images, in scratch arrays kept between solves (no allocation).
+  const std::size_t n_real = visible_.size(), n_all = n_real * (1 + s_.grounded.size());
+  std::vector<Vec3>& x = solve_x_;
+  std::vector<double>& radius = solve_r_;
+  std::vector<double>& q = solve_q_;
+  std::vector<double>& kappa = solve_kappa_;
+  x.resize(n_all);
+  radius.resize(n_all);
+  q.resize(n_all);
+  kappa.resize(n_all);
+  for (std::size_t a = 0; a < n_real; ++a) {
+    const std::size_t k = visible_[a];
+    x[a] = p.x[k];
+    radius[a] = p.r[k];
+    q[a] = p.q[k];
+    kappa[a] = p.kappa[k];
   }
-  const std::size_t n_real = x.size();
+  std::size_t m = n_real;
   for (const auto& w : s_.grounded)  // mirror spheres (electrostatic_coupling.hpp)
-    for (std::size_t a = 0; a < n_real; ++a) {
-      x.push_back(x[a] - 2.0 * w.height(x[a]) * w.normal);
-      radius.push_back(radius[a]);
-      q.push_back(-q[a]);
-      kappa.push_back(kappa[a]);
+    for (std::size_t a = 0; a < n_real; ++a, ++m) {
+      x[m] = x[a] - 2.0 * w.height(x[a]) * w.normal;
+      radius[m] = radius[a];
+      q[m] = -q[a];
+      kappa[m] = kappa[a];
     }
   es::Problem prob;
   try {
@@ -115,10 +124,13 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
   if (uniform && !coulomb_) make_fast_path();
   es::Solution sub;
   if (!prob.spheres.empty()) sub = uniform ? coulomb_->solve(prob) : solver_->solve(prob);
-  last_ = sub;
+  last_.energy = sub.energy;
+  last_.stats = std::move(sub.stats);
   if (!s_.grounded.empty()) last_.energy *= 0.5;  // the real half of the mirrored system
-  last_.force.assign(p.size(), Vec3{});
-  last_.torque.assign(p.size(), Vec3{});
+  last_.force.resize(p.size());
+  last_.torque.resize(p.size());
+  std::fill(last_.force.begin(), last_.force.end(), Vec3{});
+  std::fill(last_.torque.begin(), last_.torque.end(), Vec3{});
   for (std::size_t a = 0; a < visible_.size(); ++a) {
     last_.force[visible_[a]] = sub.force[a];
     last_.torque[visible_[a]] = sub.torque[a];

@@ -207,8 +207,9 @@ void relax_projectile(const ImpactCase& c, dem::Particles& p, std::size_t first,
 }
 
 ImpactOutcome run_impact(const ImpactCase& c, double speed, Recorder* rec, const ProgressFn& progress,
-                         const dem::Particles* relaxed) {
+                         const dem::Particles* relaxed, ApproachCache* approach) {
   ImpactRun run(c, relaxed ? *relaxed : relaxed_agglomerate(c), speed, rec, progress);
+  run.share_free_flight(approach);
   return run.run();
 }
 

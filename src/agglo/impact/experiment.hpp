@@ -76,9 +76,12 @@ std::unique_ptr<dem::ExternalForce> make_electrostatic_force(const ImpactCase& c
 // `progress(fraction, simulated time)` is called now and then (may be empty).
 using ProgressFn = std::function<void(double, double)>;
 // `relaxed`: the agglomerate from relaxed_agglomerate(c) (computed here when null); pass it to
-// reuse one relaxation for many speeds.
+// reuse one relaxation for many speeds. `approach`: the free flight shared by the runs of the case
+// (approach_cache.hpp, made from the same `relaxed`; null: each run integrates its own).
+class ApproachCache;
 ImpactOutcome run_impact(const ImpactCase& c, double speed, Recorder* rec = nullptr,
-                               const ProgressFn& progress = {}, const dem::Particles* relaxed = nullptr);
+                               const ProgressFn& progress = {}, const dem::Particles* relaxed = nullptr,
+                               ApproachCache* approach = nullptr);
 
 // The agglomerate alone, relaxed under electrostatics (as built when there is none), at rest.
 // `progress(fraction of relax_time, simulated time)` every 50 steps (may be empty). The calling thread's

@@ -55,15 +55,13 @@ double wall_gap(const dem::DemSystem& sys) {
   return std::max(gap, 0.0);
 }
 
-// The case's DEM parameters with the time step of its runs (time_step: the projectile, added after the
-// system is built, included).
+}  // namespace
+
 dem::DemParams run_params(const ImpactCase& c) {
   dem::DemParams d = c.dem;
   d.dt = time_step(c);
   return d;
 }
-
-}  // namespace
 
 ImpactRun::ImpactRun(const ImpactCase& c, dem::Particles agglomerate, double speed, Recorder* rec,
                      ProgressFn progress)
@@ -100,7 +98,10 @@ ImpactRun::~ImpactRun() = default;
 
 ImpactOutcome ImpactRun::run(const BoundaryFn& boundary) {
   try {
-    if (at_.phase == ImpactPhase::launch) launch();
+    if (at_.phase == ImpactPhase::launch) {
+      launch();
+      if (approach_) skip_free_flight(*approach_);
+    }
     if (boundary) boundary(*this);
     while (at_.phase != ImpactPhase::done) {
       advance();

@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 
+#include "agglo/impact/approach_cache.hpp"
 #include "agglo/impact/impact_state.hpp"
 
 namespace agglo::impact {
@@ -31,12 +32,19 @@ class ImpactRun {
   // Integrates to the classification (continuing a restored state) and returns the outcome.
   ImpactOutcome run(const BoundaryFn& boundary = {});
 
+  // Runs of one case may share their free flight before contact (approach_cache.hpp): set before run().
+  void share_free_flight(ApproachCache* cache) { approach_ = cache; }
+  // Steps of the free flight taken from that cache instead of integrated (0: none).
+  long shared_steps() const { return shared_steps_; }
+
   double since_launch() const { return sys_.time() - at_.t_launch; }
   long steps() const { return sys_.steps(); }
   bool finished() const { return at_.phase == ImpactPhase::done; }
 
  private:
   void launch();
+  void skip_free_flight(ApproachCache& cache);  // approach_cache.cpp
+  bool projectile_clear(const ApproachCache::Kept& k, Vec3& x) const;
   void advance();
   void approach_step();
   void end_approach(bool touched);
@@ -69,7 +77,13 @@ class ImpactRun {
   ImpactProgress at_;  // phase, segment, output clocks, watchdog
   dem::Particles launch_agg_;               // the agglomerate at the launch, at rest (breakage.hpp)
   std::vector<ContactEdge> launch_edges_;   // its contacts
+  ApproachCache* approach_ = nullptr;       // the case's shared free flight, if any
+  long shared_steps_ = 0;
 };
+
+// The case's DEM parameters with the time step of its runs (time_step: the projectile, added after the
+// system is built, included).
+dem::DemParams run_params(const ImpactCase& c);
 
 // Adds the likely input cause to a DEM blow-up message (experiment.cpp).
 [[noreturn]] void rethrow_with_cause(const dem::DemInstability& e);

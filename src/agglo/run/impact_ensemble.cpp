@@ -4,6 +4,7 @@
 
 #include "agglo/core/error.hpp"
 #include "agglo/impact/agglomerate.hpp"
+#include "agglo/impact/approach_cache.hpp"
 #include "agglo/impact/orientation_set.hpp"
 #include "agglo/writers/impact.hpp"
 
@@ -17,16 +18,20 @@ std::string impact_job_key(const impact::ImpactJob& b) {
 }
 
 impact::ImpactBatch impact_batch(const impact::ImpactCase& c, const dem::Particles& relaxed, EnsembleOptions opt) {
-  return [&c, &relaxed, opt](const std::vector<impact::ImpactJob>& batch) {
+  // One free flight before contact for every run from `relaxed` as oriented (impact/approach_cache.hpp).
+  std::shared_ptr<impact::ApproachCache> approach;
+  if (impact::ApproachCache::applies(c)) approach = std::make_shared<impact::ApproachCache>(c, relaxed);
+  return [&c, &relaxed, opt, approach](const std::vector<impact::ImpactJob>& batch) {
     std::vector<Job> jobs;
     for (const auto& b : batch) {
-      jobs.push_back({impact_job_key(b), [&c, &relaxed, b](const JobContext& ctx) {
+      jobs.push_back({impact_job_key(b), [&c, &relaxed, b, approach](const JobContext& ctx) {
                         auto ck = c;
                         ck.projectile.offset_radii = b.offset_radii;
                         ck.time.bisection = b.bisection;
                         auto poll = [&ctx](double, double) { throw_if_cancelled(ctx.cancel); };
                         if (b.orientations <= 1)
-                          return writers::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &relaxed));
+                          return writers::outcome_json(
+                              impact::run_impact(ck, b.speed, nullptr, poll, &relaxed, approach.get()));
                         // Rigid rotation of the relaxed agglomerate: contact overlaps and pair
                         // distances are unchanged, so it is still relaxed (no external field). An
                         // aggregate projectile takes a random orientation of its own for each.
