@@ -30,52 +30,65 @@ int pivot_soff(int l, int q) { return q ? pivot_scount(0, l) : 0; }
 int pivot_cpos(int l, int m) { return pivot_coff(l, m & 1) + m / 2; }
 int pivot_spos(int l, int m) { return pivot_soff(l, m & 1) + (m & 1 ? (m - 1) / 2 : m / 2 - 1); }
 
-// Orders 0..mc of degree l of in1, in2 into c, s (the other orders of c, s set to zero).
+// The z turns below (pivot_turn_forward, pivot_turn_inverse) in two versions, for AVX2 where the processor
+// has it (four numbers a step) and the baseline; no fused multiply-add in either, so the same bits.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(AGGLO_NO_AVX2)
+#define AGGLO_PIVOT_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define AGGLO_PIVOT_CLONES
+#endif
+
+// Orders 0..mc of degree l of in1, in2 into c, s (the other orders of c, s set to zero), one parity run at
+// a time (pivot_cpos, pivot_spos).
 void pivot_load(int l, int mc, const double* in1, const double* in2, double* c, double* s) {
-  std::fill(c, c + 2 * (l + 1), 0.0);
-  std::fill(s, s + 2 * l, 0.0);
-  c[0] = in1[idx(l, 0)];
-  c[1] = in2[idx(l, 0)];
-  for (int m = 1; m <= mc; ++m) {
-    const int pc = 2 * pivot_cpos(l, m), ps = 2 * pivot_spos(l, m);
-    c[pc] = in1[idx(l, m)];
-    c[pc + 1] = in2[idx(l, m)];
-    s[ps] = in1[idx(l, -m)];
-    s[ps + 1] = in2[idx(l, -m)];
+  for (int q = 0; q < 2; ++q) {
+    double* cp = c + 2 * pivot_coff(l, q);
+    int m = q;
+    for (; m <= mc; m += 2, cp += 2) cp[0] = in1[idx(l, m)], cp[1] = in2[idx(l, m)];
+    for (; m <= l; m += 2, cp += 2) cp[0] = cp[1] = 0.0;
+    double* sp = s + 2 * pivot_soff(l, q);
+    for (m = 2 - q; m <= mc; m += 2, sp += 2) sp[0] = in1[idx(l, -m)], sp[1] = in2[idx(l, -m)];
+    for (; m <= l; m += 2, sp += 2) sp[0] = sp[1] = 0.0;
   }
 }
 
-// Orders 0..mc of c, s into degree l of out1, out2 (written, or added with `add`).
+// Orders 0..mc of c, s into degree l of out1, out2 (written, or added with `add`), one parity run at a time.
 void pivot_store(int l, int mc, const double* c, const double* s, bool add, double* out1, double* out2) {
   auto put = [add](double& o, double v) { o = add ? o + v : v; };
-  put(out1[idx(l, 0)], c[0]);
-  put(out2[idx(l, 0)], c[1]);
-  for (int m = 1; m <= mc; ++m) {
-    const int pc = 2 * pivot_cpos(l, m), ps = 2 * pivot_spos(l, m);
-    put(out1[idx(l, m)], c[pc]);
-    put(out2[idx(l, m)], c[pc + 1]);
-    put(out1[idx(l, -m)], s[ps]);
-    put(out2[idx(l, -m)], s[ps + 1]);
+  for (int q = 0; q < 2; ++q) {
+    const double* cp = c + 2 * pivot_coff(l, q);
+    for (int m = q; m <= mc; m += 2, cp += 2) put(out1[idx(l, m)], cp[0]), put(out2[idx(l, m)], cp[1]);
+    const double* sp = s + 2 * pivot_soff(l, q);
+    for (int m = 2 - q; m <= mc; m += 2, sp += 2) put(out1[idx(l, -m)], sp[0]), put(out2[idx(l, -m)], sp[1]);
   }
 }
 
 // z rotation of orders 1..mc in place: forward (FrameRotation::to_frame: c' = c cos + s sin,
 // s' = -c sin + s cos) or its inverse (from_frame: c = c' cos - s' sin, s = c' sin + s' cos).
-// Orders of one parity q are contiguous in c and s (pivot_cpos, pivot_spos), so each parity is one run
-// from its first order m0 = 2 - q (the same arithmetic per order as one loop over m = 1..mc).
-void pivot_turn(int l, int mc, const double* cs, const double* sn, bool inverse, double* c, double* s) {
-  const double sg = inverse ? -1.0 : 1.0;
+// Orders of one parity q are contiguous in c and s (pivot_cpos, pivot_spos) and in the table (TurnTable),
+// so each parity is one element-wise pass from its first order m0 = 2 - q (the same arithmetic per order,
+// so the same bits, as one loop over m = 1..mc: a sign flip of a product is exact).
+template <bool Inverse>
+inline __attribute__((always_inline)) void pivot_turn_runs(int l, int mc, const TurnTable& t, double* c, double* s) {
   for (int q = 0; q < 2; ++q) {
-    const int m0 = 2 - q;
-    double* cp = c + 2 * pivot_cpos(l, m0);
-    double* sp = s + 2 * pivot_spos(l, m0);
-    for (int m = m0; m <= mc; m += 2, cp += 2, sp += 2)
-      for (int v = 0; v < 2; ++v) {
-        const double x = cp[v], y = sp[v];
-        cp[v] = x * cs[m] + sg * y * sn[m];
-        sp[v] = -sg * x * sn[m] + y * cs[m];
-      }
+    const int n = 2 * (q ? (mc + 1) / 2 : mc / 2);
+    double* __restrict cp = c + 2 * pivot_cpos(l, 2 - q);
+    double* __restrict sp = s + 2 * pivot_spos(l, 2 - q);
+    const double* __restrict cs = t.run(false, q);
+    const double* __restrict sn = t.run(true, q);
+    for (int e = 0; e < n; ++e) {
+      const double x = cp[e], y = sp[e];
+      cp[e] = Inverse ? x * cs[e] - y * sn[e] : x * cs[e] + y * sn[e];
+      sp[e] = Inverse ? x * sn[e] + y * cs[e] : y * cs[e] - x * sn[e];
+    }
   }
+}
+
+AGGLO_PIVOT_CLONES void pivot_turn_forward(int l, int mc, const TurnTable& t, double* c, double* s) {
+  pivot_turn_runs<false>(l, mc, t, c, s);
+}
+AGGLO_PIVOT_CLONES void pivot_turn_inverse(int l, int mc, const TurnTable& t, double* c, double* s) {
+  pivot_turn_runs<true>(l, mc, t, c, s);
 }
 
 // Quarter turn Y of degree l (to_frame blocks): orders <= mo of yc, ys from the orders <= mc of c, s.
@@ -137,12 +150,23 @@ void PivotTables::build(int L) {
       q_.insert(q_.end(), h.begin(), h.end());
       off_[slot + 1] = q_.size();
     }
-  cq_.resize(L + 1);
-  sq_.resize(L + 1);
+  std::vector<double> cq(L + 1), sq(L + 1);
   constexpr double kc[4] = {1.0, 0.0, -1.0, 0.0}, ks[4] = {0.0, -1.0, 0.0, 1.0};  // cos, sin(-m pi/2)
   for (int m = 0; m <= L; ++m) {
-    cq_[m] = kc[m % 4];
-    sq_[m] = ks[m % 4];
+    cq[m] = kc[m % 4];
+    sq[m] = ks[m % 4];
+  }
+  quarter_.build(L, cq.data(), sq.data());
+}
+
+void TurnTable::build(int L, const double* cs, const double* sn) {
+  odd = 2 * (L / 2 + 1);
+  c.assign(std::size_t(odd + 2 * ((L + 1) / 2)), 0.0);
+  s.assign(c.size(), 0.0);
+  for (int m = 0; m <= L; ++m) {
+    const std::size_t at = std::size_t(m % 2 ? odd + m - 1 : m);
+    c[at] = c[at + 1] = cs[m];
+    s[at] = s[at + 1] = sn[m];
   }
 }
 
@@ -152,16 +176,15 @@ void PivotRotation::build(const Vec3& e, int L, int M) {
   const double rxy = std::hypot(e.x, e.y);
   const double a = ((rxy > 0) ? std::atan2(e.y, e.x) : 0.0) + 0.5 * constants::pi;
   const double b = std::atan2(rxy, e.z);
-  ca_.resize(L + 1);
-  sa_.resize(L + 1);
-  cb_.resize(L + 1);
-  sb_.resize(L + 1);
+  std::vector<double> ca(L + 1), sa(L + 1), cb(L + 1), sb(L + 1);
   for (int m = 0; m <= L; ++m) {
-    ca_[m] = std::cos(m * a);
-    sa_[m] = std::sin(m * a);
-    cb_[m] = std::cos(m * b);
-    sb_[m] = std::sin(m * b);
+    ca[m] = std::cos(m * a);
+    sa[m] = std::sin(m * a);
+    cb[m] = std::cos(m * b);
+    sb[m] = std::sin(m * b);
   }
+  a_.build(L, ca.data(), sa.data());
+  b_.build(L, cb.data(), sb.data());
 }
 
 // Z(-pi/2) Y^-1 Z(b) Y Z(a + pi/2), degree by degree (rotations keep the degree).
@@ -171,11 +194,11 @@ void PivotRotation::to_frame2(const PivotTables& T, int Lmax, int Mmax, const do
   for (int l = 0; l <= Lmax; ++l) {
     const int mm = std::min({l, M_, Mmax});
     pivot_load(l, l, in1, in2, b.c, b.s);
-    pivot_turn(l, l, ca_.data(), sa_.data(), false, b.c, b.s);
+    pivot_turn_forward(l, l, a_, b.c, b.s);
     pivot_forward(T, l, l, l, b.c, b.s, b.yc, b.ys);
-    pivot_turn(l, l, cb_.data(), sb_.data(), false, b.yc, b.ys);
+    pivot_turn_forward(l, l, b_, b.yc, b.ys);
     pivot_backward(T, l, mm, b.yc, b.ys, b.c, b.s);
-    pivot_turn(l, mm, T.cos_quarter(), T.sin_quarter(), false, b.c, b.s);
+    pivot_turn_forward(l, mm, T.quarter(), b.c, b.s);
     pivot_store(l, mm, b.c, b.s, false, out1, out2);
   }
 }
@@ -188,11 +211,11 @@ void PivotRotation::from_frame2(const PivotTables& T, int Lmax, int Mmax, const 
   for (int l = 0; l <= Lmax; ++l) {
     const int mm = std::min({l, M_, Mmax});
     pivot_load(l, mm, in1, in2, b.c, b.s);
-    pivot_turn(l, mm, T.cos_quarter(), T.sin_quarter(), true, b.c, b.s);
+    pivot_turn_inverse(l, mm, T.quarter(), b.c, b.s);
     pivot_forward(T, l, mm, l, b.c, b.s, b.yc, b.ys);
-    pivot_turn(l, l, cb_.data(), sb_.data(), true, b.yc, b.ys);
+    pivot_turn_inverse(l, l, b_, b.yc, b.ys);
     pivot_backward(T, l, l, b.yc, b.ys, b.c, b.s);
-    pivot_turn(l, l, ca_.data(), sa_.data(), true, b.c, b.s);
+    pivot_turn_inverse(l, l, a_, b.c, b.s);
     pivot_store(l, l, b.c, b.s, add, out1, out2);
   }
 }

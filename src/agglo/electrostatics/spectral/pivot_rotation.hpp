@@ -23,6 +23,18 @@
 
 namespace agglo::es::sh {
 
+// cos(m phi), sin(m phi), m = 0..L (given as cs, sn), in the order the z rotation of a degree reads them (its buffers hold
+// the orders of one parity in a run, each order's two vectors side by side): the even orders m at [m, m + 1],
+// the odd ones at [odd + m - 1, odd + m], each number twice (one copy per vector), so that the rotation of
+// a run is an element-wise pass over contiguous numbers.
+struct TurnTable {
+  std::vector<double> c, s;
+  int odd = 0;
+  void build(int L, const double* cs, const double* sn);
+  // cos (sin = false) or sin of the run of parity q, from its first order 2 - q.
+  const double* run(bool sin, int q) const { return (sin ? s : c).data() + (q ? odd : 2); }
+};
+
 // The quarter turn Y = T[R_y(-pi/2)] up to degree L (all orders), stored by parity: d^l(pi/2) obeys
 // d_{m',-m} = (-1)^(l+m') d_{m',m}, so the cos block of degree l (row m', column m) vanishes unless
 // l + m' + m is even and the sin block unless it is odd. Each block is kept as two dense matrices, rows
@@ -45,15 +57,14 @@ class PivotTables {
     return {&q_[off_[k]], ld_[k]};
   }
   // cos, sin of -m pi/2 (exact: 0, +-1), m = 0..L: the last z rotation of to_frame.
-  const double* cos_quarter() const { return cq_.data(); }
-  const double* sin_quarter() const { return sq_.data(); }
+  const TurnTable& quarter() const { return quarter_; }
 
  private:
   int L_ = -1;
   std::vector<double> q_;
   std::vector<std::size_t> off_;
   std::vector<int> ld_;
-  std::vector<double> cq_, sq_;
+  TurnTable quarter_;
 };
 
 class PivotRotation {
@@ -70,7 +81,7 @@ class PivotRotation {
 
  private:
   int L_ = -1, M_ = -1;
-  std::vector<double> ca_, sa_, cb_, sb_;  // cos, sin of m (a + pi/2) and of m b, m = 0..L
+  TurnTable a_, b_;  // cos, sin of m (a + pi/2) and of m b, m = 0..L
 };
 
 }  // namespace agglo::es::sh
