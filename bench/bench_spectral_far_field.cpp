@@ -18,7 +18,9 @@
 // bench/spectral_far_field.sh runs it and prints the per-solve and per-product ratios.
 #include <benchmark/benchmark.h>
 
+#include <atomic>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -26,6 +28,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -271,6 +274,33 @@ const bool kAcceptScanRows = [] {
   }
   return true;
 }();
+
+// "machine/core_handoff": how long one core takes to hand a cache line to the other (two threads pass a
+// token through one atomic, kHandoffs times each way; counter ns_per_handoff). On the project's two-vCPU
+// machine it is bimodal: about 25-35 ns when the two vCPUs share a last-level cache and 160-180 ns when
+// they do not, and the two-thread accept_k15 solve follows it (about 0.78 against 1.04 s): run it next
+// to the acceptance rows to tell which machine a timing saw (docs/electrostatics.md, "Tenth session").
+// Needs two free cores: on a busier machine a waiting thread may hold the core the other one needs.
+constexpr long kHandoffs = 1000000;
+void core_handoff(benchmark::State& st) {
+  for (auto _ : st) {
+    std::atomic<long> token{0};
+    auto pass = [&token](long first) {
+      for (long i = first; i < 2 * kHandoffs; i += 2) {
+        while (token.load(std::memory_order_acquire) != i) {
+        }
+        token.store(i + 1, std::memory_order_release);
+      }
+    };
+    const auto t0 = std::chrono::steady_clock::now();
+    std::thread other(pass, 1);
+    pass(0);
+    other.join();
+    const std::chrono::duration<double, std::nano> dt = std::chrono::steady_clock::now() - t0;
+    st.counters["ns_per_handoff"] = dt.count() / (2.0 * kHandoffs);
+  }
+}
+BENCHMARK(core_handoff)->Name("machine/core_handoff")->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 BENCHMARK_CAPTURE(solve, bem_k2.5, std::string("bem"), 2.5)
     ->ArgName("N")->Arg(10)->Arg(100)->Arg(1000)->Iterations(1)->MeasureProcessCPUTime()->Unit(benchmark::kSecond);
