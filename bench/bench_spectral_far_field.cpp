@@ -277,19 +277,23 @@ const bool kAcceptScanRows = [] {
 
 // "machine/core_handoff": how long one core takes to hand a cache line to the other (two threads pass a
 // token through one atomic, kHandoffs times each way; counter ns_per_handoff). On the project's two-vCPU
-// machine it is bimodal: about 25-35 ns when the two vCPUs share a last-level cache and 160-180 ns when
+// machine it is bimodal: about 25-40 ns when the two vCPUs share a last-level cache and 160-180 ns when
 // they do not, and the two-thread accept_k15 solve follows it (about 0.78 against 1.04 s): run it next
 // to the acceptance rows to tell which machine a timing saw (docs/electrostatics.md, "Tenth session").
 // Needs two free cores: on a busier machine a waiting thread may hold the core the other one needs.
 constexpr long kHandoffs = 1000000;
 void core_handoff(benchmark::State& st) {
   for (auto _ : st) {
-    std::atomic<long> token{0};
-    auto pass = [&token](long first) {
+    struct alignas(128) Token {  // a cache line of its own (no other data on it)
+      std::atomic<long> v{0};
+    };
+    static Token token;
+    token.v.store(0);
+    auto pass = [](long first) {
       for (long i = first; i < 2 * kHandoffs; i += 2) {
-        while (token.load(std::memory_order_acquire) != i) {
+        while (token.v.load(std::memory_order_acquire) != i) {
         }
-        token.store(i + 1, std::memory_order_release);
+        token.v.store(i + 1, std::memory_order_release);
       }
     };
     const auto t0 = std::chrono::steady_clock::now();
