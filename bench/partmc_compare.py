@@ -204,6 +204,11 @@ def ratio_str(x):
     return f"{x:.1f}" if x >= 1 else f"{x:.2f}"
 
 
+def ratio_range(lo_hi, den):
+    """'a–b×' for the range lo_hi divided by den; '–' when den is zero (a run below the timer's 10 ms)."""
+    return f"{ratio_str(lo_hi[0] / den)}–{ratio_str(lo_hi[1] / den)}×" if den > 0 else "– (below 10 ms)"
+
+
 def pct(x, digits=2):
     return "–" if x is None or (isinstance(x, float) and math.isnan(x)) else f"{100 * x:+.{digits}f}"
 
@@ -292,11 +297,11 @@ def equal_error_table(groups, sels):
             n, g = hit
             mean_cpu = statistics.mean(g["user"])
             best = PARTMC_BEST_STEP.get(case)
-            best_cols = (f"{best['step']:g}, {fmt_range(best['user'])} | {ratio_str(best['user'][0] / mean_cpu)}–"
-                         f"{ratio_str(best['user'][1] / mean_cpu)}×") if best else "not measured | –"
+            best_cols = (f"{best['step']:g}, {fmt_range(best['user'])} | {ratio_range(best['user'], mean_cpu)}"
+                         if best else "not measured | –")
             lines.append(f"| {case} | {s} | {p['err'][2]:.2f} | {samples_str(n)} | {100 * g['rms']:.2f} ± "
                          f"{100 * g['rms'] / math.sqrt(2 * g['n']):.2f} | {fmt_range(g['user'])} | {fmt_range(p['user'])} "
-                         f"| {ratio_str(p['user'][0] / mean_cpu)}–{ratio_str(p['user'][1] / mean_cpu)}× | {best_cols} |")
+                         f"| {ratio_range(p['user'], mean_cpu)} | {best_cols} |")
     return lines
 
 

@@ -5,6 +5,8 @@
 #  2. Table 2 with the shipped cases, which carry a rounded point of the fitted set: v_crit of the neutral and
 #     kappa_p = 1 tetrahedron (the targets) and kappa_p = 2.5 and 15 (predictions, spectral solver);
 #  3. the U/U0 and R_g histories (seed Figs. 3d, 4d, 5) and the plots.
+# The three steps run side by side (below); calibration + Table 2 took 113-115 s on two idle cores
+# (docs/seed000.md, Cost).
 # Writes results/seed000/{calibration/,table2.csv,table2.json,*.png}.
 #   --ranges  also predicts kappa_p = 2.5 and 15 over the whole fitted set (calibrate.predict = "range": the
 #             best fit and the set's extreme points, 10 spectral bisections, about 1 h on 2 cores)
@@ -36,32 +38,41 @@ if [ "${SMOKE:-0}" = 1 ]; then
 fi
 mkdir -p "$OUT"
 start=$(date +%s)
-# Steps 1 and 2 are independent (the shipped cases carry the fitted point): they run side by side, the two
-# spectral bisections first, so that both cores stay busy while a bisection round waits for its slowest
-# (intact, full-length) run. Every bisection and the fit stay deterministic: the points each one tests
-# depend only on its own outcomes.
+# Steps 1-3 are independent (the shipped cases carry the fitted point) and run side by side: the four Table 2
+# bisections on one thread each (a bisection round is a chain of runs: on one thread vcrit.order = "top_down"
+# stops each round at its first intact speed), the two spectral ones first, as they take longest; the fit and
+# the histories at a lower priority (nice), so that they fill the cores the bisections leave idle instead of
+# delaying them. Every bisection and the fit stay deterministic: the points each one tests depend only on
+# its own outcomes.
 echo "== 1. calibration of (E, e) on the neutral and kappa_p = 1 tetrahedron, and"
-echo "== 2. Table 2 with the shipped cases (kappa_p = 2.5 and 15: predictions of the spectral solver)"
+echo "== 2. Table 2 with the shipped cases (kappa_p = 2.5 and 15: predictions of the spectral solver), and"
+echo "== 3. histories (seed Figs. 3d, 4d, 5)"
 pids=()
 for k in k15 k2p5 k1 neutral; do
   if [ $k = neutral ]; then c=cases/seed000_neutral_tetrahedron.toml; else c=cases/seed000_charged_tetrahedron_$k.toml; fi
-  $A -q --no-plots vcrit "$c" --overwrite --out "$OUT/vcrit_$k" "$@" &
+  $A -q --no-plots vcrit "$c" --threads 1 --set 'vcrit.order="top_down"' --overwrite --out "$OUT/vcrit_$k" "$@" &
   pids+=($!)
 done
+histories() {
+  nice -n 19 $A -q --no-plots collide cases/seed000_neutral_tetrahedron.toml --speed 0.175 --overwrite \
+    --out "$OUT/hist_neutral_0.175" "$@"
+  for k in k1 k15; do
+    nice -n 19 $A -q --no-plots collide cases/seed000_charged_tetrahedron_$k.toml --speed 0.18 --overwrite \
+      --out "$OUT/hist_${k}_0.18" "$@"
+  done
+}
+histories "$@" &
+hist=$!
 # --resume: an interrupted fit (or the fit of a run without --ranges) continues from its journal.
 mode=--overwrite
 [ -f "$OUT/calibration/journal.jsonl" ] && mode=--resume
-$A -q calibrate cases/calibrate_seed000_tetrahedron.toml --out "$OUT/calibration" $mode \
+nice -n 10 $A -q calibrate cases/calibrate_seed000_tetrahedron.toml --out "$OUT/calibration" $mode \
   --set "calibrate.predict=\"$predict\"" "${smoke_cal[@]}"
 cal=$(date +%s)
 for p in "${pids[@]}"; do wait "$p"; done
 end=$(date +%s)
+wait "$hist"
 echo "== calibration $((cal - start)) s; calibration + Table 2: $((end - start)) s"
-echo "== 3. histories (seed Figs. 3d, 4d, 5)"
-$A -q --no-plots collide cases/seed000_neutral_tetrahedron.toml --speed 0.175 --overwrite --out "$OUT/hist_neutral_0.175" "$@"
-for k in k1 k15; do
-  $A -q --no-plots collide cases/seed000_charged_tetrahedron_$k.toml --speed 0.18 --overwrite --out "$OUT/hist_${k}_0.18" "$@"
-done
 figures=()
 [ "${SMOKE:-0}" = 1 ] && figures=(--no-figures)
 /usr/bin/python3 scripts/plot_seed000.py "$OUT" "$((end - start))" "$((cal - start))" "${figures[@]}"

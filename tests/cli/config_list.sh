@@ -9,7 +9,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 $A config --list vcrit > "$T/vcrit" || fail "config --list vcrit"
 head -1 "$T/vcrit" | grep -q '^\[vcrit\] (vcrit, breakup)' || fail "header: $(head -1 "$T/vcrit")"
-[ "$(grep -c '^  vcrit\.' "$T/vcrit")" -eq 6 ] || fail "vcrit must list 6 keys: $(cat "$T/vcrit")"
+[ "$(grep -c '^  vcrit\.' "$T/vcrit")" -eq 7 ] || fail "vcrit must list 7 keys: $(cat "$T/vcrit")"
 grep -Eq '^  vcrit\.points_per_round +integer +- +2 +\[1, 64\] +speeds tried per bisection round' "$T/vcrit" \
   || fail "points_per_round line: $(grep points_per_round "$T/vcrit")"
 grep -Eq '^  vcrit\.v_min +real +m/s +0\.02 +\(0, 1000\] ' "$T/vcrit" || fail "v_min line"

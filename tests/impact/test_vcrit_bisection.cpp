@@ -19,7 +19,7 @@ TEST(VcritBisection, StopsWhenMidpointsDoNotMove) {
   spec.points_per_round = 2;
   const double v_star = 0.2345678901234567;
   long calls = 0;
-  auto batch = [&](const std::vector<double>& speeds) {
+  auto batch = [&](const std::vector<double>& speeds, const StopRule&) {
     std::vector<ImpactOutcome> out;
     for (double v : speeds) {
       ImpactOutcome o;

@@ -61,7 +61,7 @@ double closed_form(dem::WallMaterial w) {
 }
 
 VcritResult bisect_sticking(const ImpactCase& c) {
-  auto batch = [&](const std::vector<double>& speeds) {
+  auto batch = [&](const std::vector<double>& speeds, const StopRule&) {
     std::vector<ImpactOutcome> out;
     for (double v : speeds) out.push_back(run_impact(c, v));
     return out;

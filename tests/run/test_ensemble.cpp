@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <thread>
 #include <unistd.h>
 
 #include "agglo/core/error.hpp"
@@ -160,7 +161,7 @@ TEST(Vcrit, SpeedsTriedDoNotDependOnThreads) {
   spec.tolerance = 1e-3;
   spec.points_per_round = 2;
   auto batch_on = [](int threads) {
-    return [threads](const std::vector<double>& speeds) {
+    return [threads](const std::vector<double>& speeds, const impact::StopRule&) {
       std::vector<Job> jobs;
       for (double v : speeds)
         jobs.push_back({"", [v](const JobContext&) {
@@ -206,4 +207,54 @@ TEST(Ensemble, ErrorNamesTheFailedJobAndKeepsItsType) {
   } catch (const NumericalError& e) {
     EXPECT_EQ(std::string(e.what()), "job 'job 0' (all 4 jobs failed): NaN");
   }
+}
+
+// EnsembleOptions::stop_after: jobs after the first whose result meets it are not needed. On one thread
+// they never start; on several, the outcomes up to it are the same and a running later job sees
+// JobContext::superseded() and stops (its outcome marked skipped, no error).
+TEST(Ensemble, StopAfterSkipsTheJobsAfterTheFirstMatch) {
+  std::atomic<int> calls{0};
+  auto jobs = square_jobs(8, &calls);
+  EnsembleOptions opt{1};
+  opt.stop_after = [](const nlohmann::json& r) { return r.get<double>() == 9.0; };  // job 3
+  const auto one = run_jobs(jobs, opt);
+  EXPECT_EQ(calls.load(), 4);
+  for (std::size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(one[i].skipped, i > 3) << i;
+    EXPECT_FALSE(one[i].error);
+    if (i <= 3) {
+      EXPECT_EQ(one[i].result.get<double>(), static_cast<double>(i * i));
+    }
+  }
+  opt.threads = 4;
+  const auto four = run_jobs(jobs, opt);
+  for (std::size_t i = 0; i <= 3; ++i) EXPECT_EQ(four[i].result, one[i].result);
+  // Negative control: without the rule every job runs.
+  calls = 0;
+  (void)run_jobs(jobs, EnsembleOptions{1});
+  EXPECT_EQ(calls.load(), 8);
+}
+
+TEST(Ensemble, SupersededRunningJobStops) {
+  std::atomic<bool> job1_started{false};
+  std::vector<Job> jobs;
+  jobs.push_back({"first", [&](const JobContext&) {
+                    while (!job1_started) std::this_thread::yield();  // job 1 is running when this one ends
+                    return nlohmann::json("stop");
+                  }});
+  jobs.push_back({"second", [&](const JobContext& ctx) {
+                    job1_started = true;
+                    for (long k = 0; k < 600'000'000L; ++k) {  // bounded: fails the test instead of hanging
+                      if (ctx.superseded()) throw InterruptedError("superseded");
+                      if (k % 1000 == 0) std::this_thread::yield();
+                    }
+                    return nlohmann::json("ran to the end");
+                  }});
+  EnsembleOptions opt{2};
+  opt.stop_after = [](const nlohmann::json& r) { return r == "stop"; };
+  const auto out = run_jobs(jobs, opt);
+  EXPECT_EQ(out[0].result, "stop");
+  EXPECT_TRUE(out[1].skipped);
+  EXPECT_FALSE(out[1].error);
+  EXPECT_TRUE(out[1].result.is_null());
 }

@@ -82,7 +82,7 @@ TEST(Estimates, VcritRunsBoundTheSearch) {
   const auto c = impact::parse_impact_case(cfg);
   const auto relaxed = impact::relaxed_agglomerate(c);
   double steps = 0.0;
-  auto batch = [&](const std::vector<double>& speeds) {
+  auto batch = [&](const std::vector<double>& speeds, const impact::StopRule&) {
     std::vector<impact::ImpactOutcome> o;
     for (double v : speeds) o.push_back(impact::run_impact(c, v, nullptr, {}, &relaxed));
     for (const auto& r : o) steps += static_cast<double>(r.steps) * 5.0;

@@ -199,6 +199,14 @@ struct ImpactSettings {
                       "projectile stays (on the wall, on the target)",
                       "breakup"},
                      std::nullopt, {"breakup", "sticking"}};
+    // Read only when set (cases without it resolve as before).
+    Choice order{t,
+                 {"vcrit.order", "",
+                  "order of the runs of each batch: full = every speed of the scan and of each round; top_down = "
+                  "from the highest speed down, stopping at the first without the event (same v_crit, bracket and "
+                  "rounds; the runs below the bracket are skipped)",
+                  "full"},
+                 std::nullopt, {"full", "top_down"}};
   } vcrit;
 
   struct Breakup {

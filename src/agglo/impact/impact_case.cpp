@@ -356,6 +356,7 @@ void parse_searches(const ConfigSection& root, ImpactCase& c) {
                                         kMinRelativeTolerance, kv.v_max.dotted(), kMinRelativeTolerance * c.vcrit.v_max));
   c.vcrit.points_per_round = static_cast<int>(kv.points_per_round.read(vc));
   if (kv.criterion.present(vc)) c.vcrit.sticking = kv.criterion.read(vc) == "sticking";
+  if (kv.order.present(vc)) c.vcrit.top_down = kv.order.read(vc) == "top_down";
 
   const auto& kb = impact_keys().breakup;
   auto bu = kb.t.open(root);

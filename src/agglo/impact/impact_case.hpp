@@ -92,6 +92,7 @@ struct VcritSpec {
   // Speeds tried per bisection round: fixed by configuration so v_crit never depends on the core count.
   int points_per_round = static_cast<int>(impact_keys().vcrit.points_per_round.def());
   bool sticking = false;  // vcrit.criterion = "sticking" (vcrit.hpp); false: "breakup"
+  bool top_down = false;  // vcrit.order = "top_down" (vcrit.hpp); false: "full"
 };
 
 // Break-up probability (agglo breakup): at each speed, `samples` runs whose projectile offset is

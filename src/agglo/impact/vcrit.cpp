@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
@@ -74,11 +75,16 @@ VcritResult find_vcrit(const VcritSpec& spec, const SpeedBatch& run_batch, const
   VcritResult res;
   const int per_round = std::max(spec.points_per_round, 1);
   const std::vector<double> scan = scan_grid(spec);
-  auto add = [&](const std::vector<ImpactOutcome>& o) {
+  // top_down: highest speed first, stopping at the first without the event (the bracket's lower end).
+  const StopRule stop = spec.top_down ? StopRule([&spec](const ImpactOutcome& r) { return !event(spec, r); })
+                                      : StopRule();
+  auto add = [&](std::vector<double> speeds) {
+    if (spec.top_down) std::sort(speeds.begin(), speeds.end(), std::greater<>());
+    const auto o = run_batch(speeds, stop);
     res.runs.insert(res.runs.end(), o.begin(), o.end());
     std::sort(res.runs.begin(), res.runs.end(), [](const auto& a, const auto& b) { return a.speed < b.speed; });
   };
-  add(run_batch(scan));
+  add(scan);
   const double expected_rounds =
       std::log(std::max(1.0, (scan[1] - scan[0]) / spec.tolerance)) / std::log(per_round + 1.0);
   if (progress) progress(0.0);
@@ -92,7 +98,7 @@ VcritResult find_vcrit(const VcritSpec& spec, const SpeedBatch& run_batch, const
                                          res.lo, res.hi));
       break;
     }
-    add(run_batch(mid));
+    add(mid);
     ++res.rounds;
     if (progress) progress(std::min(0.99, res.rounds / std::max(1.0, expected_rounds)));
   }

@@ -8,6 +8,10 @@
 // vcrit.criterion = "sticking" bisects the same way on "does not stay" instead of "breaks" (stays():
 // the agglomerate on the wall with wall.impact, else the projectile on the target) and reports the
 // largest speed that stays, v_crit = the bracket's lower end.
+// vcrit.order = "top_down" runs each batch (the scan, every round) from its highest speed down and stops
+// at the first speed without the event: the bracket only needs the highest such speed, so v_crit, the
+// bracket, the rounds and every run at or above the bracket's lower end are those of the full order; the
+// runs below it (and the warnings they would raise) are skipped.
 #include <functional>
 #include <string>
 #include <vector>
@@ -26,9 +30,14 @@ struct VcritResult {
   int rounds = 0;
 };
 
+// Says whether the speeds after this outcome in a batch are still needed (true: they are not).
+using StopRule = std::function<bool(const ImpactOutcome&)>;
+
 // Runs a batch of independent impacts at the given speeds and returns their outcomes in the same
-// order (e.g. run::ensemble_impacts: in parallel, journaled).
-using SpeedBatch = std::function<std::vector<ImpactOutcome>(const std::vector<double>& speeds)>;
+// order (e.g. run::speed_batch: in parallel, journaled). With a `stop` rule the speeds are taken in the
+// order given and the batch returns the outcomes up to and including the first one the rule accepts
+// (all when none does); the later speeds need not run (the result never depends on whether they did).
+using SpeedBatch = std::function<std::vector<ImpactOutcome>(const std::vector<double>& speeds, const StopRule& stop)>;
 
 // The impact stayed: with a wall impact no fragment rebounded (Breakage::wall, breakage.hpp); else the
 // projectile (its particle of highest index) is in contact with the agglomerate (some of its first

@@ -44,24 +44,45 @@ std::vector<std::size_t> pending_jobs(const std::vector<Job>& jobs, const Journa
   return todo;
 }
 
-void run_one(const Job& job, std::size_t index, int threads, const EnsembleOptions& opt, JobOutcome& out) {
+void run_one(const Job& job, std::size_t index, int threads, const EnsembleOptions& opt, JobOutcome& out,
+             const std::atomic<std::size_t>* stop_at) {
   const auto start = std::chrono::steady_clock::now();
+  const JobContext ctx{index, threads, opt.cancel, stop_at};
   try {
     const CancelScope cancel_scope(opt.cancel);  // the engines of the job poll it (core/cancel.hpp)
     throw_if_cancelled(opt.cancel);
-    out.result = job.run(JobContext{index, threads, opt.cancel});
+    out.result = job.run(ctx);
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (opt.journal) opt.journal->record(job.key, index, out.result, {{"rank", mpi::rank()}, {"seconds", out.seconds}});
   } catch (...) {
     out.error = std::current_exception();
   }
+  if (out.error && ctx.superseded() && !(opt.cancel && opt.cancel->cancelled())) {  // stopped: not needed
+    out.error = nullptr;
+    out.skipped = true;
+  }
 }
+
+namespace {
+
+// Lowers `stop_at` to `index` when the job's result meets opt.stop_after.
+void note_stop(const EnsembleOptions& opt, std::size_t index, const JobOutcome& o, std::atomic<std::size_t>& stop_at) {
+  if (!opt.stop_after || o.error || o.skipped || !opt.stop_after(o.result)) return;
+  std::size_t cur = stop_at.load();
+  while (index < cur && !stop_at.compare_exchange_weak(cur, index)) {
+  }
+}
+
+}  // namespace
 
 std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOptions& opt) {
   if (mpi::size() > 1 && !in_job()) return run_jobs_on_ranks(jobs, opt);
   std::vector<JobOutcome> out(jobs.size());
   const std::vector<std::size_t> todo = pending_jobs(jobs, opt.journal, out);
   if (todo.empty()) return out;
+  std::atomic<std::size_t> stop_at{jobs.size()};
+  for (std::size_t i = 0; i < jobs.size(); ++i)
+    if (out[i].reused) note_stop(opt, i, out[i], stop_at);
   const int total = resolve_threads(opt.threads);
   const int workers = std::min<int>(total, static_cast<int>(todo.size()));
   const int per_job = std::max(1, total / workers);
@@ -70,7 +91,10 @@ std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOpt
     const JobScope scope;  // a run_jobs inside these jobs stays in this process
     omp_set_num_threads(per_job);
     for (std::size_t k; (k = next++) < todo.size();) {
-      run_one(jobs[todo[k]], todo[k], per_job, opt, out[todo[k]]);
+      const std::size_t i = todo[k];
+      if (i > stop_at.load()) out[i].skipped = true;
+      else run_one(jobs[i], i, per_job, opt, out[i], &stop_at);
+      note_stop(opt, i, out[i], stop_at);
       const double f = static_cast<double>(++done) / static_cast<double>(jobs.size());
       if (opt.reporter) opt.reporter->progress(opt.label, f, 0.0);
     }

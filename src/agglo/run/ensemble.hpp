@@ -7,6 +7,12 @@
 // pool from starting new jobs. Under `mpirun -n K` (K > 1) the outermost run_jobs spreads its jobs over
 // the ranks (run/ensemble_farm.hpp); every rank must then call it with the same jobs, and every rank
 // gets the same outcomes back.
+// With EnsembleOptions::stop_after the jobs are ordered by priority: once a job's result satisfies it, the
+// jobs after it are no longer started and those running stop at their next poll (JobContext::superseded);
+// their outcomes are marked `skipped`. The caller keeps only the outcomes up to the first such job, so
+// its result never depends on which speculative jobs ran (the MPI farm runs them all).
+#include <atomic>
+#include <cstddef>
 #include <exception>
 #include <functional>
 #include <string>
@@ -23,6 +29,9 @@ struct JobContext {
   std::size_t index = 0;
   int threads = 1;                    // OpenMP threads this job may use (already set for its thread)
   const CancelToken* cancel = nullptr;
+  const std::atomic<std::size_t>* stop_at = nullptr;  // lowest index whose result met stop_after (or null)
+  // A job after one that met EnsembleOptions::stop_after: its result is not needed (it may return early).
+  bool superseded() const { return stop_at && index > stop_at->load(std::memory_order_relaxed); }
 };
 
 struct Job {
@@ -34,6 +43,7 @@ struct JobOutcome {
   nlohmann::json result;
   std::exception_ptr error;  // null when the job succeeded
   bool reused = false;       // taken from the journal
+  bool skipped = false;      // not run, or stopped, because an earlier job met EnsembleOptions::stop_after
   double seconds = 0.0;      // wall time of the job (0 when reused or failed)
 };
 
@@ -43,6 +53,7 @@ struct EnsembleOptions {
   const CancelToken* cancel = nullptr;
   Reporter* reporter = nullptr;     // optional: progress of the ensemble
   std::string label = "jobs";
+  std::function<bool(const nlohmann::json& result)> stop_after = {};  // optional: see the header comment
 };
 
 std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOptions& opt);

@@ -35,7 +35,8 @@ class JobScope {
 // filled into `out`), and one job run into `out` (its error caught; journaled with rank and seconds).
 std::vector<std::size_t> pending_jobs(const std::vector<Job>& jobs, const Journal* journal,
                                       std::vector<JobOutcome>& out);
-void run_one(const Job& job, std::size_t index, int threads, const EnsembleOptions& opt, JobOutcome& out);
+void run_one(const Job& job, std::size_t index, int threads, const EnsembleOptions& opt, JobOutcome& out,
+             const std::atomic<std::size_t>* stop_at = nullptr);
 
 // An outcome as JSON and back ({"result", "reused", "seconds", "error": {"type", "message"}}); the error
 // keeps its type (InterruptedError, LimitError, ConfigError, NumericalError, else std::runtime_error).

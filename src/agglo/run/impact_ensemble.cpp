@@ -1,5 +1,8 @@
 #include "agglo/run/impact_ensemble.hpp"
 
+#include <memory>
+#include <stdexcept>
+
 #include <fmt/format.h>
 
 #include "agglo/core/error.hpp"
@@ -17,47 +20,82 @@ std::string impact_job_key(const impact::ImpactJob& b) {
   return key;
 }
 
+namespace {
+
+// The jobs of a batch of impacts (journal keys of impact_job_key), each from `relaxed`.
+std::vector<Job> impact_jobs(const impact::ImpactCase& c, const dem::Particles& relaxed,
+                             const std::shared_ptr<impact::ApproachCache>& approach,
+                             const std::vector<impact::ImpactJob>& batch) {
+  std::vector<Job> jobs;
+  for (const auto& b : batch) {
+    jobs.push_back({impact_job_key(b), [&c, &relaxed, b, approach](const JobContext& ctx) {
+                      auto ck = c;
+                      ck.projectile.offset_radii = b.offset_radii;
+                      ck.time.bisection = b.bisection;
+                      // A run no longer needed (an earlier job met the batch's stop rule) stops like a cancelled one.
+                      auto poll = [&ctx](double, double) {
+                        throw_if_cancelled(ctx.cancel);
+                        if (ctx.superseded()) throw InterruptedError("superseded by an earlier job of the batch");
+                      };
+                      if (b.orientations <= 1)
+                        return writers::outcome_json(
+                            impact::run_impact(ck, b.speed, nullptr, poll, &relaxed, approach.get()));
+                      // Rigid rotation of the relaxed agglomerate: contact overlaps and pair
+                      // distances are unchanged, so it is still relaxed (no external field). An
+                      // aggregate projectile takes a random orientation of its own for each.
+                      if (ck.projectile.shape != "sphere")
+                        ck.projectile.rotation = impact::projectile_orientation(ck, b.orientation);
+                      dem::Particles turned = relaxed;
+                      impact::rotate_about_centroid(turned,
+                                                    impact::stratified_orientation(b.orientation, b.orientations).rotation);
+                      return writers::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &turned));
+                    }});
+  }
+  return jobs;
+}
+
+// One free flight before contact for every run from `relaxed` as oriented (impact/approach_cache.hpp).
+std::shared_ptr<impact::ApproachCache> approach_cache(const impact::ImpactCase& c, const dem::Particles& relaxed) {
+  if (!impact::ApproachCache::applies(c)) return nullptr;
+  return std::make_shared<impact::ApproachCache>(c, relaxed);
+}
+
+// The outcomes of jobs[0 .. end), end = one past the first job whose result meets opt.stop_after (all
+// without one); the first error among them is rethrown.
+std::vector<impact::ImpactOutcome> kept_outcomes(const std::vector<Job>& jobs, const EnsembleOptions& opt) {
+  auto outcomes = run_jobs(jobs, opt);
+  std::size_t end = 0;
+  while (end < outcomes.size()) {
+    const auto& o = outcomes[end++];
+    if (opt.stop_after && !o.error && !o.skipped && opt.stop_after(o.result)) break;
+  }
+  outcomes.resize(end);
+  rethrow_first_error(outcomes, &jobs);
+  std::vector<impact::ImpactOutcome> out;
+  for (const auto& o : outcomes) {
+    if (o.skipped) throw std::logic_error("impact batch: a needed job was skipped");
+    out.push_back(writers::outcome_from_json(o.result));
+  }
+  return out;
+}
+
+}  // namespace
+
 impact::ImpactBatch impact_batch(const impact::ImpactCase& c, const dem::Particles& relaxed, EnsembleOptions opt) {
-  // One free flight before contact for every run from `relaxed` as oriented (impact/approach_cache.hpp).
-  std::shared_ptr<impact::ApproachCache> approach;
-  if (impact::ApproachCache::applies(c)) approach = std::make_shared<impact::ApproachCache>(c, relaxed);
-  return [&c, &relaxed, opt, approach](const std::vector<impact::ImpactJob>& batch) {
-    std::vector<Job> jobs;
-    for (const auto& b : batch) {
-      jobs.push_back({impact_job_key(b), [&c, &relaxed, b, approach](const JobContext& ctx) {
-                        auto ck = c;
-                        ck.projectile.offset_radii = b.offset_radii;
-                        ck.time.bisection = b.bisection;
-                        auto poll = [&ctx](double, double) { throw_if_cancelled(ctx.cancel); };
-                        if (b.orientations <= 1)
-                          return writers::outcome_json(
-                              impact::run_impact(ck, b.speed, nullptr, poll, &relaxed, approach.get()));
-                        // Rigid rotation of the relaxed agglomerate: contact overlaps and pair
-                        // distances are unchanged, so it is still relaxed (no external field). An
-                        // aggregate projectile takes a random orientation of its own for each.
-                        if (ck.projectile.shape != "sphere")
-                          ck.projectile.rotation = impact::projectile_orientation(ck, b.orientation);
-                        dem::Particles turned = relaxed;
-                        impact::rotate_about_centroid(
-                            turned, impact::stratified_orientation(b.orientation, b.orientations).rotation);
-                        return writers::outcome_json(impact::run_impact(ck, b.speed, nullptr, poll, &turned));
-                      }});
-    }
-    const auto outcomes = run_jobs(jobs, opt);
-    rethrow_first_error(outcomes, &jobs);
-    std::vector<impact::ImpactOutcome> out;
-    for (const auto& o : outcomes) out.push_back(writers::outcome_from_json(o.result));
-    return out;
+  return [&c, &relaxed, opt, approach = approach_cache(c, relaxed)](const std::vector<impact::ImpactJob>& batch) {
+    return kept_outcomes(impact_jobs(c, relaxed, approach, batch), opt);
   };
 }
 
 impact::SpeedBatch speed_batch(const impact::ImpactCase& c, const dem::Particles& relaxed, EnsembleOptions opt) {
   // time.intact_stop = "vcrit" decides break-up only: a sticking bisection runs to full length.
-  return [run = impact_batch(c, relaxed, std::move(opt)), offset = c.projectile.offset_radii,
-          breakup = !c.vcrit.sticking](const std::vector<double>& speeds) {
-    std::vector<impact::ImpactJob> jobs;
-    for (double v : speeds) jobs.push_back({v, offset, 0, 1, breakup});
-    return run(jobs);
+  return [&c, &relaxed, opt, approach = approach_cache(c, relaxed)](const std::vector<double>& speeds,
+                                                                    const impact::StopRule& stop) {
+    std::vector<impact::ImpactJob> batch;
+    for (double v : speeds) batch.push_back({v, c.projectile.offset_radii, 0, 1, !c.vcrit.sticking});
+    EnsembleOptions o = opt;
+    if (stop) o.stop_after = [&stop](const nlohmann::json& r) { return stop(writers::outcome_from_json(r)); };
+    return kept_outcomes(impact_jobs(c, relaxed, approach, batch), o);
   };
 }
 

@@ -31,7 +31,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 nlohmann::json observe(const CalibrateCase& c, const CalibrationTarget& t, const std::vector<double>& x, bool widths,
                        const JobContext& job) {
   Config cfg = target_config(c, t, x);
-  const auto ic = impact::parse_impact_case(cfg);
+  auto ic = impact::parse_impact_case(cfg);
+  ic.vcrit.top_down = true;  // only v_crit is kept: the runs below its bracket are not needed (vcrit.hpp)
   const auto relaxed = impact::relaxed_agglomerate(ic);
   const EnsembleOptions inner{1, nullptr, job.cancel, nullptr, "calibrate"};
   nlohmann::json r{{"value", nullptr}, {"width", 0.0}};
