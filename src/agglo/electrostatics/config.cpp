@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -74,7 +75,7 @@ EsCase parse_electrostatics_case(Config& cfg) {
 
 namespace {
 // The physical admissibility of the spheres (docs/model.md §B.3); throws NumericalError naming the particles.
-void check_problem(const Problem& p, const std::string& what) {
+void check_problem(const Problem& p, std::string_view what) {
   const int n = static_cast<int>(p.spheres.size());
   if (!(p.medium_permittivity > 0))
     throw NumericalError(fmt::format("{}: medium permittivity must be > 0 (got {})", what, p.medium_permittivity));
@@ -91,12 +92,12 @@ void check_problem(const Problem& p, const std::string& what) {
     for (int k = i + 1; k < n; ++k) {
       const auto& a = p.spheres[i];
       const auto& b = p.spheres[k];
-      double d = norm(a.center - b.center);
-      if (d <= a.radius + b.radius)
+      const double s = a.radius + b.radius;
+      if (norm2(a.center - b.center) <= s * s)  // no square root per pair: the DEM coupling checks every solve
         throw NumericalError(fmt::format(
             "{}: particles {} and {} overlap beyond the electrostatic regularisation (centre distance {:.6g} m <= "
             "r_E,{} + r_E,{} = {:.6g} m); separate them or raise min_gap",
-            what, i, k, d, i, k, a.radius + b.radius));
+            what, i, k, norm(a.center - b.center), i, k, s));
     }
 }
 }  // namespace
@@ -109,18 +110,23 @@ void check_particles(const Problem& p, const std::string& what) {
   }
 }
 
-Problem make_problem(const EsConfig& ec, const std::vector<Vec3>& centers, const std::vector<double>& radii,
-                     const std::vector<double>& charges, const std::vector<double>& permittivities) {
+void fill_problem(const EsConfig& ec, const std::vector<Vec3>& centers, const std::vector<double>& radii,
+                  const std::vector<double>& charges, const std::vector<double>& permittivities, Problem& p) {
   const std::size_t n = centers.size();
   if (radii.size() != n || charges.size() != n || permittivities.size() != n)
     throw NumericalError("electrostatics: particle arrays of different lengths");
-  Problem p;
   p.medium_permittivity = ec.medium_permittivity;
   p.external_field = ec.external_field;
   p.spheres.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     p.spheres[i] = {centers[i], electrostatic_radius(radii[i], ec.min_gap), charges[i], permittivities[i]};
   check_problem(p, "electrostatics");
+}
+
+Problem make_problem(const EsConfig& ec, const std::vector<Vec3>& centers, const std::vector<double>& radii,
+                     const std::vector<double>& charges, const std::vector<double>& permittivities) {
+  Problem p;
+  fill_problem(ec, centers, radii, charges, permittivities, p);
   return p;
 }
 

@@ -67,6 +67,9 @@ inline double electrostatic_radius(double r, double g_min) { return r / (1.0 + 0
 // (use check_particles() to get ConfigError for input files instead).
 Problem make_problem(const EsConfig& ec, const std::vector<Vec3>& centers, const std::vector<double>& radii,
                      const std::vector<double>& charges, const std::vector<double>& permittivities);
+// The same into `p`, whose sphere array is reused (no allocation once it has the size: the DEM coupling).
+void fill_problem(const EsConfig& ec, const std::vector<Vec3>& centers, const std::vector<double>& radii,
+                  const std::vector<double>& charges, const std::vector<double>& permittivities, Problem& p);
 
 // Same checks, the NumericalError mapped to agglo::ConfigError (bad input files): `what` names the source.
 void check_particles(const Problem& p, const std::string& what);

@@ -38,12 +38,12 @@ void validate_spheres(const Problem& p) {
     for (int k = i + 1; k < n; ++k) {
       const Sphere& a = p.spheres[i];
       const Sphere& b = p.spheres[k];
-      const double d = norm(a.center - b.center);
-      if (d <= a.radius + b.radius)
+      const double s = a.radius + b.radius;
+      if (norm2(a.center - b.center) <= s * s)  // the distance itself only for the message
         throw InvalidSpheres(R::overlap, i, k,
                              fmt::format("spheres {} and {} overlap or touch (centre distance {:.6g} m <= sum of "
                                          "radii {:.6g} m)",
-                                         i, k, d, a.radius + b.radius));
+                                         i, k, norm(a.center - b.center), s));
     }
 }
 

@@ -111,9 +111,9 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
       q[m] = -q[a];
       kappa[m] = kappa[a];
     }
-  es::Problem prob;
+  es::Problem& prob = solve_problem_;
   try {
-    prob = es::make_problem(s_.es, x, radius, q, kappa);
+    es::fill_problem(s_.es, x, radius, q, kappa, prob);
   } catch (const NumericalError& e) {
     throw NumericalError(fmt::format("step {}: {} (particle numbers among the charged/dielectric ones; {})", step,
                                      e.what(), overlap_advice(p, s_.es)));

@@ -87,6 +87,7 @@ class ElectrostaticForce : public dem::ExternalForce {
   // Scratch of solve(), kept between solves so that a solve allocates no arrays of its own.
   std::vector<Vec3> solve_x_;
   std::vector<double> solve_r_, solve_q_, solve_kappa_;
+  es::Problem solve_problem_;
   long step_at_solve_ = -1;
   double fraction_ = 0.0;  // the motion threshold in use (update_fraction, adapted with force_tolerance)
   HoldErrorStats hold_error_;
