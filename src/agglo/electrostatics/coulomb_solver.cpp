@@ -10,10 +10,35 @@
 
 namespace agglo::es {
 
-namespace {
-
 using constants::eps0;
 using constants::pi;
+
+double coulomb_forces(const Problem& p, std::vector<Vec3>& force, std::vector<Vec3>& torque) {
+  const int N = static_cast<int>(p.spheres.size());
+  const double k0 = p.medium_permittivity;
+  force.assign(N, Vec3{});
+  torque.assign(N, Vec3{});
+  const double kc = 1.0 / (4 * pi * eps0 * k0);
+  double U = 0.0;
+  for (int i = 0; i < N; ++i) {
+    const auto& a = p.spheres[i];
+    // self energy of the uniform shell: q^2 / (8 pi eps0 kappa0 r); applied potential -E.x
+    U += 0.5 * kc * a.charge * a.charge / a.radius - 0.5 * a.charge * dot(p.external_field, a.center);
+    force[i] += p.external_field * a.charge;
+    for (int k = i + 1; k < N; ++k) {
+      const auto& b = p.spheres[k];
+      Vec3 d = a.center - b.center;
+      double r = norm(d);
+      Vec3 f = d * (kc * a.charge * b.charge / (r * r * r));
+      force[i] += f;
+      force[k] -= f;
+      U += kc * a.charge * b.charge / r;
+    }
+  }
+  return U;
+}
+
+namespace {
 
 class CoulombSolver final : public Solver {
  public:
@@ -22,30 +47,9 @@ class CoulombSolver final : public Solver {
 
   Solution solve(const Problem& p) override {
     auto t0 = std::chrono::steady_clock::now();
-    const int N = static_cast<int>(p.spheres.size());
     validate_spheres(p);
-    const double k0 = p.medium_permittivity;
     Solution sol;
-    sol.force.assign(N, Vec3{});
-    sol.torque.assign(N, Vec3{});
-    const double kc = 1.0 / (4 * pi * eps0 * k0);
-    double U = 0.0;
-    for (int i = 0; i < N; ++i) {
-      const auto& a = p.spheres[i];
-      // self energy of the uniform shell: q^2 / (8 pi eps0 kappa0 r); applied potential -E.x
-      U += 0.5 * kc * a.charge * a.charge / a.radius - 0.5 * a.charge * dot(p.external_field, a.center);
-      sol.force[i] += p.external_field * a.charge;
-      for (int k = i + 1; k < N; ++k) {
-        const auto& b = p.spheres[k];
-        Vec3 d = a.center - b.center;
-        double r = norm(d);
-        Vec3 f = d * (kc * a.charge * b.charge / (r * r * r));
-        sol.force[i] += f;
-        sol.force[k] -= f;
-        U += kc * a.charge * b.charge / r;
-      }
-    }
-    sol.energy = U;
+    sol.energy = coulomb_forces(p, sol.force, sol.torque);
     last_ = p;
     sol.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return sol;

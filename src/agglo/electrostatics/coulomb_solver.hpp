@@ -15,6 +15,12 @@ inline constexpr std::string_view kCoulombSolver = "coulomb";
 
 std::unique_ptr<Solver> make_coulomb_solver(const SolverOptions& opt);
 
+// The closed form above for a problem already checked (make_problem, fill_problem): forces and torques
+// (zero) written into `force` and `torque`, resized to the spheres (no allocation once they have the
+// size), the energy returned. The solver's solve() is this after validate_spheres(); the DEM coupling
+// calls it directly for its κ_p = κ_0 fast path, once per solve.
+double coulomb_forces(const Problem& p, std::vector<Vec3>& force, std::vector<Vec3>& torque);
+
 // Its entry in the solver registry (registry.hpp), with its cost model.
 SolverType coulomb_solver_type();
 }  // namespace agglo::es

@@ -122,8 +122,17 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
   bool uniform = true;
   for (double k : kappa) uniform = uniform && k == s_.es.medium_permittivity;
   if (uniform && !coulomb_) make_fast_path();
-  es::Solution sub;
-  if (!prob.spheres.empty()) sub = uniform ? coulomb_->solve(prob) : solver_->solve(prob);
+  es::Solution& sub = solve_out_;
+  sub.energy = 0.0;
+  sub.stats = {};
+  if (prob.spheres.empty()) {
+    sub.force.clear();
+    sub.torque.clear();
+  } else if (uniform) {
+    sub.energy = es::coulomb_forces(prob, sub.force, sub.torque);  // checked by fill_problem: no allocation
+  } else {
+    sub = solver_->solve(prob);
+  }
   last_.energy = sub.energy;
   last_.stats = std::move(sub.stats);
   if (!s_.grounded.empty()) last_.energy *= 0.5;  // the real half of the mirrored system

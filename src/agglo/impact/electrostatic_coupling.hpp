@@ -88,6 +88,7 @@ class ElectrostaticForce : public dem::ExternalForce {
   std::vector<Vec3> solve_x_;
   std::vector<double> solve_r_, solve_q_, solve_kappa_;
   es::Problem solve_problem_;
+  es::Solution solve_out_;
   long step_at_solve_ = -1;
   double fraction_ = 0.0;  // the motion threshold in use (update_fraction, adapted with force_tolerance)
   HoldErrorStats hold_error_;
