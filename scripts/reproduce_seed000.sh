@@ -5,7 +5,7 @@
 #  2. Table 2 with the shipped cases, which carry a rounded point of the fitted set: v_crit of the neutral and
 #     kappa_p = 1 tetrahedron (the targets) and kappa_p = 2.5 and 15 (predictions, spectral solver);
 #  3. the U/U0 and R_g histories (seed Figs. 3d, 4d, 5) and the plots.
-# The three steps run side by side (below); calibration + Table 2 took 113-115 s on two idle cores
+# The three steps run side by side (below); calibration + Table 2 took 111-115 s on two idle cores
 # (docs/seed000.md, Cost).
 # Writes results/seed000/{calibration/,table2.csv,table2.json,*.png}.
 #   --ranges  also predicts kappa_p = 2.5 and 15 over the whole fitted set (calibrate.predict = "range": the
