@@ -39,12 +39,15 @@ $A -q --no-plots vcrit "$DEM" --out "$T/c" --resume > /dev/null 2> "$T/err"; rc=
 [ $rc -eq 2 ] && grep -q "continues only a 'vcrit' run" "$T/err" || fail "resume across commands: $rc $(cat "$T/err")"
 
 # SIGINT: the acoustic run stops, flushes its rows so far, run.json says incomplete, exit 130; --resume
-# (no checkpoint for single runs yet) restarts it and completes it.
-ACS=(--set time.end=0.05 --set "output.psd_times=[0.0,0.05]" --set "output.snapshot_times=[0.0]"
+# (no checkpoint for single runs yet) restarts it and completes it. 0.3 s of simulated time take about 2 s
+# in the release build and its set-up 0.05 s, so the signal 1.5 s after run.json appears lands in the time
+# loop (with 0.05 s the release run ended first, and the sanitizer build's slower set-up was still running
+# at 1 s: "interrupted", not "interrupted at t = ...").
+ACS=(--set time.end=0.3 --set "output.psd_times=[0.0,0.05]" --set "output.snapshot_times=[0.0]"
      --set output.plots=false)
 $A -q --no-plots acoustic "$AC" --out "$T/a" "${ACS[@]}" 2> "$T/err" & pid=$!
 for _ in $(seq 1 600); do [ -e "$T/a/run.json" ] && break; sleep 0.05; done
-sleep 1; kill -INT $pid; wait $pid; rc=$?
+sleep 1.5; kill -INT $pid; wait $pid; rc=$?
 if [ $rc -eq 0 ]; then
   echo "note: the acoustic run finished before SIGINT; incomplete marking not exercised on this machine"
 else

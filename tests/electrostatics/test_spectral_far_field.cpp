@@ -219,6 +219,38 @@ TEST(SpectralFarField, ForceIsMinusEnergyGradientAtN200) {
   }
 }
 
+// The existing references through the fast path (issue 25): the two-sphere table of docs/model.md §B.4
+// (gaps >= 0.1 r, target 1e-6, as SpectralTable.GapsAtLeastPointOneWithinOneInAMillion for the dense
+// product) and the seed's charged square (four spheres at the regularised contact, charges alternating
+// +-sigma 4 pi r^2 with sigma = 10 uC/m^2 around the ring, kappa_p = 2.5 and 15) against the dense product.
+// With at most 8 spheres the octree is one leaf and every pair is a near pair, so the fast path must give
+// the dense forces up to rounding (its quarter turns replace the stored rotation blocks).
+TEST(SpectralFarField, ExistingReferencesThroughTheFastPath) {
+  SolverOptions o = far_field_options("fmm");
+  o.target_accuracy = 1e-6;
+  auto s = make_solver(o);
+  for (const auto& e : testing::model_b4_table()) {
+    if (e.h < 0.1) continue;
+    const double f = testing::table_force(*s, e.kappa, e.h, e.c1, e.c2);
+    EXPECT_NEAR(f, e.value, 1e-6 * std::abs(e.value) + testing::table_rounding(e.value))
+        << "kappa " << e.kappa << " h " << e.h << " (" << e.c1 << "," << e.c2 << ")";
+  }
+  for (double kappa : {2.5, 15.0}) {
+    Problem p;
+    const double r = kR / (1.0 + 0.5 * 0.01), q = 10e-6 * 4 * constants::pi * kR * kR;  // min_gap 0.01
+    const Vec3 corners[4] = {{-kR, -kR, 0.0}, {kR, -kR, 0.0}, {kR, kR, 0.0}, {-kR, kR, 0.0}};
+    for (int k = 0; k < 4; ++k) p.spheres.push_back({corners[k], r, k % 2 == 0 ? q : -q, kappa});
+    const Solution fast = make_solver(far_field_options("fmm"))->solve(p);
+    const Solution dense = make_solver(far_field_options("dense"))->solve(p);
+    const double d = force_difference(fast, dense);
+    std::printf("charged square, kappa_p %g: forces fmm vs dense %.2e, energy %.2e\n", kappa, d,
+                std::abs(fast.energy - dense.energy) / std::abs(dense.energy));
+    EXPECT_LE(d, 1e-10);
+    EXPECT_LE(std::abs(fast.energy - dense.energy), 1e-10 * std::abs(dense.energy));
+    EXPECT_GT(norm(dense.force[0]), 0.0);
+  }
+}
+
 // GMRES iterations with the fast far field do not grow with N (target 1e-3 to keep the test short).
 TEST(SpectralFarField, GmresIterationsDoNotGrowWithN) {
   SolverOptions o = far_field_options("fmm");
