@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The MPI task farm (docs/scaling.md): `mpirun -n 2` and `-n 3 --oversubscribe` give the same outputs as
-# one process for vcrit, breakup, calibrate, outcomes, sweep, a seed ensemble (acoustic --seeds) and a sweep with seeds (every file; results.nc by content with timing
+# one process for vcrit (also top-down: vcrit.json), breakup, calibrate, outcomes, sweep, a seed ensemble (acoustic --seeds) and a sweep with seeds (every file; results.nc by content with timing
 # aside; journal.jsonl as a set of results; run.json records the rank count). A single-run command under
 # mpirun is refused with one line. $1 = agglo, $2 = source dir, $3 = mpirun.
 . "$(dirname "$0")/lib.sh"
@@ -48,6 +48,15 @@ check seeds acoustic cases/seed002_baseline.toml --seeds 4 -q --no-plots --set t
 check sweep_seeds sweep cases/seed002_baseline.toml --param population.1.diameter --values 20e-6,40e-6 --seeds 3 \
   -q --no-plots --set time.end=0.01 --set "output.psd_times=[0.0,0.01]" --set "output.snapshot_times=[0.0]" \
   --set population.0.samples=1500 --set population.1.samples=50
+
+# vcrit.order = "top_down": one process skips the jobs of a batch after its first non-break, the ranks run
+# them all and keep the same prefix, so the journals differ; vcrit.json must not.
+TD=(vcrit $NT "${SHORT[@]}" --set vcrit.scan_points=8 --set vcrit.tolerance=0.002 --set 'vcrit.order="top_down"')
+"$AGGLO" "${TD[@]}" --threads 2 --out "$TMP/td.1" > /dev/null 2>&1 || fail "top_down: one process"
+run_mpi 3 "${TD[@]}" --threads 1 --out "$TMP/td.3" > "$TMP/td.3.log" 2>&1 || fail "top_down: 3 ranks: $(tail -3 "$TMP/td.3.log")"
+cmp -s "$TMP/td.1/vcrit.json" "$TMP/td.3/vcrit.json" || fail "top_down: vcrit.json of 3 ranks differs from one process"
+no_scratch_left
+echo "ok vcrit top_down"
 
 # A single run is not an ensemble: refused on every rank, reported once, nothing written.
 run_mpi 2 collide $NT "${SHORT[@]}" --out "$TMP/single" > "$TMP/single.out" 2> "$TMP/single.err"
