@@ -73,16 +73,25 @@ void note_stop(const EnsembleOptions& opt, std::size_t index, const JobOutcome& 
   }
 }
 
-}  // namespace
+// The first job, in order, whose result meets opt.stop_after (out.size() without one).
+std::size_t first_stop(const EnsembleOptions& opt, const std::vector<JobOutcome>& out) {
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (opt.stop_after && !out[i].error && !out[i].skipped && opt.stop_after(out[i].result)) return i;
+  return out.size();
+}
 
-std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOptions& opt) {
-  if (mpi::size() > 1 && !in_job()) return run_jobs_on_ranks(jobs, opt);
-  std::vector<JobOutcome> out(jobs.size());
-  const std::vector<std::size_t> todo = pending_jobs(jobs, opt.journal, out);
-  if (todo.empty()) return out;
-  std::atomic<std::size_t> stop_at{jobs.size()};
-  for (std::size_t i = 0; i < jobs.size(); ++i)
-    if (out[i].reused) note_stop(opt, i, out[i], stop_at);
+// Marks every outcome after `stop` skipped, its result or error dropped: what a batch returns then never
+// depends on which of the jobs after its stop happened to run (threads, ranks).
+void drop_after(std::vector<JobOutcome>& out, std::size_t stop) {
+  for (std::size_t j = stop + 1; j < out.size(); ++j) {
+    out[j] = JobOutcome();
+    out[j].skipped = true;
+  }
+}
+
+// Runs the `todo` jobs on the pool of threads, highest priority (lowest index) first; stop_at as above.
+void run_pool(const std::vector<Job>& jobs, const std::vector<std::size_t>& todo, const EnsembleOptions& opt,
+              std::vector<JobOutcome>& out, std::atomic<std::size_t>& stop_at) {
   const int total = resolve_threads(opt.threads);
   const int workers = std::min<int>(total, static_cast<int>(todo.size()));
   const int per_job = std::max(1, total / workers);
@@ -105,6 +114,25 @@ std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOpt
   worker();  // the calling thread works too
   for (auto& t : pool) t.join();
   omp_set_num_threads(saved);
+}
+
+}  // namespace
+
+std::vector<JobOutcome> run_jobs(const std::vector<Job>& jobs, const EnsembleOptions& opt) {
+  if (mpi::size() > 1 && !in_job()) {  // the ranks run every job; the same ones are kept
+    auto out = run_jobs_on_ranks(jobs, opt);
+    drop_after(out, first_stop(opt, out));
+    return out;
+  }
+  std::vector<JobOutcome> out(jobs.size());
+  const std::vector<std::size_t> todo = pending_jobs(jobs, opt.journal, out);
+  // stop_at: the lowest index whose result met stop_after so far. Every job below it has run, so at the end
+  // it is the first such job in order.
+  std::atomic<std::size_t> stop_at{jobs.size()};
+  for (std::size_t i = 0; i < jobs.size(); ++i)
+    if (out[i].reused) note_stop(opt, i, out[i], stop_at);
+  if (!todo.empty()) run_pool(jobs, todo, opt, out, stop_at);
+  drop_after(out, stop_at.load());
   return out;
 }
 

@@ -9,8 +9,8 @@
 // gets the same outcomes back.
 // With EnsembleOptions::stop_after the jobs are ordered by priority: once a job's result satisfies it, the
 // jobs after it are no longer started and those running stop at their next poll (JobContext::superseded);
-// their outcomes are marked `skipped`. The caller keeps only the outcomes up to the first such job, so
-// its result never depends on which speculative jobs ran (the MPI farm runs them all).
+// every outcome after the first such job is returned `skipped` (no result, no error), whether it ran or
+// not, so the outcomes never depend on the thread count (the MPI farm runs them all and drops the same).
 #include <atomic>
 #include <cstddef>
 #include <exception>
@@ -43,7 +43,7 @@ struct JobOutcome {
   nlohmann::json result;
   std::exception_ptr error;  // null when the job succeeded
   bool reused = false;       // taken from the journal
-  bool skipped = false;      // not run, or stopped, because an earlier job met EnsembleOptions::stop_after
+  bool skipped = false;      // after the first job that met EnsembleOptions::stop_after: not kept
   double seconds = 0.0;      // wall time of the job (0 when reused or failed)
 };
 

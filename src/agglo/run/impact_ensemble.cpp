@@ -1,7 +1,7 @@
 #include "agglo/run/impact_ensemble.hpp"
 
+#include <algorithm>
 #include <memory>
-#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -60,22 +60,15 @@ std::shared_ptr<impact::ApproachCache> approach_cache(const impact::ImpactCase& 
   return std::make_shared<impact::ApproachCache>(c, relaxed);
 }
 
-// The outcomes of jobs[0 .. end), end = one past the first job whose result meets opt.stop_after (all
-// without one); the first error among them is rethrown.
+// The outcomes of the jobs up to the first whose result met opt.stop_after (run_jobs marks those after it
+// skipped; all without a rule); the first error among them is rethrown.
 std::vector<impact::ImpactOutcome> kept_outcomes(const std::vector<Job>& jobs, const EnsembleOptions& opt) {
   auto outcomes = run_jobs(jobs, opt);
-  std::size_t end = 0;
-  while (end < outcomes.size()) {
-    const auto& o = outcomes[end++];
-    if (opt.stop_after && !o.error && !o.skipped && opt.stop_after(o.result)) break;
-  }
-  outcomes.resize(end);
+  const auto end = std::find_if(outcomes.begin(), outcomes.end(), [](const JobOutcome& o) { return o.skipped; });
+  outcomes.erase(end, outcomes.end());
   rethrow_first_error(outcomes, &jobs);
   std::vector<impact::ImpactOutcome> out;
-  for (const auto& o : outcomes) {
-    if (o.skipped) throw std::logic_error("impact batch: a needed job was skipped");
-    out.push_back(writers::outcome_from_json(o.result));
-  }
+  for (const auto& o : outcomes) out.push_back(writers::outcome_from_json(o.result));
   return out;
 }
 
