@@ -6,6 +6,7 @@
 // coefficient e: alpha(1) ~ 0, increasing as e decreases.
 #include <cmath>
 
+#include "agglo/dem/contact/lanes.hpp"
 #include "agglo/dem/contact/sub_model.hpp"
 
 namespace agglo::dem::contact {
@@ -22,6 +23,12 @@ class AlphaDamping {
   // eta_N for reduced mass m* [kg] and normal stiffness k_N [N/m].
   double coefficient(double mstar, double k_n) const { return alpha_ * std::sqrt(mstar * k_n); }
   double alpha() const { return alpha_; }
+  // Lane form (sub_model.hpp).
+  static constexpr bool has_lanes = true;
+  template <class T>
+  [[gnu::always_inline]] T coefficient_lanes(T mstar, T k_n) const {
+    return alpha_ * lanes::sqrt(mstar * k_n);
+  }
 
  private:
   double alpha_;

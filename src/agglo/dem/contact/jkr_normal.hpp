@@ -6,9 +6,14 @@
 //   k_N     = 4/3 E* a                                                              [N/m]
 // A contact forms at delta >= 0 and breaks below -delta_C (break_rule "marshall") or at the force
 // minimum -F_C, delta = -0.48075 delta_C (break_rule "lammps", LAMMPS' pair granular jkr).
+#include <cstdint>
+
+#include "agglo/dem/contact/lanes.hpp"
 #include "agglo/dem/contact/sub_model.hpp"
 
 namespace agglo::dem::contact {
+
+using Cells = std::int32_t __attribute__((vector_size(4 * lanes::kLanes)));  // table cells of a Lane
 
 class JkrNormal {
  public:
@@ -29,6 +34,50 @@ class JkrNormal {
   static double force_of_root(const JkrPair& jkr, double s) { return jkr_force_of_root(jkr, s); }
   double force(const JkrPair& jkr, double a) const { return jkr.force_of_a(a); }
   double stiffness(const JkrPair& jkr, double a) const { return jkr.stiffness(a); }
+
+  // Lane forms (sub_model.hpp) of force_of_root and stiffness, F_C and E* per lane: the same expressions.
+  static constexpr bool has_lanes = true;
+  // contact_root on T = delta t_per_delta: jkr_root_fast itself for a double; for a Lane the same operations
+  // with the table's coefficients gathered per lane (every lane through jkr_root_fast if one is beyond the table).
+  template <class T>
+  [[gnu::always_inline]] static T contact_root_lanes(T t) {
+    if constexpr (sizeof(T) == sizeof(double)) {
+      return jkr_root_fast(t);
+    } else {
+      using namespace lanes;
+      const T x = sqrt(maximum(t + kJkrSMin, T{})) * (kJkrTableCells / kJkrTableW);
+      bool in_table = true;
+      for (int l = 0; l < kLanes; ++l) in_table = in_table && x[l] < kJkrTableCells;
+      if (!in_table) [[unlikely]] {
+        T s;
+        for (int l = 0; l < kLanes; ++l) s[l] = jkr_root_fast(t[l]);
+        return s;
+      }
+      const Cells cell = __builtin_convertvector(x, Cells);
+      const T u = x - __builtin_convertvector(cell, T);
+      static_assert(kLanes == 4);
+      const auto& tab = kJkrRootTable.c;
+      const double *r0 = tab[cell[0]], *r1 = tab[cell[1]], *r2 = tab[cell[2]], *r3 = tab[cell[3]];
+      const T c0{r0[0], r1[0], r2[0], r3[0]}, c1{r0[1], r1[1], r2[1], r3[1]}, c2{r0[2], r1[2], r2[2], r3[2]},
+          c3{r0[3], r1[3], r2[3], r3[3]};
+      const T s = c0 + u * (c1 + u * (c2 + u * c3));
+      const T s3 = s * s * s;
+      const T g = 2.0 * s3 * s - 4.0 / 3.0 * s - t;
+      const T gp = 8.0 * s3 - 4.0 / 3.0;
+      const T den = 2.0 * gp * gp - g * (24.0 * s * s);
+      const T step = select(den != 0.0, 2.0 * g * gp / den, T{});
+      return maximum(s - step, T{} + kJkrSMin);
+    }
+  }
+  template <class T>
+  [[gnu::always_inline]] static T force_of_root_lanes(T fc, T s) {
+    const T s3 = s * s * s;
+    return 4.0 * fc * s3 * (s3 - 1.0);
+  }
+  template <class T>
+  [[gnu::always_inline]] static T stiffness_lanes(T estar, T a) {
+    return 4.0 / 3.0 * estar * a;
+  }
 
  private:
   BreakRule rule_;

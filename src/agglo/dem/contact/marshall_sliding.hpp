@@ -32,6 +32,23 @@ class MarshallSliding {
     return ft;
   }
 
+  // Lane form of force (sub_model.hpp): the same operations, the limit as a select.
+  static constexpr bool has_lanes = true;
+  template <class T>
+  [[gnu::always_inline]] lanes::V3<T> force_lanes(const LanePoint<T>& c, T fc, lanes::V3<T>& xi_t) const {
+    using namespace lanes;
+    const T kt = 8.0 * gstar_ * c.a;
+    const T eta_t = c.eta_n;
+    const T flim = mu_ * abs(c.f_ne + 2.0 * fc);
+    xi_t = rotated_into_plane(xi_t, c.n) + c.vs * c.dt;
+    const V3<T> ft = -kt * xi_t - eta_t * c.vs;
+    const T fmag = norm(ft);
+    const V3<T> ft_lim = ft * (flim / fmag);
+    const auto over = fmag > flim;
+    xi_t = select(over, -(ft_lim + eta_t * c.vs) / kt, xi_t);
+    return select(over, ft_lim, ft);
+  }
+
  private:
   double mu_, gstar_;
 };

@@ -11,6 +11,11 @@ struct NoDamping {
   static constexpr const char* name = "none";
   explicit NoDamping(const ContactParams&) {}
   double coefficient(double, double) const { return 0.0; }
+  static constexpr bool has_lanes = true;
+  template <class T>
+  T coefficient_lanes(T, T) const {
+    return T{};
+  }
 };
 
 struct NoRolling {

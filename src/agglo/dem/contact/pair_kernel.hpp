@@ -23,10 +23,21 @@
 #include "agglo/dem/contact_params.hpp"
 #include "agglo/dem/parallel_for.hpp"
 
+// The pair loops are also compiled for AVX2 (without FMA, so the same bits; lanes.hpp), chosen at load time.
+#if defined(__x86_64__) && !defined(__AVX2__) && !defined(__clang__)  // (clang: no clones of flatten functions)
+#define AGGLO_PAIR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define AGGLO_PAIR_CLONES
+#endif
+
 namespace agglo::dem::contact {
 
 template <class M>
 concept Inactive = requires { requires M::inactive; };
+template <class M>
+concept HasLanes = requires { requires M::has_lanes; };
+template <class M>
+concept KeepsSlidingSpring = requires { requires M::sliding_spring; };
 
 template <class Normal, class Damping, class Tangential, class Rolling, class Twisting>
 class PairKernel final : public ContactKernel {
@@ -34,7 +45,118 @@ class PairKernel final : public ContactKernel {
                 Tangential::category == Category::tangential && Rolling::category == Category::rolling &&
                 Twisting::category == Category::twisting);
 
+  // Pairs per chunk of accumulate_range's passes (their states stay in the L1 cache between the passes).
+  static constexpr std::size_t kChunk = 64;
+
+  // What respond_lanes reads and writes for one pair or a Lane of pairs.
+  template <class T>
+  struct LaneIn {
+    lanes::V3<T> xi, xj, vi, vj, wi, wj;
+    T ri, rj, mi, mj, t, a0, fc, estar;  // t = delta t_per_delta of the contact root
+    lanes::V3<T> xi_t;  // the sliding spring (KeepsSlidingSpring only; else zero)
+  };
+  template <class T>
+  struct LaneOut {
+    lanes::V3<T> f_on_i, t_on_i, t_on_j, xi_t;
+    T a;  // the contact radius
+  };
+
+  [[gnu::always_inline]] static lanes::V3<double> to_lanes(const Vec3& v) { return {v.x, v.y, v.z}; }
+  [[gnu::always_inline]] static Vec3 to_vec(const lanes::V3<double>& v) { return {v.x, v.y, v.z}; }
+
+  // The inputs of one engaged pair for respond_lanes.
+  [[gnu::always_inline]] static LaneIn<double> lane_in(const JkrPair& jkr, const PairKinematics& k,
+                                                       const ContactState& s, double t) {
+    LaneIn<double> in{to_lanes(k.xi), to_lanes(k.xj), to_lanes(k.vi), to_lanes(k.vj), to_lanes(k.wi),
+                      to_lanes(k.wj), k.ri, k.rj, k.mi, k.mj, t, jkr.a0, jkr.Fc, jkr.Estar, {0.0, 0.0, 0.0}};
+    if constexpr (KeepsSlidingSpring<Tangential>) in.xi_t = to_lanes(s.xi_t);
+    return in;
+  }
+
+  // The engaged pairs of one chunk as arrays of each input and output of respond_lanes (pass 2 of
+  // accumulate_range_lanes), in pair order, padded to a multiple of kLanes by copies of the last.
+  struct Staged {
+    static constexpr std::size_t kCap = kChunk + lanes::kLanes;
+    enum Field { xi = 0, xj = 3, vi = 6, vj = 9, wi = 12, wj = 15, ri = 18, rj, mi, mj, t, a0, fc, estar, xi_t,
+                 f = xi_t + 3, ti = f + 3, tj = ti + 3, a = tj + 3, kFields };
+    alignas(64) double v[kFields][kCap];
+    std::uint32_t kind[kCap];
+
+    [[gnu::always_inline]] void put3(int field, std::size_t n, const Vec3& x) {
+      v[field][n] = x.x;
+      v[field + 1][n] = x.y;
+      v[field + 2][n] = x.z;
+    }
+    [[gnu::always_inline]] void put(std::size_t n, const Pair& pr, const Particles& p, double t_root) {
+      put3(xi, n, p.x[pr.i]);
+      put3(xj, n, p.x[pr.j]);
+      put3(vi, n, p.v[pr.i]);
+      put3(vj, n, p.v[pr.j]);
+      put3(wi, n, p.w[pr.i]);
+      put3(wj, n, p.w[pr.j]);
+      v[ri][n] = p.r[pr.i];
+      v[rj][n] = p.r[pr.j];
+      v[mi][n] = p.m[pr.i];
+      v[mj][n] = p.m[pr.j];
+      v[t][n] = t_root;
+      v[a0][n] = pr.jkr.a0;
+      v[fc][n] = pr.jkr.Fc;
+      v[estar][n] = pr.jkr.Estar;
+      if constexpr (KeepsSlidingSpring<Tangential>) put3(xi_t, n, pr.state.xi_t);
+      kind[n] = pr.kind;
+    }
+    // Entries n .. the next multiple of kLanes copied from entry n - 1 (n > 0).
+    [[gnu::always_inline]] void pad(std::size_t n) {
+      for (std::size_t e = n; e % lanes::kLanes != 0; ++e) {
+        for (int fld = 0; fld < xi_t + 3; ++fld) v[fld][e] = v[fld][n - 1];
+        kind[e] = kind[n - 1];
+      }
+    }
+    template <class T>
+    [[gnu::always_inline]] lanes::V3<T> get3(int field, std::size_t g) const {
+      return {lanes::load<T>(&v[field][g]), lanes::load<T>(&v[field + 1][g]), lanes::load<T>(&v[field + 2][g])};
+    }
+    template <class T>
+    [[gnu::always_inline]] LaneIn<T> read(std::size_t g) const {
+      using lanes::load;
+      LaneIn<T> in{get3<T>(xi, g), get3<T>(xj, g), get3<T>(vi, g), get3<T>(vj, g), get3<T>(wi, g), get3<T>(wj, g),
+                   load<T>(&v[ri][g]), load<T>(&v[rj][g]), load<T>(&v[mi][g]), load<T>(&v[mj][g]),
+                   load<T>(&v[t][g]), load<T>(&v[a0][g]), load<T>(&v[fc][g]), load<T>(&v[estar][g]),
+                   {T{}, T{}, T{}}};
+      if constexpr (KeepsSlidingSpring<Tangential>) in.xi_t = get3<T>(xi_t, g);
+      return in;
+    }
+    template <class T>
+    [[gnu::always_inline]] void set3(int field, std::size_t g, const lanes::V3<T>& x) {
+      lanes::store(&v[field][g], x.x);
+      lanes::store(&v[field + 1][g], x.y);
+      lanes::store(&v[field + 2][g], x.z);
+    }
+    template <class T>
+    [[gnu::always_inline]] void write(std::size_t g, const LaneOut<T>& o) {
+      set3(f, g, o.f_on_i);
+      set3(ti, g, o.t_on_i);
+      set3(tj, g, o.t_on_j);
+      if constexpr (KeepsSlidingSpring<Tangential>) set3(xi_t, g, o.xi_t);
+      lanes::store(&v[a][g], o.a);
+    }
+    [[gnu::always_inline]] Vec3 get(int field, std::size_t q) const {
+      return {v[field][q], v[field + 1][q], v[field + 2][q]};
+    }
+    // Staged pair q's force, and its spring into its state.
+    [[gnu::always_inline]] PairForce take(std::size_t q, ContactState& s) const {
+      if constexpr (KeepsSlidingSpring<Tangential>) s.xi_t = get(xi_t, q);
+      s.a = v[a][q];
+      return PairForce{get(f, q), get(ti, q), get(tj, q)};
+    }
+  };
+
+
  public:
+  // Whether the fast path runs kLanes pairs at once (sub_model.hpp: every model has a lane form).
+  static constexpr bool kLaned = HasLanes<Normal> && HasLanes<Damping> && HasLanes<Tangential> &&
+                                 Inactive<Rolling> && Inactive<Twisting>;
+
   // One set of sub-models per pair of material ids (material.hpp): table[k] for Pair::kind == k.
   explicit PairKernel(const std::vector<ContactParams>& table) {
     models_.reserve(table.size());
@@ -54,7 +176,20 @@ class PairKernel final : public ContactKernel {
 
   // Serially in pair order, with the fast arithmetic (Models::fast_force). flatten: the sub-model calls are
   // inlined into the loop (without it GCC keeps the tangential force out of line).
-  [[gnu::flatten]] void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
+  void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
+    accumulate_all(pairs, p, dt);
+  }
+  void crossing_forces(std::vector<Pair>& pairs, const Particles& p, double dt, const PairBlocks& b, std::size_t part,
+                       std::size_t parts, std::vector<PairForce>& crossing) const override {
+    crossing_part(pairs, p, dt, b, part, parts, crossing);
+  }
+  void block_forces(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& b, std::size_t t,
+                    const std::vector<PairForce>& crossing) const override {
+    block_part(pairs, p, dt, b, t, crossing);
+  }
+
+  // (the bodies of the three above; GCC clones no virtual function)
+  [[gnu::flatten]] AGGLO_PAIR_CLONES void accumulate_all(std::vector<Pair>& pairs, Particles& p, double dt) const {
     std::fill(p.f.begin(), p.f.end(), Vec3{});
     std::fill(p.t.begin(), p.t.end(), Vec3{});
     accumulate_range<false>(pairs, p, dt, 0, pairs.size(), 0, nullptr);
@@ -70,6 +205,76 @@ class PairKernel final : public ContactKernel {
   template <bool Crossing>
   [[gnu::always_inline]] void accumulate_range(std::vector<Pair>& pairs, Particles& p, double dt, std::size_t k0,
                                                std::size_t k1, std::uint32_t j_end, const PairForce* crossing) const {
+    if constexpr (kLaned)
+      accumulate_range_lanes<Crossing>(pairs, p, dt, k0, k1, j_end, crossing);
+    else
+      accumulate_range_scalar<Crossing>(pairs, p, dt, k0, k1, j_end, crossing);
+  }
+
+  // accumulate_range with the lanes (kLaned): pass 1 as in accumulate_range_scalar, the engaged pairs' inputs
+  // copied into the chunk's Staged arrays; pass 2 the rest of the law kLanes pairs at a time (respond_lanes; a
+  // group of different material pairs one pair at a time), outputs back into Staged; pass 3 the sums in pair
+  // order. respond_lanes is the same code on one double and on a Lane, so the bits are those of one pair at a
+  // time (fast_force on the parallel path's crossing pairs).
+  template <bool Crossing>
+  [[gnu::always_inline]] void accumulate_range_lanes(std::vector<Pair>& pairs, Particles& p, double dt,
+                                                     std::size_t k0, std::size_t k1, std::uint32_t j_end,
+                                                     const PairForce* crossing) const {
+    Staged st;
+    for (std::size_t c0 = k0; c0 < k1; c0 += kChunk) {
+      const std::size_t c1 = std::min(k1, c0 + kChunk);
+      std::size_t n = 0;
+      for (std::size_t k = c0; k < c1; ++k) {
+        Pair& pr = pairs[k];
+        if (Crossing && pr.j >= j_end) continue;
+        double t = 0.0;
+        if (models_[pr.kind].engage_root_arg(pr.jkr, kinematics(pr, p), pr.state, t)) st.put(n++, pr, p, t);
+      }
+      respond_staged(st, n, dt);
+      std::size_t q = 0;
+      add_chunk<Crossing>(pairs, p, c0, c1, j_end, crossing, [&](Pair& pr) { return st.take(q++, pr.state); });
+    }
+  }
+
+  // The sums of pairs [c0, c1) in pair order: force_of(pair) of each active pair (an engaged contact is active
+  // after step 1, any other inactive: its zero force is added too, as fast_pair_force's would be), a crossing
+  // pair's buffered force to its i only.
+  template <bool Crossing, class ForceOf>
+  [[gnu::always_inline]] static void add_chunk(std::vector<Pair>& pairs, Particles& p, std::size_t c0, std::size_t c1,
+                                               std::uint32_t j_end, const PairForce* crossing, ForceOf&& force_of) {
+    for (std::size_t k = c0; k < c1; ++k) {
+      Pair& pr = pairs[k];
+      if (Crossing && pr.j >= j_end) {
+        p.f[pr.i] += crossing[k].f_on_i;
+        p.t[pr.i] += crossing[k].t_on_i;
+        continue;
+      }
+      add_pair_force(pr, pr.state.active ? force_of(pr) : PairForce{}, p);
+    }
+  }
+
+  // Pass 2 of accumulate_range_lanes on the n staged pairs.
+  [[gnu::always_inline]] void respond_staged(Staged& st, std::size_t n, double dt) const {
+    if (n == 0) return;
+    st.pad(n);
+    for (std::size_t g = 0; g < n; g += lanes::kLanes) {
+      const std::uint32_t kind = st.kind[g];
+      bool same = true;
+      for (std::size_t l = 1; l < lanes::kLanes; ++l) same = same && st.kind[g + l] == kind;
+      if (same) {
+        st.template write<lanes::Lane>(g, models_[kind].respond_lanes(st.template read<lanes::Lane>(g), dt));
+      } else {
+        for (std::size_t l = g; l < std::min(n, g + lanes::kLanes); ++l)
+          st.template write<double>(l, models_[st.kind[l]].respond_lanes(st.template read<double>(l), dt));
+      }
+    }
+  }
+
+  // The one-thread loop of the sub-models without lane forms: two passes per chunk.
+  template <bool Crossing>
+  [[gnu::always_inline]] void accumulate_range_scalar(std::vector<Pair>& pairs, Particles& p, double dt,
+                                                      std::size_t k0, std::size_t k1, std::uint32_t j_end,
+                                                      const PairForce* crossing) const {
     std::array<double, kChunk> root;
     for (std::size_t c0 = k0; c0 < k1; c0 += kChunk) {
       const std::size_t c1 = std::min(k1, c0 + kChunk);
@@ -78,25 +283,16 @@ class PairKernel final : public ContactKernel {
         if (Crossing && pr.j >= j_end) continue;
         models_[pr.kind].fast_engage(pr.jkr, kinematics(pr, p), pr.state, root[k - c0]);
       }
-      for (std::size_t k = c0; k < c1; ++k) {
-        Pair& pr = pairs[k];
-        if (Crossing && pr.j >= j_end) {
-          p.f[pr.i] += crossing[k].f_on_i;
-          p.t[pr.i] += crossing[k].t_on_i;
-          continue;
-        }
-        // (an engaged contact is active after step 1, any other inactive; its zero force is added too, as
-        // fast_pair_force's would be)
-        add_pair_force(pr, pr.state.active ? models_[pr.kind].fast_respond(pr.jkr, kinematics(pr, p), pr.state, dt, root[k - c0])
-                                           : PairForce{}, p);
-      }
+      add_chunk<Crossing>(pairs, p, c0, c1, j_end, crossing, [&](Pair& pr) {
+        return models_[pr.kind].fast_respond(pr.jkr, kinematics(pr, p), pr.state, dt, root[&pr - &pairs[c0]]);
+      });
     }
   }
 
   // Phase 1 of the blocks (contact_kernel.hpp): the crossing pairs of part `part`, one pair at a time.
-  [[gnu::flatten]] void crossing_forces(std::vector<Pair>& pairs, const Particles& p, double dt, const PairBlocks& b,
-                                        std::size_t part, std::size_t parts,
-                                        std::vector<PairForce>& crossing) const override {
+  [[gnu::flatten]] AGGLO_PAIR_CLONES void crossing_part(std::vector<Pair>& pairs, const Particles& p, double dt,
+                                                        const PairBlocks& b, std::size_t part, std::size_t parts,
+                                                        std::vector<PairForce>& crossing) const {
     const std::size_t n = b.crossing.size();
     for (std::size_t c = part * n / parts; c < (part + 1) * n / parts; ++c) {
       const std::size_t k = b.crossing[c];
@@ -105,8 +301,9 @@ class PairKernel final : public ContactKernel {
   }
 
   // Phase 2, block t: the own pairs in the chunks of the one-thread loop (accumulate_range).
-  [[gnu::flatten]] void block_forces(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& b,
-                                     std::size_t t, const std::vector<PairForce>& crossing) const override {
+  [[gnu::flatten]] AGGLO_PAIR_CLONES void block_part(std::vector<Pair>& pairs, Particles& p, double dt,
+                                                     const PairBlocks& b, std::size_t t,
+                                                     const std::vector<PairForce>& crossing) const {
     const std::uint32_t end = b.first_particle[t + 1];
     for (std::uint32_t q = b.first_particle[t]; q < end; ++q) p.f[q] = p.t[q] = Vec3{};
     for (std::size_t k : b.crossing_in[t]) {
@@ -190,9 +387,62 @@ class PairKernel final : public ContactKernel {
     // bits. In two parts (PairKernel::accumulate_range runs them in two passes).
     [[gnu::always_inline]] PairForce fast_force(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
                                                 double dt) const {
-      double root = 0.0;
-      if (!fast_engage(jkr, k, s, root)) return PairForce{};
-      return fast_respond(jkr, k, s, dt, root);
+      if constexpr (kLaned) {
+        double t = 0.0;
+        if (!engage_root_arg(jkr, k, s, t)) return PairForce{};
+        const LaneOut<double> o = respond_lanes(lane_in(jkr, k, s, t), dt);
+        s.a = o.a;
+        if constexpr (KeepsSlidingSpring<Tangential>) s.xi_t = to_vec(o.xi_t);
+        return PairForce{to_vec(o.f_on_i), to_vec(o.t_on_i), to_vec(o.t_on_j)};
+      } else {
+        double root = 0.0;
+        if (!fast_engage(jkr, k, s, root)) return PairForce{};
+        return fast_respond(jkr, k, s, dt, root);
+      }
+    }
+
+    // Step 1 of the lane path: true while engaged, with t = delta t_per_delta, the argument of the contact root.
+    [[gnu::always_inline]] bool engage_root_arg(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
+                                                double& t) const {
+      const Vec3 d = k.xj - k.xi;
+      const double delta = k.ri + k.rj - std::sqrt(norm2(d));
+      if (!engaged(jkr, delta, s)) return false;
+      t = delta * jkr.t_per_delta;
+      return true;
+    }
+
+    // Steps 2-4 of engaged contacts after fast_engage, on one pair (T = double) or a Lane of pairs: the
+    // arithmetic of fast_respond and respond_with with the lane forms of the sub-models (kLaned only).
+    template <class T>
+    [[gnu::always_inline]] LaneOut<T> respond_lanes(const LaneIn<T>& in, double dt) const {
+      using namespace lanes;
+      const V3<T> d = in.xj - in.xi;
+      const T dist2 = norm2(d);
+      const T dist = sqrt(dist2);
+      const T inv = 1.0 / dist;
+      LanePoint<T> c;
+      c.n = d * inv;
+      const T mstar = in.mi * in.mj / (in.mi + in.mj);
+      const T li = (dist2 + in.ri * in.ri - in.rj * in.rj) * (0.5 * inv);
+      const T lj = dist - li;
+      const V3<T> vrel = in.vi - in.vj + cross(li * in.wi + lj * in.wj, c.n);
+      const T root = Normal::contact_root_lanes(in.t);
+      c.a = root * root * in.a0;
+      c.f_ne = Normal::force_of_root_lanes(in.fc, root);
+      c.eta_n = damping_.coefficient_lanes(mstar, Normal::stiffness_lanes(in.estar, c.a));
+      const T ddelta_dt = dot(vrel, c.n);
+      c.vs = vrel - ddelta_dt * c.n;
+      c.f_n = c.f_ne + c.eta_n * ddelta_dt;
+      c.dt = T{} + dt;
+      LaneOut<T> out;
+      out.a = c.a;
+      out.xi_t = in.xi_t;
+      const V3<T> ft = tangential_.force_lanes(c, in.fc, out.xi_t);
+      const V3<T> zero{T{}, T{}, T{}};
+      out.f_on_i = -c.f_n * c.n + ft;
+      out.t_on_i = zero + li * cross(c.n, ft);
+      out.t_on_j = zero + lj * cross(c.n, ft);
+      return out;
     }
 
     // Step 1 and the contact radius s.a (root: s = (a/a0)^(1/2) of Normal::contact_root); true while engaged.
@@ -318,8 +568,6 @@ class PairKernel final : public ContactKernel {
     Twisting twisting_;
   };
 
-  // Pairs per chunk of accumulate_range's two passes (their states stay in the L1 cache between the passes).
-  static constexpr std::size_t kChunk = 64;
 
   std::vector<Models> models_;
 };

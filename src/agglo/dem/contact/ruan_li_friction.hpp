@@ -27,6 +27,17 @@ class RuanLiFriction {
     return ft;
   }
 
+  // Lane form of force (sub_model.hpp): the same operations, the branch as a select.
+  static constexpr bool has_lanes = true;
+  template <class T>
+  [[gnu::always_inline]] lanes::V3<T> force_lanes(const LanePoint<T>& c, T, lanes::V3<T>&) const {
+    using namespace lanes;
+    const T vs_mag = norm(c.vs);
+    const T mag = minimum(mu_ * abs(c.f_n), c.eta_n * vs_mag);
+    const V3<T> zero{T{}, T{}, T{}};
+    return select(vs_mag > 0.0, (-mag / vs_mag) * c.vs, zero);
+  }
+
  private:
   double mu_;
 };

@@ -11,6 +11,12 @@
 //   tangential  Vec3 force(const ContactPoint&, const JkrPair&, ContactState&) const;   [N] on i
 //   rolling,    Vec3 torque(const ContactPoint&, const JkrPair&, ContactState&) const; [N m] on i
 //   twisting    (j receives the opposite), or `static constexpr bool inactive = true;` to do nothing.
+// A model may also give the fast path a lane form (lanes.hpp; the same operations on T = double or a Lane
+// of pairs, branches as selects), declared by `static constexpr bool has_lanes = true;`; the pair loop runs
+// several pairs at once when all five models have one (inactive rolling and twisting count as having one):
+//   normal      template <class T> static T force_of_root_lanes(T fc, T s);  static T stiffness_lanes(T estar, T a);
+//   damping     template <class T> T coefficient_lanes(T mstar, T k_n) const;
+//   tangential  template <class T> lanes::V3<T> force_lanes(const LanePoint<T>&, T fc, lanes::V3<T>& xi_t) const;
 // A model with coefficients of its own declares their [contact] keys (unit, default, range, meaning):
 //   static constexpr Coefficient coefficients[] = {...};   read with p.value(coefficients[k])
 // (coefficient.hpp); the settings table, the case parser and docs/config.md take them from there.
