@@ -19,6 +19,7 @@
 
 #include "agglo/dem/contact/contact_kernel.hpp"
 #include "agglo/dem/contact/contact_point.hpp"
+#include "agglo/dem/contact/lane_staging.hpp"
 #include "agglo/dem/contact/model_names.hpp"
 #include "agglo/dem/contact_params.hpp"
 #include "agglo/dem/parallel_for.hpp"
@@ -48,21 +49,7 @@ class PairKernel final : public ContactKernel {
   // Pairs per chunk of accumulate_range's passes (their states stay in the L1 cache between the passes).
   static constexpr std::size_t kChunk = 64;
 
-  // What respond_lanes reads and writes for one pair or a Lane of pairs.
-  template <class T>
-  struct LaneIn {
-    lanes::V3<T> xi, xj, vi, vj, wi, wj;
-    T ri, rj, mi, mj, t, a0, fc, estar;  // t = delta t_per_delta of the contact root
-    lanes::V3<T> xi_t;  // the sliding spring (KeepsSlidingSpring only; else zero)
-  };
-  template <class T>
-  struct LaneOut {
-    lanes::V3<T> f_on_i, t_on_i, t_on_j, xi_t;
-    T a;  // the contact radius
-  };
-
-  [[gnu::always_inline]] static lanes::V3<double> to_lanes(const Vec3& v) { return {v.x, v.y, v.z}; }
-  [[gnu::always_inline]] static Vec3 to_vec(const lanes::V3<double>& v) { return {v.x, v.y, v.z}; }
+  using Staged = LaneStaging<kChunk, KeepsSlidingSpring<Tangential>>;
 
   // The inputs of one engaged pair for respond_lanes.
   [[gnu::always_inline]] static LaneIn<double> lane_in(const JkrPair& jkr, const PairKinematics& k,
@@ -72,85 +59,6 @@ class PairKernel final : public ContactKernel {
     if constexpr (KeepsSlidingSpring<Tangential>) in.xi_t = to_lanes(s.xi_t);
     return in;
   }
-
-  // The engaged pairs of one chunk as arrays of each input and output of respond_lanes (pass 2 of
-  // accumulate_range_lanes), in pair order, padded to a multiple of kLanes by copies of the last.
-  struct Staged {
-    static constexpr std::size_t kCap = kChunk + lanes::kLanes;
-    enum Field { xi = 0, xj = 3, vi = 6, vj = 9, wi = 12, wj = 15, ri = 18, rj, mi, mj, t, a0, fc, estar, xi_t,
-                 f = xi_t + 3, ti = f + 3, tj = ti + 3, a = tj + 3, kFields };
-    alignas(64) double v[kFields][kCap];
-    std::uint32_t kind[kCap];
-
-    [[gnu::always_inline]] void put3(int field, std::size_t n, const Vec3& x) {
-      v[field][n] = x.x;
-      v[field + 1][n] = x.y;
-      v[field + 2][n] = x.z;
-    }
-    [[gnu::always_inline]] void put(std::size_t n, const Pair& pr, const Particles& p, double t_root) {
-      put3(xi, n, p.x[pr.i]);
-      put3(xj, n, p.x[pr.j]);
-      put3(vi, n, p.v[pr.i]);
-      put3(vj, n, p.v[pr.j]);
-      put3(wi, n, p.w[pr.i]);
-      put3(wj, n, p.w[pr.j]);
-      v[ri][n] = p.r[pr.i];
-      v[rj][n] = p.r[pr.j];
-      v[mi][n] = p.m[pr.i];
-      v[mj][n] = p.m[pr.j];
-      v[t][n] = t_root;
-      v[a0][n] = pr.jkr.a0;
-      v[fc][n] = pr.jkr.Fc;
-      v[estar][n] = pr.jkr.Estar;
-      if constexpr (KeepsSlidingSpring<Tangential>) put3(xi_t, n, pr.state.xi_t);
-      kind[n] = pr.kind;
-    }
-    // Entries n .. the next multiple of kLanes copied from entry n - 1 (n > 0).
-    [[gnu::always_inline]] void pad(std::size_t n) {
-      for (std::size_t e = n; e % lanes::kLanes != 0; ++e) {
-        for (int fld = 0; fld < xi_t + 3; ++fld) v[fld][e] = v[fld][n - 1];
-        kind[e] = kind[n - 1];
-      }
-    }
-    template <class T>
-    [[gnu::always_inline]] lanes::V3<T> get3(int field, std::size_t g) const {
-      return {lanes::load<T>(&v[field][g]), lanes::load<T>(&v[field + 1][g]), lanes::load<T>(&v[field + 2][g])};
-    }
-    template <class T>
-    [[gnu::always_inline]] LaneIn<T> read(std::size_t g) const {
-      using lanes::load;
-      LaneIn<T> in{get3<T>(xi, g), get3<T>(xj, g), get3<T>(vi, g), get3<T>(vj, g), get3<T>(wi, g), get3<T>(wj, g),
-                   load<T>(&v[ri][g]), load<T>(&v[rj][g]), load<T>(&v[mi][g]), load<T>(&v[mj][g]),
-                   load<T>(&v[t][g]), load<T>(&v[a0][g]), load<T>(&v[fc][g]), load<T>(&v[estar][g]),
-                   {T{}, T{}, T{}}};
-      if constexpr (KeepsSlidingSpring<Tangential>) in.xi_t = get3<T>(xi_t, g);
-      return in;
-    }
-    template <class T>
-    [[gnu::always_inline]] void set3(int field, std::size_t g, const lanes::V3<T>& x) {
-      lanes::store(&v[field][g], x.x);
-      lanes::store(&v[field + 1][g], x.y);
-      lanes::store(&v[field + 2][g], x.z);
-    }
-    template <class T>
-    [[gnu::always_inline]] void write(std::size_t g, const LaneOut<T>& o) {
-      set3(f, g, o.f_on_i);
-      set3(ti, g, o.t_on_i);
-      set3(tj, g, o.t_on_j);
-      if constexpr (KeepsSlidingSpring<Tangential>) set3(xi_t, g, o.xi_t);
-      lanes::store(&v[a][g], o.a);
-    }
-    [[gnu::always_inline]] Vec3 get(int field, std::size_t q) const {
-      return {v[field][q], v[field + 1][q], v[field + 2][q]};
-    }
-    // Staged pair q's force, and its spring into its state.
-    [[gnu::always_inline]] PairForce take(std::size_t q, ContactState& s) const {
-      if constexpr (KeepsSlidingSpring<Tangential>) s.xi_t = get(xi_t, q);
-      s.a = v[a][q];
-      return PairForce{get(f, q), get(ti, q), get(tj, q)};
-    }
-  };
-
 
  public:
   // Whether the fast path runs kLanes pairs at once (sub_model.hpp: every model has a lane form).
@@ -228,9 +136,9 @@ class PairKernel final : public ContactKernel {
         Pair& pr = pairs[k];
         if (Crossing && pr.j >= j_end) continue;
         double t = 0.0;
-        if (models_[pr.kind].engage_root_arg(pr.jkr, kinematics(pr, p), pr.state, t)) st.put(n++, pr, p, t);
+        if (models_[pr.kind].engage_root_arg(pr.jkr, kinematics(pr, p), pr.state, t)) st.put(n++, pr, t);
       }
-      respond_staged(st, n, dt);
+      respond_staged(st, n, p, dt);
       std::size_t q = 0;
       add_chunk<Crossing>(pairs, p, c0, c1, j_end, crossing, [&](Pair& pr) { return st.take(q++, pr.state); });
     }
@@ -254,7 +162,7 @@ class PairKernel final : public ContactKernel {
   }
 
   // Pass 2 of accumulate_range_lanes on the n staged pairs.
-  [[gnu::always_inline]] void respond_staged(Staged& st, std::size_t n, double dt) const {
+  [[gnu::always_inline]] void respond_staged(Staged& st, std::size_t n, const Particles& p, double dt) const {
     if (n == 0) return;
     st.pad(n);
     for (std::size_t g = 0; g < n; g += lanes::kLanes) {
@@ -262,10 +170,10 @@ class PairKernel final : public ContactKernel {
       bool same = true;
       for (std::size_t l = 1; l < lanes::kLanes; ++l) same = same && st.kind[g + l] == kind;
       if (same) {
-        st.template write<lanes::Lane>(g, models_[kind].respond_lanes(st.template read<lanes::Lane>(g), dt));
+        st.template write<lanes::Lane>(g, models_[kind].respond_lanes(st.template read<lanes::Lane>(g, p), dt));
       } else {
         for (std::size_t l = g; l < std::min(n, g + lanes::kLanes); ++l)
-          st.template write<double>(l, models_[st.kind[l]].respond_lanes(st.template read<double>(l), dt));
+          st.template write<double>(l, models_[st.kind[l]].respond_lanes(st.template read<double>(l, p), dt));
       }
     }
   }

@@ -1,0 +1,124 @@
+#pragma once
+// What the fast pair loop's lanes read and write (pair_kernel.hpp, respond_lanes; docs/benchmarks_dem.md §9):
+// LaneIn / LaneOut of one pair (T = double) or of a Lane of pairs, and LaneStaging, the engaged pairs of one
+// chunk between the loop's passes: per pair its particle indices, the argument t of its contact root, its JKR
+// constants and sliding spring (kSpring: the tangential model keeps one), and after pass 2 its forces, torques,
+// contact radius and spring. The particles' positions, velocities, spins, radii and masses are gathered by
+// index when a Lane is read. No physics.
+#include <cstddef>
+#include <cstdint>
+
+#include "agglo/core/vec3.hpp"
+#include "agglo/dem/contact/lanes.hpp"
+#include "agglo/dem/contact/pair_state.hpp"
+#include "agglo/dem/neighbor_list.hpp"
+#include "agglo/dem/particles.hpp"
+
+namespace agglo::dem::contact {
+
+template <class T>
+struct LaneIn {
+  lanes::V3<T> xi, xj, vi, vj, wi, wj;
+  T ri, rj, mi, mj, t, a0, fc, estar;  // t = delta t_per_delta, the argument of the contact root
+  lanes::V3<T> xi_t;                   // the sliding spring (zero without one)
+};
+
+template <class T>
+struct LaneOut {
+  lanes::V3<T> f_on_i, t_on_i, t_on_j, xi_t;
+  T a;  // the contact radius
+};
+
+[[gnu::always_inline]] inline lanes::V3<double> to_lanes(const Vec3& v) { return {v.x, v.y, v.z}; }
+[[gnu::always_inline]] inline Vec3 to_vec(const lanes::V3<double>& v) { return {v.x, v.y, v.z}; }
+
+// T of a[idx[0]] (a Lane: of a[idx[0 .. kLanes)]).
+template <class T>
+[[gnu::always_inline]] inline T gather(const std::vector<double>& a, const std::uint32_t* idx) {
+  if constexpr (sizeof(T) == sizeof(double)) {
+    return a[idx[0]];
+  } else {
+    static_assert(lanes::kLanes == 4);
+    return T{a[idx[0]], a[idx[1]], a[idx[2]], a[idx[3]]};
+  }
+}
+template <class T>
+[[gnu::always_inline]] inline lanes::V3<T> gather3(const std::vector<Vec3>& a, const std::uint32_t* idx) {
+  if constexpr (sizeof(T) == sizeof(double)) {
+    return to_lanes(a[idx[0]]);
+  } else {
+    static_assert(lanes::kLanes == 4);
+    const Vec3 &e0 = a[idx[0]], &e1 = a[idx[1]], &e2 = a[idx[2]], &e3 = a[idx[3]];
+    return {T{e0.x, e1.x, e2.x, e3.x}, T{e0.y, e1.y, e2.y, e3.y}, T{e0.z, e1.z, e2.z, e3.z}};
+  }
+}
+
+template <std::size_t kChunk, bool kSpring>
+struct LaneStaging {
+  static constexpr std::size_t kCap = kChunk + lanes::kLanes;
+  enum Field { t = 0, a0, fc, estar, xi_t, kInputs = xi_t + 3, f = kInputs, ti = f + 3, tj = ti + 3, a = tj + 3, kFields };
+  alignas(64) double v[kFields][kCap];
+  std::uint32_t i[kCap], j[kCap], kind[kCap];
+
+  // Entry n: engaged pair pr with contact-root argument t_root.
+  [[gnu::always_inline]] void put(std::size_t n, const Pair& pr, double t_root) {
+    i[n] = pr.i;
+    j[n] = pr.j;
+    kind[n] = pr.kind;
+    v[t][n] = t_root;
+    v[a0][n] = pr.jkr.a0;
+    v[fc][n] = pr.jkr.Fc;
+    v[estar][n] = pr.jkr.Estar;
+    if constexpr (kSpring) {
+      v[xi_t][n] = pr.state.xi_t.x;
+      v[xi_t + 1][n] = pr.state.xi_t.y;
+      v[xi_t + 2][n] = pr.state.xi_t.z;
+    }
+  }
+  // Entries n .. the next multiple of kLanes copied from entry n - 1 (n > 0).
+  [[gnu::always_inline]] void pad(std::size_t n) {
+    for (std::size_t e = n; e % lanes::kLanes != 0; ++e) {
+      for (int fld = 0; fld < kInputs; ++fld) v[fld][e] = v[fld][n - 1];
+      i[e] = i[n - 1], j[e] = j[n - 1], kind[e] = kind[n - 1];
+    }
+  }
+  template <class T>
+  [[gnu::always_inline]] lanes::V3<T> get3(int field, std::size_t g) const {
+    return {lanes::load<T>(&v[field][g]), lanes::load<T>(&v[field + 1][g]), lanes::load<T>(&v[field + 2][g])};
+  }
+  // The inputs of entries g .. g + kLanes (T = Lane) or of entry g (T = double).
+  template <class T>
+  [[gnu::always_inline]] LaneIn<T> read(std::size_t g, const Particles& p) const {
+    using lanes::load;
+    const std::uint32_t *ii = &i[g], *jj = &j[g];
+    LaneIn<T> in{gather3<T>(p.x, ii), gather3<T>(p.x, jj), gather3<T>(p.v, ii), gather3<T>(p.v, jj),
+                 gather3<T>(p.w, ii), gather3<T>(p.w, jj), gather<T>(p.r, ii), gather<T>(p.r, jj),
+                 gather<T>(p.m, ii),  gather<T>(p.m, jj),  load<T>(&v[t][g]),  load<T>(&v[a0][g]),
+                 load<T>(&v[fc][g]),  load<T>(&v[estar][g]), {T{}, T{}, T{}}};
+    if constexpr (kSpring) in.xi_t = get3<T>(xi_t, g);
+    return in;
+  }
+  template <class T>
+  [[gnu::always_inline]] void set3(int field, std::size_t g, const lanes::V3<T>& x) {
+    lanes::store(&v[field][g], x.x);
+    lanes::store(&v[field + 1][g], x.y);
+    lanes::store(&v[field + 2][g], x.z);
+  }
+  template <class T>
+  [[gnu::always_inline]] void write(std::size_t g, const LaneOut<T>& o) {
+    set3(f, g, o.f_on_i);
+    set3(ti, g, o.t_on_i);
+    set3(tj, g, o.t_on_j);
+    if constexpr (kSpring) set3(xi_t, g, o.xi_t);
+    lanes::store(&v[a][g], o.a);
+  }
+  [[gnu::always_inline]] Vec3 get(int field, std::size_t q) const { return {v[field][q], v[field + 1][q], v[field + 2][q]}; }
+  // Entry q's force and torques; its contact radius and spring into its state.
+  [[gnu::always_inline]] PairForce take(std::size_t q, ContactState& s) const {
+    if constexpr (kSpring) s.xi_t = get(xi_t, q);
+    s.a = v[a][q];
+    return PairForce{get(f, q), get(ti, q), get(tj, q)};
+  }
+};
+
+}  // namespace agglo::dem::contact
