@@ -13,8 +13,7 @@ void ThreadChoice::start(int max_threads) {
   chosen_ = 0;
   phase_ = Phase::probe_many;
   left_ = kProbeSteps;
-  stretch_ = kFirstStretch;
-  wall_many_ = wall_one_ = 0.0;
+  stretch_ = kOpeningStretch;
 }
 
 int ThreadChoice::next(int max_threads) {
@@ -35,25 +34,35 @@ void ThreadChoice::end() {
   if (measuring()) record(std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count());
 }
 
+namespace {
+
+// The median of a probe's step times (the upper one of the two middle values).
+double median(std::array<double, ThreadChoice::kProbeSteps> t) {
+  auto mid = t.begin() + t.size() / 2;
+  std::nth_element(t.begin(), mid, t.end());
+  return *mid;
+}
+
+}  // namespace
+
 void ThreadChoice::record(double seconds) {
   if (!measuring()) return;
-  if (phase_ == Phase::probe_many) wall_many_ += seconds;
-  if (phase_ == Phase::probe_one) wall_one_ += seconds;
+  if (phase_ == Phase::probe_many) wall_many_[kProbeSteps - left_] = seconds;
+  if (phase_ == Phase::probe_one) wall_one_[kProbeSteps - left_] = seconds;
   if (--left_ > 0) return;
   if (phase_ == Phase::probe_many) {
     phase_ = Phase::probe_one;
     left_ = kProbeSteps;
   } else if (phase_ == Phase::probe_one) {
-    const int faster = wall_many_ < wall_one_ ? max_ : 1;
+    const int faster = median(wall_many_) < median(wall_one_) ? max_ : 1;
     // the same count again: a longer run before the next probe; the other count: the first length again
-    stretch_ = faster == chosen_ ? std::min(4 * stretch_, kMaxStretch) : kFirstStretch;
+    if (chosen_ != 0) stretch_ = faster == chosen_ ? std::min(4 * stretch_, kMaxStretch) : kFirstStretch;
     chosen_ = faster;
     phase_ = Phase::run;
     left_ = stretch_;
   } else {
     phase_ = Phase::probe_many;
     left_ = kProbeSteps;
-    wall_many_ = wall_one_ = 0.0;
   }
 }
 
