@@ -4,12 +4,10 @@
 // wall time depends on the count: on a machine whose cores are busy with other work, T threads that meet
 // at a step's barriers can take longer than one thread alone. So both are timed, in turn:
 //   probe   kProbeSteps steps at T threads, then kProbeSteps at one thread (wall time, steady clock);
-//   run     the faster count (T only when the median step of its probe took less time; the median, not the
-//           sum: the first steps after a change of count pay for it once, e.g. the team's creation or
-//           its wake-up, and the first step of a run can be slow for reasons of its own, which decided the
-//           first run of two-thread DEM blocks on one thread in 2 of 6 runs on idle cores) for a stretch of steps that starts at
-//           kFirstStretch (kOpeningStretch after the first probe) and grows 4x per probe, up to kMaxStretch,
-//           while the probes keep choosing the same count; then probe again.
+//   run     the faster count (T only when the median step of its probe took less time: a median, so that
+//           a step slow once, such as the first after a change of count, does not decide) for a stretch of
+//           steps that starts at kFirstStretch (kOpeningStretch after the very first probe) and grows 4x per
+//           probe, up to kMaxStretch, while the probes keep choosing the same count; then probe again.
 // The cost is the probes of the slower count: kProbeSteps of every kFirstStretch + 2 kProbeSteps steps at
 // first (3 %), of every kMaxStretch + 2 kProbeSteps later (0.2 %), each slower by the ratio of the two
 // counts' step times. With T = 1, or `AGGLO_THREAD_PROBE=off` in the environment (always T: for measuring
@@ -25,7 +23,7 @@ class ThreadChoice {
  public:
   static constexpr std::uint64_t kProbeSteps = 32, kFirstStretch = 1024, kMaxStretch = 16384;
   // The run after the very first probe: short, so that a first probe misled by the start (the team's threads
-  // not yet spread over the cores; two-thread DEM blocks ran on one thread in 3 of 6 runs on idle cores with
+  // not yet spread over the cores; two-thread DEM blocks ran on one thread in 2 or 3 of 6 runs on idle cores with
   // a first run of kFirstStretch) is corrected soon.
   static constexpr std::uint64_t kOpeningStretch = 128;
 
