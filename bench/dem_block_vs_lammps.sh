@@ -5,7 +5,7 @@
 #     if missing), loop CPU time (loop wall time x LAMMPS' "% CPU use") of STEPS steps after WARM steps;
 #   - agglo: bench_dem_scaling's BM_DemBlock (the same WARM + STEPS), process CPU time, the fast path and
 #     the reference twin (DemSystem::set_reference_kernel), rounds interleaved with LAMMPS;
-#   - threads: agglo's fast path on OMP_NUM_THREADS=1 and 2 (OMP_WAIT_POLICY=passive), wall time, speed-up;
+#   - threads: agglo's fast path on OMP_NUM_THREADS=1 and 2 (GOMP_SPINCOUNT=1000 as agglo sets it), wall time, speed-up;
 #   - instructions (callgrind, block_steps() only) per particle-step of the fast path and the reference, of
 #     the block at CG_SIZE and of the aggregate on the wall.
 # The second system, a fractal aggregate of AGG_N primaries hitting a wall (BM_DemAggregateWall, built by
@@ -95,9 +95,9 @@ for n in $SIZES; do
     agglo_block "$n" 1 1 | tee -a "$RES"
   done
   if [ -n "$THREADS" ]; then
-    # passive OpenMP waits, as the agglo CLI sets them (apps/agglo/omp_wait): spinning threads on a shared
-    # machine take the cores of the others
-    for th in $THREADS; do OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive} agglo_block "$n" 0 "$th" | sed 's/"code": "agglo"/"code": "agglo_threads"/' | tee -a "$RES"; done
+    # short OpenMP spin waits, as the agglo CLI sets them (apps/agglo/omp_wait): long spins on a shared
+    # machine take the cores of the others, sleeping at once costs a wake-up per barrier
+    for th in $THREADS; do GOMP_SPINCOUNT=${GOMP_SPINCOUNT:-1000} agglo_block "$n" 0 "$th" | sed 's/"code": "agglo"/"code": "agglo_threads"/' | tee -a "$RES"; done
   fi
 done
 if [ -n "$AGG_N" ]; then

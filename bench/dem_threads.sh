@@ -6,11 +6,12 @@
 #   collide   agglo collide of cases/breakage_wall_fractal.toml (a shipped 500-primary structure-builder
 #             aggregate on its wall; wall and user CPU of the whole process, /usr/bin/time)
 # in ROUNDS interleaved rounds of the variants (their order rotated by one each round)
-#   t1        one thread (OMP_NUM_THREADS=1 / --threads 1), passive OpenMP waits (agglo's default)
-#   t2        two threads, agglo's defaults: passive waits, the step's thread count chosen by timed probes
+#   t1        one thread (OMP_NUM_THREADS=1 / --threads 1), GOMP_SPINCOUNT=1000 (agglo's default)
+#   t2        two threads, agglo's defaults: short spin waits, the step's thread count chosen by timed probes
 #             (core/thread_choice.hpp)
-#   t2_fixed  two threads at every step (AGGLO_THREAD_PROBE=off), passive waits
+#   t2_fixed  two threads at every step (AGGLO_THREAD_PROBE=off), short spin waits
 #   t2_spin   two threads at every step, GOMP_SPINCOUNT=300000 (libgomp's own default: spinning waits)
+#   t2_passive two threads, probes, OMP_WAIT_POLICY=passive (agglo's default until session 48)
 #   V_before  variant V of the build at BEFORE_BUILD (its bench_dem_scaling and agglo; e.g. main's build:
 #             before and after in the same rounds); ratios against t1_before
 # Prints `uptime` before and after, every run (with the 1-min load average), then (bench/threads_summary.py)
@@ -43,13 +44,14 @@ printf 'system\tvariant\tround\twall_s\tcpu_s\tload\n' > "$table"
 row() { printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$1" "$2" "$3" "$4" "$5" "$(cut -d' ' -f1 /proc/loadavg)" | tee -a "$table"; }
 run() {  # run SYSTEM VARIANT ROUND
   local system=$1 v=$2 r=$3 build=$BUILD threads=2
-  local envs=(-u OMP_WAIT_POLICY -u GOMP_SPINCOUNT -u AGGLO_THREAD_PROBE OMP_WAIT_POLICY=passive)
+  local envs=(-u OMP_WAIT_POLICY -u GOMP_SPINCOUNT -u AGGLO_THREAD_PROBE GOMP_SPINCOUNT=1000)
   [ "${v%_before}" = "$v" ] || build=${BEFORE_BUILD:?variant $v needs BEFORE_BUILD}
   case ${v%_before} in
     t1) threads=1 ;;
     t2) ;;
     t2_fixed) envs+=(AGGLO_THREAD_PROBE=off) ;;
     t2_spin) envs=(-u OMP_WAIT_POLICY -u GOMP_SPINCOUNT GOMP_SPINCOUNT=300000 AGGLO_THREAD_PROBE=off) ;;
+    t2_passive) envs=(-u OMP_WAIT_POLICY -u GOMP_SPINCOUNT -u AGGLO_THREAD_PROBE OMP_WAIT_POLICY=passive) ;;
     *) echo "unknown variant $v" >&2; exit 2 ;;
   esac
   if [ "$system" = collide ]; then

@@ -3,10 +3,11 @@
 # docs/acoustics.md §5.2): the fly-ash case at 8000 samples and the seed-002 baseline (9843 samples),
 # each shortened to T, ROUNDS interleaved rounds of
 #   j1        --threads 1
-#   j2        --threads 2 (agglo's default: passive OpenMP waits, apps/agglo/omp_wait/omp_wait.cpp, and the
+#   j2        --threads 2 (agglo's default: short OpenMP spin waits, apps/agglo/omp_wait/omp_wait.cpp, and the
 #             step's thread count chosen by timed probes, src/agglo/core/thread_choice.hpp)
 #   j2_fixed  --threads 2 with AGGLO_THREAD_PROBE=off: two threads at every step (agglo before the probes)
 #   j2_spin   --threads 2 with GOMP_SPINCOUNT=300000, libgomp's own default (agglo before passive waits)
+#   j2_passive --threads 2 with OMP_WAIT_POLICY=passive (agglo's default until session 48: sleep at once)
 #   V_before  variant V (j1, j2, ...) of the agglo at BEFORE_AGGLO (another build, e.g. of the previous
 #             commit: before and after in the same rounds); ratios and efficiency against j1_before
 # under /usr/bin/time (wall and user CPU of the whole process), the variants' order rotated each round.
@@ -50,6 +51,7 @@ run() {  # run CASE_LABEL CASE_FILE VARIANT ROUND [extra args]
     j2) ;;
     j2_fixed) envs+=(AGGLO_THREAD_PROBE=off) ;;
     j2_spin) envs+=(GOMP_SPINCOUNT=300000 AGGLO_THREAD_PROBE=off) ;;
+    j2_passive) envs+=(OMP_WAIT_POLICY=passive) ;;
     *) echo "unknown variant $v" >&2; exit 2 ;;
   esac
   env "${envs[@]}" /usr/bin/time -f "%e %U" -o "$OUT/time" "$agglo" acoustic "$file" --out "$OUT/run_${label}_$v" \

@@ -14,7 +14,7 @@
 #   acoustic_base     acoustic of the seed-002 baseline, 0.2 s
 #   acoustic_flyash   acoustic of the fly-ash case, 1 s
 #   sectional         sectional of PartMC's constant-kernel case
-# in ROUNDS interleaved rounds of t1 (--threads 1) and t2 (--threads 2; agglo's defaults: passive OpenMP
+# in ROUNDS interleaved rounds of t1 (--threads 1) and t2 (--threads 2; agglo's defaults: short spin OpenMP
 # waits, thread counts by timed probes), their order swapped every round, under /usr/bin/time (wall and
 # user CPU of the whole process). Prints `uptime` before and after, every run (with the 1-min load
 # average), then per command the median wall and CPU of each and the ratios (bench/threads_summary.py):

@@ -96,7 +96,7 @@ double exit_timeout() {
 
 }  // namespace
 
-// apps/agglo/omp_wait/omp_wait.cpp: sets passive OpenMP waits before libgomp starts (referenced so
+// apps/agglo/omp_wait/omp_wait.cpp: sets short OpenMP spin waits before libgomp starts (referenced so
 // that the linker keeps it).
 extern "C" int agglo_omp_wait_linked();
 
