@@ -6,6 +6,7 @@
 
 #include <cstring>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "agglo/dem/contact/builtin_models.hpp"
@@ -62,7 +63,11 @@ PairSet random_pairs(int n, const MaterialPairs& mats, unsigned seed) {
     const ContactParams& c = mats.table[pr.kind];
     pr.jkr = JkrPair::make(r1 * r2 / (r1 + r2), c.estar(), c.surface_energy);
     pr.state.active = gen() % 4 != 0;  // some fresh contacts, some held ones (which may break)
-    if (pr.state.active) pr.state.xi_t = Vec3{u(gen), u(gen), u(gen)} * 1e-9;
+    if (pr.state.active) {
+      pr.state.xi_t = Vec3{u(gen), u(gen), u(gen)} * 1e-9;
+      pr.state.xi_r = Vec3{u(gen), u(gen), u(gen)} * 1e-9;
+      pr.state.xi_q = 1e-3 * u(gen);
+    }
     s.pairs.push_back(pr);
   }
   return s;
@@ -91,29 +96,44 @@ int lane_differences(const ContactLaw& law, const PairSet& start, int* engaged) 
   for (std::size_t q = 0; q < a.p.size(); ++q) diff += !same_bits(a.p.f[q], b.p.f[q]) + !same_bits(a.p.t[q], b.p.t[q]);
   for (std::size_t k = 0; k < a.pairs.size(); ++k) {
     const ContactState &sa = a.pairs[k].state, &sb = b.pairs[k].state;
-    diff += sa.active != sb.active || std::memcmp(&sa.a, &sb.a, sizeof(double)) != 0 || !same_bits(sa.xi_t, sb.xi_t);
+    diff += sa.active != sb.active || std::memcmp(&sa.a, &sb.a, sizeof(double)) != 0 || !same_bits(sa.xi_t, sb.xi_t) ||
+            !same_bits(sa.xi_r, sb.xi_r) || std::memcmp(&sa.xi_q, &sb.xi_q, sizeof(double)) != 0;
     *engaged += sa.active;
   }
   return diff;
 }
 
+// Every combination of the built-in models (all have lane forms); Marshall's rolling and twisting springs
+// only with its sliding spring (the registry's rule).
+std::vector<contact::ModelNames> every_combination() {
+  std::vector<contact::ModelNames> out;
+  for (const char* t : {contact::RuanLiFriction::name, contact::MarshallSliding::name})
+    for (const char* d : {contact::AlphaDamping::name, contact::NoDamping::name})
+      for (const char* r : {contact::NoRolling::name, contact::MarshallRolling::name})
+        for (const char* q : {contact::NoTwisting::name, contact::MarshallTwisting::name}) {
+          const bool springs = std::string(r) != "none" || std::string(q) != "none";
+          if (springs && std::string(t) != contact::MarshallSliding::name) continue;
+          contact::ModelNames names;
+          names.tangential = t, names.damping = d, names.rolling = r, names.twisting = q;
+          out.push_back(names);
+        }
+  return out;
+}
+
 TEST(PairLanes, LanesEqualOnePairAtATime) {
   const MaterialPairs mats = two_materials();
-  const char* tangential[] = {contact::RuanLiFriction::name, contact::MarshallSliding::name};
-  const char* damping[] = {contact::AlphaDamping::name, contact::NoDamping::name};
-  for (const char* t : tangential)
-    for (const char* d : damping) {
-      contact::ModelNames names;
-      names.tangential = t;
-      names.damping = d;
-      const ContactLaw law(mats, names);
-      for (unsigned seed = 1; seed <= 4; ++seed) {
-        const PairSet s = random_pairs(150, mats, seed);  // 150: chunks of 64 and a partial one
-        int engaged = 0;
-        EXPECT_EQ(lane_differences(law, s, &engaged), 0) << t << " " << d << " seed " << seed;
-        EXPECT_GT(engaged, 60) << "the comparison needs engaged contacts";
-      }
+  const auto combinations = every_combination();
+  ASSERT_EQ(combinations.size(), 10u);
+  for (const auto& names : combinations) {
+    const ContactLaw law(mats, names);
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+      const PairSet s = random_pairs(150, mats, seed);  // 150: chunks of 64 and a partial one
+      int engaged = 0;
+      EXPECT_EQ(lane_differences(law, s, &engaged), 0)
+          << names.tangential << " " << names.damping << " " << names.rolling << " " << names.twisting << " seed " << seed;
+      EXPECT_GT(engaged, 60) << "the comparison needs engaged contacts";
     }
+  }
 }
 
 // Negative control: the comparison sees a relative change of 1e-12 in one velocity of one engaged pair.

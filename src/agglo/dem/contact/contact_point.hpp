@@ -22,7 +22,7 @@ template <class T>
 struct LanePoint {
   lanes::V3<T> n;
   T a{}, f_ne{}, f_n{}, eta_n{};
-  lanes::V3<T> vs;
+  lanes::V3<T> vs, w_rel;
   T dt{};
 };
 

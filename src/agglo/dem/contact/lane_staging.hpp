@@ -2,8 +2,9 @@
 // What the fast pair loop's lanes read and write (pair_kernel.hpp, respond_lanes; docs/benchmarks_dem.md §9):
 // LaneIn / LaneOut of one pair (T = double) or of a Lane of pairs, and LaneStaging, the engaged pairs of one
 // chunk between the loop's passes: per pair its particle indices, the argument t of its contact root, its JKR
-// constants and sliding spring (kSpring: the tangential model keeps one), and after pass 2 its forces, torques,
-// contact radius and spring. The particles' positions, velocities, spins, radii and masses are gathered by
+// constants and springs (kSpring: the tangential model keeps a sliding spring; kRoll, kTwist: the rolling and
+// twisting models are active, with their springs), and after pass 2 its forces, torques, contact radius and
+// springs. The particles' positions, velocities, spins, radii and masses are gathered by
 // index when a Lane is read. No physics.
 #include <cstddef>
 #include <cstdint>
@@ -21,12 +22,17 @@ struct LaneIn {
   lanes::V3<T> xi, xj, vi, vj, wi, wj;
   T ri, rj, mi, mj, t, a0, fc, estar;  // t = delta t_per_delta, the argument of the contact root
   lanes::V3<T> xi_t;                   // the sliding spring (zero without one)
+  T R{};                               // effective radius (kRoll only)
+  lanes::V3<T> xi_r{};                 // the rolling spring (kRoll only)
+  T xi_q{};                            // the twisting angle (kTwist only)
 };
 
 template <class T>
 struct LaneOut {
   lanes::V3<T> f_on_i, t_on_i, t_on_j, xi_t;
   T a;  // the contact radius
+  lanes::V3<T> xi_r{};
+  T xi_q{};
 };
 
 [[gnu::always_inline]] inline lanes::V3<double> to_lanes(const Vec3& v) { return {v.x, v.y, v.z}; }
@@ -53,10 +59,11 @@ template <class T>
   }
 }
 
-template <std::size_t kChunk, bool kSpring>
+template <std::size_t kChunk, bool kSpring, bool kRoll, bool kTwist>
 struct LaneStaging {
   static constexpr std::size_t kCap = kChunk + lanes::kLanes;
-  enum Field { t = 0, a0, fc, estar, xi_t, kInputs = xi_t + 3, f = kInputs, ti = f + 3, tj = ti + 3, a = tj + 3, kFields };
+  enum Field { t = 0, a0, fc, estar, xi_t, R = xi_t + 3, xi_r, xi_q = xi_r + 3, kInputs, f = kInputs, ti = f + 3,
+               tj = ti + 3, a = tj + 3, kFields };
   alignas(64) double v[kFields][kCap];
   std::uint32_t i[kCap], j[kCap], kind[kCap];
 
@@ -74,6 +81,13 @@ struct LaneStaging {
       v[xi_t + 1][n] = pr.state.xi_t.y;
       v[xi_t + 2][n] = pr.state.xi_t.z;
     }
+    if constexpr (kRoll) {
+      v[R][n] = pr.jkr.R;
+      v[xi_r][n] = pr.state.xi_r.x;
+      v[xi_r + 1][n] = pr.state.xi_r.y;
+      v[xi_r + 2][n] = pr.state.xi_r.z;
+    }
+    if constexpr (kTwist) v[xi_q][n] = pr.state.xi_q;
   }
   // Entries n .. the next multiple of kLanes copied from entry n - 1 (n > 0).
   [[gnu::always_inline]] void pad(std::size_t n) {
@@ -96,6 +110,8 @@ struct LaneStaging {
                  gather<T>(p.m, ii),  gather<T>(p.m, jj),  load<T>(&v[t][g]),  load<T>(&v[a0][g]),
                  load<T>(&v[fc][g]),  load<T>(&v[estar][g]), {T{}, T{}, T{}}};
     if constexpr (kSpring) in.xi_t = get3<T>(xi_t, g);
+    if constexpr (kRoll) in.R = load<T>(&v[R][g]), in.xi_r = get3<T>(xi_r, g);
+    if constexpr (kTwist) in.xi_q = load<T>(&v[xi_q][g]);
     return in;
   }
   template <class T>
@@ -110,12 +126,16 @@ struct LaneStaging {
     set3(ti, g, o.t_on_i);
     set3(tj, g, o.t_on_j);
     if constexpr (kSpring) set3(xi_t, g, o.xi_t);
+    if constexpr (kRoll) set3(xi_r, g, o.xi_r);
+    if constexpr (kTwist) lanes::store(&v[xi_q][g], o.xi_q);
     lanes::store(&v[a][g], o.a);
   }
   [[gnu::always_inline]] Vec3 get(int field, std::size_t q) const { return {v[field][q], v[field + 1][q], v[field + 2][q]}; }
   // Entry q's force and torques; its contact radius and spring into its state.
   [[gnu::always_inline]] PairForce take(std::size_t q, ContactState& s) const {
     if constexpr (kSpring) s.xi_t = get(xi_t, q);
+    if constexpr (kRoll) s.xi_r = get(xi_r, q);
+    if constexpr (kTwist) s.xi_q = v[xi_q][q];
     s.a = v[a][q];
     return PairForce{get(f, q), get(ti, q), get(tj, q)};
   }

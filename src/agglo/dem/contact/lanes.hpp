@@ -72,6 +72,10 @@ template <class T>
 [[gnu::always_inline]] inline Lane abs(Lane a) {  // the sign bit cleared, as fabs
   return reinterpret_cast<Lane>(reinterpret_cast<Mask>(a) & INT64_MAX);
 }
+[[gnu::always_inline]] inline double copysign(double a, double b) { return std::copysign(a, b); }
+[[gnu::always_inline]] inline Lane copysign(Lane a, Lane b) {  // |a| with the sign bit of b, as copysign
+  return reinterpret_cast<Lane>((reinterpret_cast<Mask>(a) & INT64_MAX) | (reinterpret_cast<Mask>(b) & INT64_MIN));
+}
 template <class T>
 [[gnu::always_inline]] inline T norm(const V3<T>& a) {
   return sqrt(dot(a, a));

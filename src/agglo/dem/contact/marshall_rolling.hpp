@@ -30,6 +30,20 @@ class MarshallRolling {
     return -kr * cross(c.n, s.xi_r);
   }
 
+  // Lane form of torque (sub_model.hpp): the same operations, the cap as a select.
+  static constexpr bool has_lanes = true;
+  template <class T>
+  [[gnu::always_inline]] lanes::V3<T> torque_lanes(const LanePoint<T>& c, T fc, T a0, T R, lanes::V3<T>& xi_r) const {
+    using namespace lanes;
+    const T x = c.a / a0;
+    const T kr = 4.0 * fc * x * sqrt(x);
+    xi_r = rotated_into_plane(xi_r, c.n) + (R * c.dt) * cross(c.w_rel, c.n);
+    const T xi_crit = theta_crit_ * R;
+    const T xr = norm(xi_r);
+    xi_r = select(xr > xi_crit, xi_r * (xi_crit / xr), xi_r);
+    return -kr * cross(c.n, xi_r);
+  }
+
  private:
   double theta_crit_;
 };

@@ -34,6 +34,25 @@ class MarshallTwisting {
     return mq * c.n;
   }
 
+  // Lane form of torque (sub_model.hpp): the same operations, the limit as a select.
+  static constexpr bool has_lanes = true;
+  template <class T>
+  [[gnu::always_inline]] lanes::V3<T> torque_lanes(const LanePoint<T>& c, T fc, T& xi_q) const {
+    using namespace lanes;
+    const T kt = 8.0 * gstar_ * c.a;
+    const T kq = 0.5 * kt * c.a * c.a;
+    const T eta_q = 0.5 * c.eta_n * c.a * c.a;
+    const T limit_base = mu_ * abs(c.f_ne + 2.0 * fc);
+    const T wq = dot(c.w_rel, c.n);
+    xi_q = xi_q + wq * c.dt;
+    const T mq_spring = -kq * xi_q - eta_q * wq;
+    const T mlim = 2.0 / 3.0 * c.a * limit_base;
+    const T mq_lim = copysign(mlim, mq_spring);
+    const auto over = abs(mq_spring) > mlim;
+    xi_q = select(over, -(mq_lim + eta_q * wq) / kq, xi_q);
+    return select(over, mq_lim, mq_spring) * c.n;
+  }
+
  private:
   double mu_, gstar_;
 };

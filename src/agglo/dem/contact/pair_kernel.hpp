@@ -49,7 +49,7 @@ class PairKernel final : public ContactKernel {
   // Pairs per chunk of accumulate_range's passes (their states stay in the L1 cache between the passes).
   static constexpr std::size_t kChunk = 64;
 
-  using Staged = LaneStaging<kChunk, KeepsSlidingSpring<Tangential>>;
+  using Staged = LaneStaging<kChunk, KeepsSlidingSpring<Tangential>, !Inactive<Rolling>, !Inactive<Twisting>>;
 
   // The inputs of one engaged pair for respond_lanes.
   [[gnu::always_inline]] static LaneIn<double> lane_in(const JkrPair& jkr, const PairKinematics& k,
@@ -57,13 +57,15 @@ class PairKernel final : public ContactKernel {
     LaneIn<double> in{to_lanes(k.xi), to_lanes(k.xj), to_lanes(k.vi), to_lanes(k.vj), to_lanes(k.wi),
                       to_lanes(k.wj), k.ri, k.rj, k.mi, k.mj, t, jkr.a0, jkr.Fc, jkr.Estar, {0.0, 0.0, 0.0}};
     if constexpr (KeepsSlidingSpring<Tangential>) in.xi_t = to_lanes(s.xi_t);
+    if constexpr (!Inactive<Rolling>) in.R = jkr.R, in.xi_r = to_lanes(s.xi_r);
+    if constexpr (!Inactive<Twisting>) in.xi_q = s.xi_q;
     return in;
   }
 
  public:
   // Whether the fast path runs kLanes pairs at once (sub_model.hpp: every model has a lane form).
   static constexpr bool kLaned = HasLanes<Normal> && HasLanes<Damping> && HasLanes<Tangential> &&
-                                 Inactive<Rolling> && Inactive<Twisting>;
+                                 (Inactive<Rolling> || HasLanes<Rolling>) && (Inactive<Twisting> || HasLanes<Twisting>);
 
   // One set of sub-models per pair of material ids (material.hpp): table[k] for Pair::kind == k.
   explicit PairKernel(const std::vector<ContactParams>& table) {
@@ -301,6 +303,8 @@ class PairKernel final : public ContactKernel {
         const LaneOut<double> o = respond_lanes(lane_in(jkr, k, s, t), dt);
         s.a = o.a;
         if constexpr (KeepsSlidingSpring<Tangential>) s.xi_t = to_vec(o.xi_t);
+        if constexpr (!Inactive<Rolling>) s.xi_r = to_vec(o.xi_r);
+        if constexpr (!Inactive<Twisting>) s.xi_q = o.xi_q;
         return PairForce{to_vec(o.f_on_i), to_vec(o.t_on_i), to_vec(o.t_on_j)};
       } else {
         double root = 0.0;
@@ -342,14 +346,25 @@ class PairKernel final : public ContactKernel {
       c.vs = vrel - ddelta_dt * c.n;
       c.f_n = c.f_ne + c.eta_n * ddelta_dt;
       c.dt = T{} + dt;
+      c.w_rel = in.wi - in.wj;
       LaneOut<T> out;
       out.a = c.a;
       out.xi_t = in.xi_t;
       const V3<T> ft = tangential_.force_lanes(c, in.fc, out.xi_t);
-      const V3<T> zero{T{}, T{}, T{}};
+      V3<T> ti{T{}, T{}, T{}}, tj = ti;  // the moments in respond_with's order: twisting, rolling, levers
+      if constexpr (!Inactive<Twisting>) {
+        out.xi_q = in.xi_q;
+        const V3<T> m = twisting_.torque_lanes(c, in.fc, out.xi_q);
+        ti = ti + m, tj = tj - m;
+      }
+      if constexpr (!Inactive<Rolling>) {
+        out.xi_r = in.xi_r;
+        const V3<T> m = rolling_.torque_lanes(c, in.fc, in.a0, in.R, out.xi_r);
+        ti = ti + m, tj = tj - m;
+      }
       out.f_on_i = -c.f_n * c.n + ft;
-      out.t_on_i = zero + li * cross(c.n, ft);
-      out.t_on_j = zero + lj * cross(c.n, ft);
+      out.t_on_i = ti + li * cross(c.n, ft);
+      out.t_on_j = tj + lj * cross(c.n, ft);
       return out;
     }
 

@@ -17,6 +17,8 @@
 //   normal      template <class T> static T force_of_root_lanes(T fc, T s);  static T stiffness_lanes(T estar, T a);
 //   damping     template <class T> T coefficient_lanes(T mstar, T k_n) const;
 //   tangential  template <class T> lanes::V3<T> force_lanes(const LanePoint<T>&, T fc, lanes::V3<T>& xi_t) const;
+//   rolling     template <class T> lanes::V3<T> torque_lanes(const LanePoint<T>&, T fc, T a0, T R, lanes::V3<T>& xi_r) const;
+//   twisting    template <class T> lanes::V3<T> torque_lanes(const LanePoint<T>&, T fc, T& xi_q) const;
 // A model with coefficients of its own declares their [contact] keys (unit, default, range, meaning):
 //   static constexpr Coefficient coefficients[] = {...};   read with p.value(coefficients[k])
 // (coefficient.hpp); the settings table, the case parser and docs/config.md take them from there.
