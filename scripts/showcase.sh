@@ -12,7 +12,7 @@ $A -q vcrit cases/seed000_neutral_square.toml --overwrite --out results/neutral_
 echo "== 2. Collision histories just below and above v_crit (time series, VTK snapshots, plots)"
 $A -q collide cases/seed000_neutral_tetrahedron.toml --speed 0.17 --overwrite --out results/neutral_tetrahedron-0.170
 $A -q collide cases/seed000_neutral_tetrahedron.toml --speed 0.20 --overwrite --out results/neutral_tetrahedron-0.200
-# Parts named *.background.sh (the acoustic baseline: two OpenMP threads that wait passively) start
+# Parts named *.background.sh (the acoustic baseline: two OpenMP threads that spin briefly, then sleep, when waiting) start
 # first and run beside the others, which are mostly one thread and plotting; their output is printed
 # when they end. Ctrl-C or a failure stops them too.
 # Each runs in its own process group (setsid), so that stopping the showcase stops its agglo too.
