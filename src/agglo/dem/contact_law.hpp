@@ -50,6 +50,10 @@ class ContactLaw {
   void evaluate_wall(const Wall& w, WallContacts& wc, const Particles& p, double dt, std::vector<PairForce>& out) const {
     kernel_->evaluate_wall(w, wc, p, dt, out);
   }
+  // The same, added into p.f and p.t without the buffer (contact_kernel.hpp).
+  void accumulate_wall(const Wall& w, WallContacts& wc, Particles& p, double dt) const {
+    kernel_->accumulate_wall(w, wc, p, dt);
+  }
   PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s, double dt,
                                   std::uint32_t kind = 0) const {
     return kernel_->evaluate_wall_contact(jkr, k, s, dt, kind);

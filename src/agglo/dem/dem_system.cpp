@@ -114,6 +114,10 @@ void DemSystem::attach() {
 void DemSystem::add_wall_and_body_forces() {
   const auto n = static_cast<std::int64_t>(p_.size());
   for (std::size_t k = 0; k < walls_.size(); ++k) {
+    if (!reference_) {
+      law_.accumulate_wall(params_.walls[k], walls_[k], p_, dt_);
+      continue;
+    }
     law_.evaluate_wall(params_.walls[k], walls_[k], p_, dt_, wall_forces_);
     parallel_for(n, [&](std::int64_t q) {
       p_.f[q] += wall_forces_[q].f_on_i;

@@ -39,6 +39,10 @@ class ContactKernel {
   // Forces of every particle against wall `w` into out[k] (resized to p.size()); updates wc.state.
   virtual void evaluate_wall(const Wall& w, WallContacts& wc, const Particles& p, double dt,
                              std::vector<PairForce>& out) const = 0;
+  // The same forces and torques added straight into p.f and p.t, for the spheres in contact only (adding the
+  // others' zero forces changes no bit: a sum that starts at +0 and only adds is never -0): no buffer and no
+  // pass over it (the fast path; the reference twin keeps evaluate_wall and its buffer).
+  virtual void accumulate_wall(const Wall& w, WallContacts& wc, Particles& p, double dt) const = 0;
   // One sphere against a wall, material pair `kind` (tests).
   virtual PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s, double dt,
                                           std::uint32_t kind) const = 0;

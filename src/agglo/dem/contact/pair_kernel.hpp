@@ -237,6 +237,23 @@ class PairKernel final : public ContactKernel {
     });
   }
 
+  void accumulate_wall(const Wall& w, WallContacts& wc, Particles& p, double dt) const override {
+    parallel_for(static_cast<std::int64_t>(p.size()), [&](std::int64_t k) {
+      const double h = w.height(p.x[k]);
+      ContactState& s = wc.state[k];
+      if (!s.active && p.r[k] - h < 0.0) {  // apart and not touching: Models::engaged's first exit, as wall_force
+        s.delta = p.r[k] - h;
+        return;
+      }
+      const WallKinematics kin{h, -w.normal, p.v[k], p.w[k], p.r[k], p.m[k]};
+      const PairForce f = models_[wc.kind[k]].wall_force(wc.jkr[k], kin, s, dt);
+      if (wc.state[k].active) {
+        p.f[k] += f.f_on_i;
+        p.t[k] += f.t_on_i;
+      }
+    });
+  }
+
   PairForce evaluate_wall_contact(const JkrPair& jkr, const WallKinematics& k, ContactState& s, double dt,
                                   std::uint32_t kind) const override {
     return models_[kind].wall_force(jkr, k, s, dt);
