@@ -105,10 +105,11 @@ class PairKernel final : public ContactKernel {
     accumulate_range<false>(pairs, p, dt, 0, pairs.size(), 0, nullptr);
   }
 
-  // Pairs [k0, k1) added to their particles in pair order, in chunks of kChunk pairs, two passes per chunk: first
-  // step 1 and the contact root of every pair (Models::fast_engage: short independent chains of a square root and
-  // a division, which the core overlaps across pairs), then the rest of the law (Models::fast_respond) and the
-  // sums. The same operations as fast_force pair by pair, so the same bits as fast_pair_force, which the
+  // Pairs [k0, k1) added to their particles in pair order, in chunks of kChunk pairs: the three passes of
+  // accumulate_range_lanes, or for models without lane forms the two of accumulate_range_scalar (first step 1 and
+  // the contact root of every pair, Models::fast_engage: short independent chains of a square root and a
+  // division, which the core overlaps across pairs; then the rest of the law, Models::fast_respond, and the
+  // sums). The same operations as fast_force pair by pair, so the same bits as fast_pair_force, which the
   // parallel path's phase 1 uses: a pair whose j is >= j_end (a crossing pair of a block, pair_blocks.hpp; only
   // with Crossing) was evaluated there, and its force crossing[k] goes to i. So the sums are the same bits on
   // any number of threads.
