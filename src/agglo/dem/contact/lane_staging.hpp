@@ -130,15 +130,23 @@ struct LaneStaging {
     if constexpr (kTwist) lanes::store(&v[xi_q][g], o.xi_q);
     lanes::store(&v[a][g], o.a);
   }
-  [[gnu::always_inline]] Vec3 get(int field, std::size_t q) const { return {v[field][q], v[field + 1][q], v[field + 2][q]}; }
-  // Entry q's force and torques; its contact radius and spring into its state.
-  [[gnu::always_inline]] PairForce take(std::size_t q, ContactState& s) const {
-    if constexpr (kSpring) s.xi_t = get(xi_t, q);
-    if constexpr (kRoll) s.xi_r = get(xi_r, q);
-    if constexpr (kTwist) s.xi_q = v[xi_q][q];
-    s.a = v[a][q];
-    return PairForce{get(f, q), get(ti, q), get(tj, q)};
+  // The outputs of entry q.
+  [[gnu::always_inline]] LaneOut<double> out(std::size_t q) const {
+    LaneOut<double> o{get3<double>(f, q), get3<double>(ti, q), get3<double>(tj, q), {}, v[a][q]};
+    if constexpr (kSpring) o.xi_t = get3<double>(xi_t, q);
+    if constexpr (kRoll) o.xi_r = get3<double>(xi_r, q);
+    if constexpr (kTwist) o.xi_q = v[xi_q][q];
+    return o;
   }
+  // One pair's outputs: its contact radius and springs into its state, its force and torques returned.
+  [[gnu::always_inline]] static PairForce settle(const LaneOut<double>& o, ContactState& s) {
+    s.a = o.a;
+    if constexpr (kSpring) s.xi_t = to_vec(o.xi_t);
+    if constexpr (kRoll) s.xi_r = to_vec(o.xi_r);
+    if constexpr (kTwist) s.xi_q = o.xi_q;
+    return PairForce{to_vec(o.f_on_i), to_vec(o.t_on_i), to_vec(o.t_on_j)};
+  }
+  [[gnu::always_inline]] PairForce take(std::size_t q, ContactState& s) const { return settle(out(q), s); }
 };
 
 }  // namespace agglo::dem::contact

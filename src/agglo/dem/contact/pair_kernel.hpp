@@ -248,7 +248,7 @@ class PairKernel final : public ContactKernel {
       }
       const WallKinematics kin{h, -w.normal, p.v[k], p.w[k], p.r[k], p.m[k]};
       const PairForce f = models_[wc.kind[k]].wall_force(wc.jkr[k], kin, s, dt);
-      if (wc.state[k].active) {
+      if (s.active) {
         p.f[k] += f.f_on_i;
         p.t[k] += f.t_on_i;
       }
@@ -318,12 +318,7 @@ class PairKernel final : public ContactKernel {
       if constexpr (kLaned) {
         double t = 0.0;
         if (!engage_root_arg(jkr, k, s, t)) return PairForce{};
-        const LaneOut<double> o = respond_lanes(lane_in(jkr, k, s, t), dt);
-        s.a = o.a;
-        if constexpr (KeepsSlidingSpring<Tangential>) s.xi_t = to_vec(o.xi_t);
-        if constexpr (!Inactive<Rolling>) s.xi_r = to_vec(o.xi_r);
-        if constexpr (!Inactive<Twisting>) s.xi_q = o.xi_q;
-        return PairForce{to_vec(o.f_on_i), to_vec(o.t_on_i), to_vec(o.t_on_j)};
+        return Staged::settle(respond_lanes(lane_in(jkr, k, s, t), dt), s);
       } else {
         double root = 0.0;
         if (!fast_engage(jkr, k, s, root)) return PairForce{};
@@ -334,11 +329,18 @@ class PairKernel final : public ContactKernel {
     // Step 1 of the lane path: true while engaged, with t = delta t_per_delta, the argument of the contact root.
     [[gnu::always_inline]] bool engage_root_arg(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
                                                 double& t) const {
-      const Vec3 d = k.xj - k.xi;
-      const double delta = k.ri + k.rj - std::sqrt(norm2(d));
-      if (!engaged(jkr, delta, s)) return false;
+      double delta = 0.0;
+      if (!fast_overlap_engaged(jkr, k, s, delta)) return false;
       t = delta * jkr.t_per_delta;
       return true;
+    }
+
+    // Step 1 of the fast path: the overlap (one square root) and the hysteresis; true while engaged.
+    [[gnu::always_inline]] bool fast_overlap_engaged(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
+                                                     double& delta) const {
+      const Vec3 d = k.xj - k.xi;
+      delta = k.ri + k.rj - std::sqrt(norm2(d));
+      return engaged(jkr, delta, s);
     }
 
     // Steps 2-4 of engaged contacts after fast_engage, on one pair (T = double) or a Lane of pairs: the
@@ -389,9 +391,8 @@ class PairKernel final : public ContactKernel {
     // Step 1 and the contact radius s.a (root: s = (a/a0)^(1/2) of Normal::contact_root); true while engaged.
     [[gnu::always_inline]] bool fast_engage(const JkrPair& jkr, const PairKinematics& k, ContactState& s,
                                             double& root) const {
-      const Vec3 d = k.xj - k.xi;
-      const double delta = k.ri + k.rj - std::sqrt(norm2(d));
-      if (!engaged(jkr, delta, s)) return false;
+      double delta = 0.0;
+      if (!fast_overlap_engaged(jkr, k, s, delta)) return false;
       if constexpr (requires { normal_.contact_root(jkr, delta); }) {
         root = normal_.contact_root(jkr, delta);
         s.a = root * root * jkr.a0;
