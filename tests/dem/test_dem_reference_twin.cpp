@@ -183,7 +183,7 @@ TEST(DemReferenceTwin, ParallelBlocksBitIdentical) {
   omp_set_num_threads(saved);
 }
 
-// The neighbour list's rebuild test folded into the parallel drift loop (DemSystem::step, parallel_any)
+// The neighbour list's rebuild test folded into the parallel drift loop (DemSystem::step, parallel_any_ranges and kick_drift.hpp)
 // against the reference twin on one thread, which tests in needs_rebuild's serial pass (it fails when the
 // folded test never asks for a rebuild: 1 build against 6), and every bit against the fast path on one
 // thread: a 17^3 block (4913 particles, above kParallelThreshold: the drift loop runs on the team) fast enough

@@ -128,16 +128,28 @@ void DemSystem::add_wall_and_body_forces() {
   if (norm2(g) > 0.0) parallel_for(n, [&](std::int64_t q) { p_.f[q] += p_.m[q] * g; });
 }
 
-// Half kick of velocity Verlet over h = dt/2 (kick_v_ = h/m, kick_w_ = h/I); with gas drag its exact
-// exponential form (gas_drag.hpp).
-[[gnu::always_inline]] inline void DemSystem::kick(std::int64_t q) {
+// The arrays of the half kicks and the drift (kick_drift.hpp): kick_v_ = h/m, kick_w_ = h/I (h = dt/2); with
+// gas drag the exact relaxation over h towards the gas velocity (gas_drag.hpp); the rebuild test against the positions at the
+// last build when `tracked`.
+VerletArrays DemSystem::verlet_arrays(bool tracked) {
+  VerletArrays a;
+  a.x = p_.x.data();
+  a.v = p_.v.data();
+  a.w = p_.w.data();
+  a.f = p_.f.data();
+  a.t = p_.t.data();
+  a.kick_v = kick_v_.data();
+  a.kick_w = kick_w_.data();
   if (params_.gas.enabled) {
-    const Vec3 u = params_.gas.flow;
-    p_.v[q] = u + decay_[q] * (p_.v[q] - u) + (lag_[q] / p_.m[q]) * p_.f[q];
-  } else {
-    p_.v[q] += kick_v_[q] * p_.f[q];
+    a.decay = decay_.data();
+    a.lag = lag_.data();
+    a.m = p_.m.data();
+    a.u = params_.gas.flow;
   }
-  p_.w[q] += kick_w_[q] * p_.t[q];
+  if (tracked) a.x_at_build = nl_.positions_at_build().data();
+  a.dt = dt_;
+  a.lim2 = 0.25 * skin_ * skin_;
+  return a;
 }
 
 JkrPair DemSystem::jkr_for(std::uint32_t i, std::uint32_t j) const {
@@ -213,17 +225,13 @@ void DemSystem::parallel_step() {
   const int nt = std::max(1, max_threads());
   far_.assign(static_cast<std::size_t>(nt), ThreadFlag{});
   const bool kick_inside = walls_.empty() && norm2(params_.gravity) == 0.0;
-  const double lim2 = 0.25 * skin_ * skin_;
+  const VerletArrays a = verlet_arrays(true);
+  const auto& first = blocks_.first_particle;
 #pragma omp parallel num_threads(nt)
   {
     const auto tid = static_cast<std::size_t>(thread_id()), nth = static_cast<std::size_t>(team_size());
     bool far = false;
-    for (std::size_t b = tid; b < blocks_.blocks(); b += nth)
-      for (std::uint32_t q = blocks_.first_particle[b]; q < blocks_.first_particle[b + 1]; ++q) {
-        kick(q);
-        p_.x[q] += dt_ * p_.v[q];
-        far = nl_.moved_beyond(q, p_.x[q], lim2) || far;
-      }
+    for (std::size_t b = tid; b < blocks_.blocks(); b += nth) far = kick_drift(a, first[b], first[b + 1]) || far;
     far_[tid].far = far;
 #pragma omp barrier
     bool any = false;
@@ -237,14 +245,23 @@ void DemSystem::parallel_step() {
     }
     pair_phases();
     if (kick_inside)
-      for (std::size_t b = tid; b < blocks_.blocks(); b += nth)
-        for (std::uint32_t q = blocks_.first_particle[b]; q < blocks_.first_particle[b + 1]; ++q) kick(q);
+      for (std::size_t b = tid; b < blocks_.blocks(); b += nth) kick(a, first[b], first[b + 1]);
   }
   time_ += dt_;
   ++step_;
   if (kick_inside) return;
   add_wall_and_body_forces();
-  parallel_for(static_cast<std::int64_t>(p_.size()), [&](std::int64_t q) { kick(q); });
+  closing_kick();
+}
+
+// The closing half kick of every particle (the reference twin one particle at a time).
+void DemSystem::closing_kick() {
+  const VerletArrays a = verlet_arrays(false);
+  const auto n = static_cast<std::int64_t>(p_.size());
+  if (reference_)
+    parallel_for(n, [&](std::int64_t q) { kick_one(a, static_cast<std::size_t>(q)); });
+  else
+    parallel_for_ranges(n, kVerletChunk, [&](std::int64_t b, std::int64_t e) { kick(a, b, e); });
 }
 
 void DemSystem::gather_pair_forces() {
@@ -288,19 +305,23 @@ void DemSystem::advance() {
   } else {
     const std::int64_t n = static_cast<std::int64_t>(p_.size());
     // The neighbour list's rebuild test (NeighborList::needs_rebuild) in the drift loop, in parallel: the
-    // same test of the same positions, not a serial pass of its own (the reference twin: the serial pass).
+    // same test of the same positions, not a serial pass of its own (the reference twin: the serial pass,
+    // and the kick and drift one particle at a time).
     const bool tracked = !reference_ && nl_.built_for(p_.size());
-    const double lim2 = 0.25 * skin_ * skin_;
-    auto kick_drift = [&](std::int64_t q) {
-      kick(q);
-      p_.x[q] += dt_ * p_.v[q];
-      return tracked && nl_.moved_beyond(static_cast<std::size_t>(q), p_.x[q], lim2);
-    };
-    const bool far = parallel_any(n, kick_drift);
+    const VerletArrays a = verlet_arrays(tracked);
+    bool far = false;
+    if (reference_) {
+      parallel_for(n, [&](std::int64_t q) {
+        kick_one(a, static_cast<std::size_t>(q));
+        p_.x[q] += dt_ * p_.v[q];
+      });
+    } else {
+      far = parallel_any_ranges(n, kVerletChunk, [&](std::int64_t b, std::int64_t e) { return kick_drift(a, b, e); });
+    }
     time_ += dt_;
     ++step_;
     compute_forces(tracked ? (far ? 1 : 0) : -1);
-    parallel_for(n, [&](std::int64_t q) { kick(q); });
+    closing_kick();
   }
 }
 

@@ -12,6 +12,7 @@
 #include "agglo/dem/dem_state.hpp"
 #include "agglo/dem/external_force.hpp"
 #include "agglo/dem/gas_drag.hpp"
+#include "agglo/dem/kick_drift.hpp"
 #include "agglo/dem/material.hpp"
 #include "agglo/dem/neighbor_list.hpp"
 #include "agglo/dem/particles.hpp"
@@ -119,7 +120,9 @@ class DemSystem {
  private:
   void attach();  // wall contact slots, drag constants and kick factors of particles added since the last call
   void add_wall_and_body_forces();
-  void kick(std::int64_t q);
+  VerletArrays verlet_arrays(bool tracked);  // for kick_drift.hpp (tracked: with the rebuild test)
+  void closing_kick();
+  static constexpr std::int64_t kVerletChunk = 1024;  // particles per range of the kick and drift loops
   void gather_pair_forces();  // the reference path: per-pair buffer, then a gather per particle
   void accumulate_in_blocks();  // the parallel path: the fast path's sums on blocks of pairs
   void rebuild_list();          // the neighbour list built again (pair kinds and JKR constants of new pairs)

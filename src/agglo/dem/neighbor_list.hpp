@@ -32,6 +32,7 @@ class NeighborList {
   // was built for n particles, and whether particle p at x moved more than sqrt(lim2) = skin / 2 since.
   bool built_for(std::size_t n) const { return x_at_build_.size() == n; }
   bool moved_beyond(std::size_t p, const Vec3& x, double lim2) const { return norm2(x - x_at_build_[p]) > lim2; }
+  const std::vector<Vec3>& positions_at_build() const { return x_at_build_; }  // (the same test on a range)
 
   std::vector<Pair>& pairs() { return pairs_; }
   const std::vector<Pair>& pairs() const { return pairs_; }

@@ -2,6 +2,7 @@
 // f(k) for k in [0, n): an OpenMP parallel loop (static schedule) above kParallelThreshold items,
 // serial below it (entering a parallel region costs more than small loops). Every k is handled by
 // exactly one thread, so results do not depend on the thread count when f(k) writes only slot k.
+#include <algorithm>
 #include <cstdint>
 
 #ifdef _OPENMP
@@ -64,26 +65,41 @@ class TeamSize {
   int saved_;
 };
 
+// f(k) for k in [0, count), in parallel when the loop handles more than kParallelThreshold items (`work`).
 template <class F>
-void parallel_for(std::int64_t n, const F& f) {
-  if (n > kParallelThreshold) {
+void parallel_loop(std::int64_t work, std::int64_t count, const F& f) {
+  if (work > kParallelThreshold) {
 #pragma omp parallel for schedule(static)
-    for (std::int64_t k = 0; k < n; ++k) f(k);
+    for (std::int64_t k = 0; k < count; ++k) f(k);
   } else {
-    for (std::int64_t k = 0; k < n; ++k) f(k);
+    for (std::int64_t k = 0; k < count; ++k) f(k);
   }
 }
 
-// Whether f(k) is true for any k in [0, n), f called for every k (as parallel_for; an OR reduction, so the
+template <class F>
+void parallel_for(std::int64_t n, const F& f) {
+  parallel_loop(n, n, f);
+}
+
+// The ranges [k c, min(n, (k + 1) c)) of [0, n) in chunks of c items: f(begin, end) on each, in parallel as
+// parallel_for would be for n items.
+template <class F>
+void parallel_for_ranges(std::int64_t n, std::int64_t c, const F& f) {
+  parallel_loop(n, (n + c - 1) / c, [&](std::int64_t k) { f(k * c, std::min(n, (k + 1) * c)); });
+}
+
+// Whether f(begin, end) is true for any of those ranges, f called on every one (an OR reduction, so the
 // answer does not depend on the thread count).
 template <class F>
-bool parallel_any(std::int64_t n, const F& f) {
+bool parallel_any_ranges(std::int64_t n, std::int64_t c, const F& f) {
+  const std::int64_t chunks = (n + c - 1) / c;
+  auto range = [&](std::int64_t k) { return f(k * c, std::min(n, (k + 1) * c)) ? 1 : 0; };
   int any = 0;
   if (n > kParallelThreshold) {
 #pragma omp parallel for schedule(static) reduction(| : any)
-    for (std::int64_t k = 0; k < n; ++k) any |= f(k) ? 1 : 0;
+    for (std::int64_t k = 0; k < chunks; ++k) any |= range(k);
   } else {
-    for (std::int64_t k = 0; k < n; ++k) any |= f(k) ? 1 : 0;
+    for (std::int64_t k = 0; k < chunks; ++k) any |= range(k);
   }
   return any != 0;
 }

@@ -24,13 +24,6 @@
 #include "agglo/dem/contact_params.hpp"
 #include "agglo/dem/parallel_for.hpp"
 
-// The pair loops are also compiled for AVX2 (without FMA, so the same bits; lanes.hpp), chosen at load time.
-#if defined(__x86_64__) && !defined(__AVX2__) && !defined(__clang__)  // (clang: no clones of flatten functions)
-#define AGGLO_PAIR_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define AGGLO_PAIR_CLONES
-#endif
-
 namespace agglo::dem::contact {
 
 template <class M>
@@ -99,7 +92,7 @@ class PairKernel final : public ContactKernel {
   }
 
   // (the bodies of the three above; GCC clones no virtual function)
-  [[gnu::flatten]] AGGLO_PAIR_CLONES void accumulate_all(std::vector<Pair>& pairs, Particles& p, double dt) const {
+  [[gnu::flatten]] AGGLO_LANE_CLONES void accumulate_all(std::vector<Pair>& pairs, Particles& p, double dt) const {
     std::fill(p.f.begin(), p.f.end(), Vec3{});
     std::fill(p.t.begin(), p.t.end(), Vec3{});
     accumulate_range<false>(pairs, p, dt, 0, pairs.size(), 0, nullptr);
@@ -201,7 +194,7 @@ class PairKernel final : public ContactKernel {
   }
 
   // Phase 1 of the blocks (contact_kernel.hpp): the crossing pairs of part `part`, one pair at a time.
-  [[gnu::flatten]] AGGLO_PAIR_CLONES void crossing_part(std::vector<Pair>& pairs, const Particles& p, double dt,
+  [[gnu::flatten]] AGGLO_LANE_CLONES void crossing_part(std::vector<Pair>& pairs, const Particles& p, double dt,
                                                         const PairBlocks& b, std::size_t part, std::size_t parts,
                                                         std::vector<PairForce>& crossing) const {
     const std::size_t n = b.crossing.size();
@@ -212,7 +205,7 @@ class PairKernel final : public ContactKernel {
   }
 
   // Phase 2, block t: the own pairs in the chunks of the one-thread loop (accumulate_range).
-  [[gnu::flatten]] AGGLO_PAIR_CLONES void block_part(std::vector<Pair>& pairs, Particles& p, double dt,
+  [[gnu::flatten]] AGGLO_LANE_CLONES void block_part(std::vector<Pair>& pairs, Particles& p, double dt,
                                                      const PairBlocks& b, std::size_t t,
                                                      const std::vector<PairForce>& crossing) const {
     const std::uint32_t end = b.first_particle[t + 1];
