@@ -181,6 +181,49 @@ TEST(DemDynamics, NeighborListMatchesBruteForce) {
   EXPECT_EQ(fast, slow);
 }
 
+// The list is sorted by (i, j) without repeats (the state merge of a rebuild and the pair loops rely on it),
+// and a rebuild keeps an active contact whose spheres moved out of range, in its sorted place, with its state.
+TEST(DemDynamics, NeighborListIsSortedAndKeepsBondedPairs) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Vec3> x;
+  std::vector<double> r;
+  for (int k = 0; k < 800; ++k) {
+    x.push_back({u(rng) * 2e-4, u(rng) * 2e-4, u(rng) * 2e-4});
+    r.push_back(5e-6 + 10e-6 * u(rng));
+  }
+  const double skin = 2e-6;
+  NeighborList nl;
+  nl.build(x, r, skin, [](Pair&) {});
+  auto sorted_unique = [&] {
+    const auto& ps = nl.pairs();
+    for (std::size_t k = 1; k < ps.size(); ++k)
+      if (!(std::make_pair(ps[k - 1].i, ps[k - 1].j) < std::make_pair(ps[k].i, ps[k].j))) return false;
+    return true;
+  };
+  ASSERT_GT(nl.pairs().size(), 100u);
+  EXPECT_TRUE(sorted_unique());
+  // Bond a listed pair, then move its j far away: the rebuild keeps it (with its state), others as found.
+  Pair& bonded = nl.pairs()[nl.pairs().size() / 2];
+  bonded.state.active = true;
+  bonded.state.a = 1.25e-7;
+  const std::uint32_t i = bonded.i, j = bonded.j;
+  x[j] = Vec3{1.0, 1.0, 1.0};
+  nl.build(x, r, skin, [](Pair&) {});
+  EXPECT_TRUE(sorted_unique());
+  int found = 0;
+  for (const auto& p : nl.pairs()) {
+    if (p.i == i && p.j == j) {
+      ++found;
+      EXPECT_TRUE(p.state.active);
+      EXPECT_EQ(p.state.a, 1.25e-7);
+    } else {
+      EXPECT_TRUE(p.i != j && p.j != j) << "the moved sphere has no other partner";
+    }
+  }
+  EXPECT_EQ(found, 1);
+}
+
 TEST(DemDynamics, ThreadCountIndependent) {
   // A packed block of 8000 particles (> 4096 pairs: parallel force loop) gives identical states.
   auto make = [] {

@@ -13,57 +13,74 @@ bool NeighborList::needs_rebuild(const std::vector<Vec3>& x, double skin) const 
   return false;
 }
 
+namespace {
+
+using IndexPair = std::pair<std::uint32_t, std::uint32_t>;
+// The pairs (p, q), p < q, closer than r_p + r_q + skin, sorted: a sparse cell grid of cells 2 rmax + skin
+// wide, p in increasing order and each p's partners sorted on their own (a few each: no sort of the whole list).
+std::vector<IndexPair> close_pairs(const std::vector<Vec3>& x, const std::vector<double>& r, double skin) {
+  const std::size_t n = x.size();
+  std::vector<IndexPair> found;
+  if (n < 2) return found;
+  double rmax = *std::max_element(r.begin(), r.end());
+  Vec3 lo = x[0], hi = x[0];
+  for (const auto& p : x)
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], p[c]);
+      hi[c] = std::max(hi[c], p[c]);
+    }
+  const double cell = 2.0 * rmax + skin;
+  std::int64_t dims[3];
+  for (int c = 0; c < 3; ++c) dims[c] = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi[c] - lo[c]) / cell) + 1);
+  // Sparse grid: the (cell key, particle) pairs sorted by key keep memory O(N) for far-flung particles
+  // (one allocation); the cells (a, b, c - 1 .. c + 1) of one row have consecutive keys, one range.
+  auto key = [&](std::int64_t a, std::int64_t b, std::int64_t c) { return (a * dims[1] + b) * dims[2] + c; };
+  std::vector<std::int64_t> ci(n * 3);
+  std::vector<std::pair<std::int64_t, std::uint32_t>> bins(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    for (int c = 0; c < 3; ++c) ci[3 * p + c] = static_cast<std::int64_t>((x[p][c] - lo[c]) / cell);
+    bins[p] = {key(ci[3 * p], ci[3 * p + 1], ci[3 * p + 2]), static_cast<std::uint32_t>(p)};
+  }
+  std::sort(bins.begin(), bins.end());
+  const auto first_at = [&](std::int64_t k) {
+    return std::lower_bound(bins.begin(), bins.end(), std::make_pair(k, std::uint32_t{0}));
+  };
+  for (std::size_t p = 0; p < n; ++p) {
+    const std::size_t first_of_p = found.size();
+    const std::int64_t c_lo = std::max<std::int64_t>(ci[3 * p + 2] - 1, 0);
+    const std::int64_t c_hi = std::min<std::int64_t>(ci[3 * p + 2] + 1, dims[2] - 1);
+    for (std::int64_t da = -1; da <= 1; ++da)
+      for (std::int64_t db = -1; db <= 1; ++db) {
+        std::int64_t a = ci[3 * p] + da, b = ci[3 * p + 1] + db;
+        if (a < 0 || b < 0 || a >= dims[0] || b >= dims[1]) continue;
+        const std::int64_t k_hi = key(a, b, c_hi);
+        for (auto it = first_at(key(a, b, c_lo)); it != bins.end() && it->first <= k_hi; ++it) {
+          const std::uint32_t q = it->second;
+          if (q <= p) continue;
+          double lim = r[p] + r[q] + skin;
+          if (norm2(x[q] - x[p]) < lim * lim) found.emplace_back(static_cast<std::uint32_t>(p), q);
+        }
+      }
+    std::sort(found.begin() + static_cast<std::ptrdiff_t>(first_of_p), found.end());
+  }
+  return found;
+}
+
+}  // namespace
+
 void NeighborList::build(const std::vector<Vec3>& x, const std::vector<double>& r, double skin,
                          const std::function<void(Pair&)>& init_pair) {
   const std::size_t n = x.size();
   ++builds_;
   x_at_build_ = x;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> found;
-  if (n > 1) {
-    double rmax = *std::max_element(r.begin(), r.end());
-    Vec3 lo = x[0], hi = x[0];
-    for (const auto& p : x)
-      for (int c = 0; c < 3; ++c) {
-        lo[c] = std::min(lo[c], p[c]);
-        hi[c] = std::max(hi[c], p[c]);
-      }
-    const double cell = 2.0 * rmax + skin;
-    std::int64_t dims[3];
-    for (int c = 0; c < 3; ++c) dims[c] = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi[c] - lo[c]) / cell) + 1);
-    // Sparse grid: the (cell key, particle) pairs sorted by key keep memory O(N) for far-flung particles
-    // (one allocation); the cells (a, b, c - 1 .. c + 1) of one row have consecutive keys, one range.
-    auto key = [&](std::int64_t a, std::int64_t b, std::int64_t c) { return (a * dims[1] + b) * dims[2] + c; };
-    std::vector<std::int64_t> ci(n * 3);
-    std::vector<std::pair<std::int64_t, std::uint32_t>> bins(n);
-    for (std::size_t p = 0; p < n; ++p) {
-      for (int c = 0; c < 3; ++c) ci[3 * p + c] = static_cast<std::int64_t>((x[p][c] - lo[c]) / cell);
-      bins[p] = {key(ci[3 * p], ci[3 * p + 1], ci[3 * p + 2]), static_cast<std::uint32_t>(p)};
-    }
-    std::sort(bins.begin(), bins.end());
-    const auto first_at = [&](std::int64_t k) {
-      return std::lower_bound(bins.begin(), bins.end(), std::make_pair(k, std::uint32_t{0}));
-    };
-    for (std::size_t p = 0; p < n; ++p) {
-      const std::int64_t c_lo = std::max<std::int64_t>(ci[3 * p + 2] - 1, 0);
-      const std::int64_t c_hi = std::min<std::int64_t>(ci[3 * p + 2] + 1, dims[2] - 1);
-      for (std::int64_t da = -1; da <= 1; ++da)
-        for (std::int64_t db = -1; db <= 1; ++db) {
-          std::int64_t a = ci[3 * p] + da, b = ci[3 * p + 1] + db;
-          if (a < 0 || b < 0 || a >= dims[0] || b >= dims[1]) continue;
-          const std::int64_t k_hi = key(a, b, c_hi);
-          for (auto it = first_at(key(a, b, c_lo)); it != bins.end() && it->first <= k_hi; ++it) {
-            const std::uint32_t q = it->second;
-            if (q <= p) continue;
-            double lim = r[p] + r[q] + skin;
-            if (norm2(x[q] - x[p]) < lim * lim) found.emplace_back(static_cast<std::uint32_t>(p), q);
-          }
-        }
-    }
-  }
-  // Keep active contacts that drifted out of range (they are still bonded).
+  const std::vector<IndexPair> close = close_pairs(x, r, skin);
+  // Keep active contacts that drifted out of range (they are still bonded): the old list is sorted, so
+  // its active pairs are, and the two sorted lists merge.
+  std::vector<IndexPair> bonded;
   for (const auto& pr : pairs_)
-    if (pr.state.active) found.emplace_back(pr.i, pr.j);
-  std::sort(found.begin(), found.end());
+    if (pr.state.active) bonded.emplace_back(pr.i, pr.j);
+  std::vector<IndexPair> found(close.size() + bonded.size());
+  std::merge(close.begin(), close.end(), bonded.begin(), bonded.end(), found.begin());
   found.erase(std::unique(found.begin(), found.end()), found.end());
 
   // Merge states from the old (sorted) list.
