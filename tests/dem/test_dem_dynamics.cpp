@@ -160,15 +160,20 @@ TEST(DemDynamics, BreakRules) {
   }
 }
 
-TEST(DemDynamics, NeighborListMatchesBruteForce) {
-  std::mt19937_64 rng(7);
+// n spheres of radii 5-15 um at random in the box [0, box]^3.
+void random_cloud(int n, unsigned seed, const Vec3& box, std::vector<Vec3>& x, std::vector<double>& r) {
+  std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0, 1);
-  std::vector<Vec3> x;
-  std::vector<double> r;
-  for (int k = 0; k < 1500; ++k) {
-    x.push_back({u(rng) * 4e-4, u(rng) * 4e-4, u(rng) * 1e-4});
+  for (int k = 0; k < n; ++k) {
+    x.push_back({u(rng) * box.x, u(rng) * box.y, u(rng) * box.z});
     r.push_back(5e-6 + 10e-6 * u(rng));
   }
+}
+
+TEST(DemDynamics, NeighborListMatchesBruteForce) {
+  std::vector<Vec3> x;
+  std::vector<double> r;
+  random_cloud(1500, 7, {4e-4, 4e-4, 1e-4}, x, r);
   double skin = 2e-6;
   NeighborList nl;
   nl.build(x, r, skin, [](Pair&) {});
@@ -184,14 +189,9 @@ TEST(DemDynamics, NeighborListMatchesBruteForce) {
 // The list is sorted by (i, j) without repeats (the state merge of a rebuild and the pair loops rely on it),
 // and a rebuild keeps an active contact whose spheres moved out of range, in its sorted place, with its state.
 TEST(DemDynamics, NeighborListIsSortedAndKeepsBondedPairs) {
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(0, 1);
   std::vector<Vec3> x;
   std::vector<double> r;
-  for (int k = 0; k < 800; ++k) {
-    x.push_back({u(rng) * 2e-4, u(rng) * 2e-4, u(rng) * 2e-4});
-    r.push_back(5e-6 + 10e-6 * u(rng));
-  }
+  random_cloud(800, 11, {2e-4, 2e-4, 2e-4}, x, r);
   const double skin = 2e-6;
   NeighborList nl;
   nl.build(x, r, skin, [](Pair&) {});
