@@ -129,8 +129,8 @@ void DemSystem::add_wall_and_body_forces() {
 }
 
 // The arrays of the half kicks and the drift (kick_drift.hpp): kick_v_ = h/m, kick_w_ = h/I (h = dt/2); with
-// gas drag the exact relaxation over h towards the gas velocity (gas_drag.hpp); the rebuild test against the positions at the
-// last build when `tracked`.
+// gas drag the exact relaxation over h towards the gas velocity (gas_drag.hpp); the rebuild test against the
+// positions at the last build when `tracked`.
 VerletArrays DemSystem::verlet_arrays(bool tracked) {
   VerletArrays a;
   a.x = p_.x.data();
