@@ -8,10 +8,13 @@
 #include <cstdint>
 
 // Functions running lanes are also compiled for AVX2 (without FMA, so the same bits), chosen at load time.
+// (-DAGGLO_LANE_CLONES= builds the baseline code only, to check that it gives the same bits.)
+#ifndef AGGLO_LANE_CLONES
 #if defined(__x86_64__) && !defined(__AVX2__) && !defined(__clang__)  // (clang: no clones of flatten functions)
 #define AGGLO_LANE_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define AGGLO_LANE_CLONES
+#endif
 #endif
 
 // Every function here is inlined, so passing Lanes by value has no ABI to keep (GCC warns for 32-byte vectors).
