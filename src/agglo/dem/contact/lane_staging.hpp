@@ -54,8 +54,15 @@ template <class T>
     return to_lanes(a[idx[0]]);
   } else {
     static_assert(lanes::kLanes == 4);
+    // (x, y) of each element as one 16-byte load, interleaved into the x and y lanes; z one by one
+    using Half = double __attribute__((vector_size(16)));
     const Vec3 &e0 = a[idx[0]], &e1 = a[idx[1]], &e2 = a[idx[2]], &e3 = a[idx[3]];
-    return {T{e0.x, e1.x, e2.x, e3.x}, T{e0.y, e1.y, e2.y, e3.y}, T{e0.z, e1.z, e2.z, e3.z}};
+    Half h0, h1, h2, h3;
+    __builtin_memcpy(&h0, &e0.x, sizeof h0), __builtin_memcpy(&h1, &e1.x, sizeof h1);
+    __builtin_memcpy(&h2, &e2.x, sizeof h2), __builtin_memcpy(&h3, &e3.x, sizeof h3);
+    const T xy02 = __builtin_shufflevector(h0, h2, 0, 1, 2, 3), xy13 = __builtin_shufflevector(h1, h3, 0, 1, 2, 3);
+    return {__builtin_shufflevector(xy02, xy13, 0, 4, 2, 6), __builtin_shufflevector(xy02, xy13, 1, 5, 3, 7),
+            T{e0.z, e1.z, e2.z, e3.z}};
   }
 }
 
