@@ -74,8 +74,12 @@ void NeighborList::build(const std::vector<Vec3>& x, const std::vector<double>& 
   ++builds_;
   x_at_build_ = x;
   const std::vector<IndexPair> close = close_pairs(x, r, skin);
-  // Keep active contacts that drifted out of range (they are still bonded): the old list is sorted, so
-  // its active pairs are, and the two sorted lists merge.
+  // Keep active contacts that drifted out of range (they are still bonded): the old list is sorted (a list
+  // restored from elsewhere is sorted here first), so its active pairs are, and the two sorted lists merge.
+  const auto by_index = [](const Pair& a, const Pair& b) {
+    return std::make_pair(a.i, a.j) < std::make_pair(b.i, b.j);
+  };
+  if (!std::is_sorted(pairs_.begin(), pairs_.end(), by_index)) std::sort(pairs_.begin(), pairs_.end(), by_index);
   std::vector<IndexPair> bonded;
   for (const auto& pr : pairs_)
     if (pr.state.active) bonded.emplace_back(pr.i, pr.j);
