@@ -13,7 +13,8 @@
 
 namespace agglo::dem {
 
-// The arrays of a step (one entry per particle; DemSystem::verlet_arrays).
+// The arrays of a step (one entry per particle; DemSystem::verlet_arrays): pointers into the system's
+// vectors, valid while none of them is resized (within a step; DemSystem takes them afresh each step).
 struct VerletArrays {
   Vec3 *x = nullptr, *v = nullptr, *w = nullptr;
   const Vec3 *f = nullptr, *t = nullptr;
