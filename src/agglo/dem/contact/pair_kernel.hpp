@@ -141,8 +141,9 @@ class PairKernel final : public ContactKernel {
   }
 
   // The sums of pairs [c0, c1) in pair order: force_of(pair) of each active pair (an engaged contact is active
-  // after step 1, any other inactive: its zero force is added too, as fast_pair_force's would be), a crossing
-  // pair's buffered force to its i only.
+  // after step 1; an inactive pair's zero force is not added, which changes no bit, as in
+  // ContactKernel::accumulate_wall: the sums start at +0 and only add, so they are never -0), a crossing pair's
+  // buffered force to its i only.
   template <bool Crossing, class ForceOf>
   [[gnu::always_inline]] static void add_chunk(std::vector<Pair>& pairs, Particles& p, std::size_t c0, std::size_t c1,
                                                std::uint32_t j_end, const PairForce* crossing, ForceOf&& force_of) {
@@ -153,7 +154,7 @@ class PairKernel final : public ContactKernel {
         p.t[pr.i] += crossing[k].t_on_i;
         continue;
       }
-      add_pair_force(pr, pr.state.active ? force_of(pr) : PairForce{}, p);
+      if (pr.state.active) add_pair_force(pr, force_of(pr), p);
     }
   }
 
