@@ -90,23 +90,28 @@ TEST(ApproachCache, RunsFromTheCacheEndInTheSameState) {
 // warm start, adapted threshold) comes from the cache with the agglomerate's, and the projectile (kappa_p = 1,
 // uncharged) stays outside the solve.
 TEST(ApproachCache, SpectralRunsEndInTheSameState) {
-  ImpactCase c = shared_flight::load_case("seed000_charged_tetrahedron_k15.toml",
-                                          {"time.after_contact=2e-5", "projectile.gap_radii=0.3",
-                                           "time.relax_time=2e-5", "electrostatics.target_accuracy=1e-2"});
-  ASSERT_TRUE(ApproachCache::applies(c));
-  const dem::Particles relaxed = relaxed_agglomerate(c);
-  ApproachCache cache(c, relaxed);
-  for (double v : {0.1}) {
-    const shared_flight::End own = shared_flight::run(c, relaxed, v, nullptr);
-    const shared_flight::End shared = shared_flight::run(c, relaxed, v, &cache);
-    EXPECT_GT(shared.shared, own.approach_steps - 2 * ApproachCache::kStride) << v;
-    EXPECT_GT(own.outcome.es_solves, 0) << v;
-    EXPECT_TRUE(shared_flight::same_particles(own.state.dem.particles, shared.state.dem.particles)) << v;
-    EXPECT_EQ(own.outcome.steps, shared.outcome.steps) << v;
-    EXPECT_EQ(own.outcome.es_solves, shared.outcome.es_solves) << v;
-    EXPECT_TRUE(shared_flight::same_vectors(own.state.coupling.force, shared.state.coupling.force)) << v;
-    EXPECT_EQ(own.state.coupling.solution_energy, shared.state.coupling.solution_energy) << v;
-    EXPECT_EQ(own.state.coupling.fraction, shared.state.coupling.fraction) << v;
+  for (const char* hold : {"hold=\"constant\"", "hold=\"extrapolated\""}) {
+    ImpactCase c =
+        shared_flight::load_case("seed000_charged_tetrahedron_k15.toml",
+                                 {"time.after_contact=2e-5", "projectile.gap_radii=0.3", "time.relax_time=2e-5",
+                                  "electrostatics.target_accuracy=1e-2", std::string("electrostatics.") + hold});
+    ASSERT_TRUE(ApproachCache::applies(c));
+    const dem::Particles relaxed = relaxed_agglomerate(c);
+    ApproachCache cache(c, relaxed);
+    for (double v : {0.1}) {
+      const shared_flight::End own = shared_flight::run(c, relaxed, v, nullptr);
+      const shared_flight::End shared = shared_flight::run(c, relaxed, v, &cache);
+      EXPECT_GT(shared.shared, own.approach_steps - 2 * ApproachCache::kStride) << v;
+      EXPECT_GT(own.outcome.es_solves, 0) << v;
+      EXPECT_TRUE(shared_flight::same_particles(own.state.dem.particles, shared.state.dem.particles)) << v;
+      EXPECT_EQ(own.outcome.steps, shared.outcome.steps) << v;
+      EXPECT_EQ(own.outcome.es_solves, shared.outcome.es_solves) << v;
+      EXPECT_TRUE(shared_flight::same_vectors(own.state.coupling.force, shared.state.coupling.force)) << v;
+      EXPECT_EQ(own.state.coupling.solution_energy, shared.state.coupling.solution_energy) << v;
+      EXPECT_EQ(own.state.coupling.fraction, shared.state.coupling.fraction) << v;
+      EXPECT_TRUE(shared_flight::same_vectors(own.state.coupling.prev_force, shared.state.coupling.prev_force)) << v;
+      EXPECT_EQ(own.state.coupling.step_at_prev, shared.state.coupling.step_at_prev) << v;
+    }
   }
 }
 

@@ -173,7 +173,18 @@ TEST(ImpactCheckpoint, ErrorControlledChargedRestartIsExact) {
   check_case(load_case("seed000_charged_tetrahedron_k15", {"time.after_contact=2e-5", "output.snapshot_interval=1e-5",
                                                            "projectile.gap_radii=0.3", "time.relax_time=2e-5",
                                                            "electrostatics.target_accuracy=1e-2",
-                                                           "electrostatics.force_tolerance=1e-2"}),
+                                                           "electrostatics.force_tolerance=1e-2",
+                                                           "electrostatics.hold=constant"}),
+             true);
+}
+
+// The extrapolated hold's previous solution is part of the state.
+TEST(ImpactCheckpoint, ExtrapolatedHoldRestartIsExact) {
+  check_case(load_case("seed000_charged_tetrahedron_k15", {"time.after_contact=2e-5", "output.snapshot_interval=1e-5",
+                                                           "projectile.gap_radii=0.3", "time.relax_time=2e-5",
+                                                           "electrostatics.target_accuracy=1e-2",
+                                                           "electrostatics.force_tolerance=1e-2",
+                                                           "electrostatics.hold=extrapolated"}),
              true);
 }
 

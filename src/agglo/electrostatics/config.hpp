@@ -30,7 +30,7 @@ struct EsConfig {
   double force_tolerance = es_keys().force_tolerance.def();  // adaptive update_fraction; 0 = off
   Vec3 external_field;  // [V/m]
   bool force_scale_chi = es_keys().force_scale_chi.def();
-  // Between solves: "constant" (docs/model.md §B.3) | "pair_corrected" (DEM coupling).
+  // Between solves: "constant" (docs/model.md §B.3) | "pair_corrected" | "extrapolated" (DEM coupling).
   std::string hold = std::string(es_keys().hold.def());
 };
 

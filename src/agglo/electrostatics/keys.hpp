@@ -43,9 +43,9 @@ struct SolverKeys {
   settings::Bool force_scale_chi{
       t, {"electrostatics.force_scale_chi", "", "scale forces by chi^(2/5) (reduced modulus)"}, false};
   settings::Choice hold{t,
-                        {"electrostatics.hold", "", "forces between solves: held, or corrected pairwise"},
+                        {"electrostatics.hold", "", "forces between solves: held, corrected pairwise, or extrapolated from the last two solves"},
                         "constant",
-                        {"constant", "pair_corrected"}};
+                        {"constant", "pair_corrected", "extrapolated"}};
   settings::Integer max_degree{
       t, {"electrostatics.max_degree", "", "spectral: fixed degree (0 = adaptive)"}, 0, 0, 200};
   settings::Real target_accuracy{t,

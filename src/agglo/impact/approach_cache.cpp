@@ -30,7 +30,8 @@ double kept_bytes(const ApproachCache::Kept& k) {
   const double n = static_cast<double>(p.size());
   return sizeof(k) + n * (6.0 * sizeof(Vec3) + 5.0 * sizeof(double) + sizeof(std::uint32_t)) +
          static_cast<double>(k.dem.neighbors.pairs.size() * sizeof(dem::Pair)) +
-         static_cast<double>((c.force.size() + c.torque.size() + c.x_at_solve.size() + c.n_s.size()) * sizeof(Vec3)) +
+         static_cast<double>((c.force.size() + c.torque.size() + c.x_at_solve.size() + c.n_s.size() + c.prev_force.size() +
+                              c.prev_torque.size()) * sizeof(Vec3)) +
          static_cast<double>((c.visible.size() + c.f_s.size() + c.u_s.size() + c.warm.ints.size() + c.warm.values.size()) * 8);
 }
 
@@ -133,6 +134,10 @@ void ImpactRun::skip_free_flight(ApproachCache& cache) {
     s.coupling.force.push_back(Vec3{});  // the projectile is outside the solve
     s.coupling.torque.push_back(Vec3{});
     if (!s.coupling.x_at_solve.empty()) s.coupling.x_at_solve.push_back(x_start);
+    if (!s.coupling.prev_force.empty()) {
+      s.coupling.prev_force.push_back(Vec3{});
+      s.coupling.prev_torque.push_back(Vec3{});
+    }
   }
   restore(s);
   shared_steps_ = start->dem.step;

@@ -101,12 +101,12 @@ dem::DemState read_dem(CheckpointReader& r) {
 }
 
 void write_coupling(CheckpointWriter& w, const impact::CouplingState& s) {
-  for (const auto* v : {&s.force, &s.torque, &s.x_at_solve, &s.n_s}) w.pod_vector(*v);
+  for (const auto* v : {&s.force, &s.torque, &s.x_at_solve, &s.n_s, &s.prev_force, &s.prev_torque}) w.pod_vector(*v);
   for (const auto* v : {&s.f_s, &s.u_s, &s.warm.values}) w.pod_vector(*v);
   w.pod_vector(s.visible);
   w.pod_vector(s.warm.ints);
-  for (double v : {s.solution_energy, s.energy}) w.f64(v);
-  for (long v : {s.step_at_solve, s.solves}) w.i64(v);
+  for (double v : {s.solution_energy, s.energy, s.prev_energy}) w.f64(v);
+  for (long v : {s.step_at_solve, s.solves, s.step_at_prev, s.step_now}) w.i64(v);
   for (bool v : {s.correct, s.fast_path}) w.boolean(v);
   for (double v : {s.fraction, s.hold_error.max, s.hold_error.sum, s.hold_error.fraction}) w.f64(v);
   w.i64(s.hold_error.measured);
@@ -114,12 +114,12 @@ void write_coupling(CheckpointWriter& w, const impact::CouplingState& s) {
 
 impact::CouplingState read_coupling(CheckpointReader& r) {
   impact::CouplingState s;
-  for (auto* v : {&s.force, &s.torque, &s.x_at_solve, &s.n_s}) *v = r.pod_vector<Vec3>();
+  for (auto* v : {&s.force, &s.torque, &s.x_at_solve, &s.n_s, &s.prev_force, &s.prev_torque}) *v = r.pod_vector<Vec3>();
   for (auto* v : {&s.f_s, &s.u_s, &s.warm.values}) *v = r.pod_vector<double>();
   s.visible = r.pod_vector<std::size_t>();
   s.warm.ints = r.pod_vector<long long>();
-  for (double* v : {&s.solution_energy, &s.energy}) *v = r.f64();
-  for (long* v : {&s.step_at_solve, &s.solves}) *v = r.i64();
+  for (double* v : {&s.solution_energy, &s.energy, &s.prev_energy}) *v = r.f64();
+  for (long* v : {&s.step_at_solve, &s.solves, &s.step_at_prev, &s.step_now}) *v = r.i64();
   for (bool* v : {&s.correct, &s.fast_path}) *v = r.boolean();
   for (double* v : {&s.fraction, &s.hold_error.max, &s.hold_error.sum, &s.hold_error.fraction}) *v = r.f64();
   s.hold_error.measured = r.i64();

@@ -19,6 +19,11 @@ CouplingState ElectrostaticForce::state() const {
   s.f_s = f_s_;
   s.u_s = u_s_;
   s.n_s = n_s_;
+  s.prev_force = prev_force_;
+  s.prev_torque = prev_torque_;
+  s.prev_energy = prev_energy_;
+  s.step_at_prev = step_at_prev_;
+  s.step_now = step_now_;
   s.fast_path = coulomb_ != nullptr;
   s.warm = solver_->warm_start();
   s.fraction = fraction_;
@@ -40,6 +45,11 @@ void ElectrostaticForce::restore(const CouplingState& s) {
   f_s_ = s.f_s;
   u_s_ = s.u_s;
   n_s_ = s.n_s;
+  prev_force_ = s.prev_force;
+  prev_torque_ = s.prev_torque;
+  prev_energy_ = s.prev_energy;
+  step_at_prev_ = s.step_at_prev;
+  step_now_ = s.step_now;
   coulomb_.reset();
   if (s.fast_path) make_fast_path();
   solver_->set_warm_start(s.warm);

@@ -33,6 +33,10 @@ struct CouplingState {
   std::vector<double> f_s, u_s;       // pair terms at the last solve
   std::vector<Vec3> n_s;
   bool fast_path = false;             // the exact point-charge solver has been made
+  std::vector<Vec3> prev_force, prev_torque;  // the solve before the last (extrapolated hold) [N], [N m]
+  double prev_energy = 0.0;           // its energy [J]
+  long step_at_prev = -1;             // its step; -1: none
+  long step_now = -1;                 // step of the last force evaluation
   es::WarmStart warm;                 // of the chosen solver
   double fraction = 0.0;              // motion threshold in use
   HoldErrorStats hold_error;

@@ -52,6 +52,7 @@ std::string overlap_advice(const dem::Particles& p, const es::EsConfig& es) {
 ElectrostaticForce::ElectrostaticForce(const CouplingSettings& s)
     : s_(s),
       solver_(es::make_solver(s.es.options)),
+      extrapolate_(s.es.hold == "extrapolated"),
       fraction_(s.es.force_tolerance > 0.0 ? kStartFraction : s.es.update_fraction) {}
 
 void ElectrostaticForce::make_fast_path() {
@@ -82,6 +83,8 @@ bool ElectrostaticForce::needs_solve(const dem::Particles& p, long step) const {
 }
 
 void ElectrostaticForce::solve(const dem::Particles& p, long step) {
+  // The extrapolated hold keeps the solve before this one (same visible particles only).
+  const std::vector<std::size_t> was_visible = visible_;
   // Uncharged particles with kappa_p = kappa_0 are electrostatically invisible: leave them out.
   visible_.clear();
   for (std::size_t k = 0; k < p.size(); ++k)
@@ -133,6 +136,7 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
   } else {
     sub = solver_->solve(prob);
   }
+  keep_previous(was_visible == visible_, step);
   last_.energy = sub.energy;
   last_.stats = std::move(sub.stats);
   if (!s_.grounded.empty()) last_.energy *= 0.5;  // the real half of the mirrored system
@@ -160,11 +164,21 @@ void ElectrostaticForce::add_forces(const dem::Particles& p, long step, double, 
                                     std::vector<Vec3>& torque) {
   const bool fresh = needs_solve(p, step);
   if (fresh && s_.es.force_tolerance > 0.0 && step_at_solve_ >= 0 && x_at_solve_.size() == p.size()) {
-    const std::vector<Vec3> held = held_forces(p);
+    const std::vector<Vec3> held = held_forces(p, step);
     solve(p, step);
     adapt(held);
   } else if (fresh) {
     solve(p, step);
+  }
+  step_now_ = step;
+  const double w = ramp(step);
+  if (w != 0.0) {
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      force[k] += s_.force_scale * (last_.force[k] + w * (last_.force[k] - prev_force_[k]));
+      torque[k] += s_.force_scale * (last_.torque[k] + w * (last_.torque[k] - prev_torque_[k]));
+    }
+    energy_ = last_.energy + w * (last_.energy - prev_energy_);
+    return;
   }
   for (std::size_t k = 0; k < p.size(); ++k) {
     force[k] += s_.force_scale * last_.force[k];
@@ -183,8 +197,29 @@ void ElectrostaticForce::add_forces(const dem::Particles& p, long step, double, 
     }
 }
 
-std::vector<Vec3> ElectrostaticForce::held_forces(const dem::Particles& p) {
+// The extrapolated hold's line: the solution about to be replaced becomes its first point.
+void ElectrostaticForce::keep_previous(bool same_particles, long step) {
+  if (!extrapolate_ || !same_particles || step_at_solve_ < 0 || step <= step_at_solve_) {
+    step_at_prev_ = -1;
+    return;
+  }
+  std::swap(prev_force_, last_.force);
+  std::swap(prev_torque_, last_.torque);
+  prev_energy_ = last_.energy;
+  step_at_prev_ = step_at_solve_;
+}
+
+// Never beyond the span of the line itself (w <= 1): the held force stays within F_1 + (F_1 - F_0) when an
+// interval grows longer than the one before it.
+double ElectrostaticForce::ramp(long step) const {
+  if (step_at_prev_ < 0 || step <= step_at_solve_) return 0.0;
+  return std::min(1.0, double(step - step_at_solve_) / double(step_at_solve_ - step_at_prev_));
+}
+
+std::vector<Vec3> ElectrostaticForce::held_forces(const dem::Particles& p, long step) {
   std::vector<Vec3> f = last_.force;
+  if (const double w = ramp(step); w != 0.0)
+    for (std::size_t k = 0; k < f.size(); ++k) f[k] += w * (last_.force[k] - prev_force_[k]);
   if (!correct_) return f;
   pair_terms(p, f_now_, u_now_, n_now_);
   std::size_t k = 0;
@@ -198,7 +233,7 @@ std::vector<Vec3> ElectrostaticForce::held_forces(const dem::Particles& p) {
 }
 
 std::vector<Vec3> ElectrostaticForce::applied_forces(const dem::Particles& p) {
-  std::vector<Vec3> f = held_forces(p);
+  std::vector<Vec3> f = held_forces(p, step_now_);
   for (auto& fk : f) fk *= s_.force_scale;
   return f;
 }
@@ -214,7 +249,9 @@ void ElectrostaticForce::adapt(const std::vector<Vec3>& held) {
   ++hold_error_.measured;
   hold_error_.max = std::max(hold_error_.max, e);
   hold_error_.sum += e;
-  const double factor = e > 0.0 ? std::clamp(kAim * tol / e, 0.25, kGrowth) : kGrowth;
+  // The held error grows as the motion (constant hold) or its square (extrapolated hold).
+  const double ratio = kAim * tol / e;
+  const double factor = e > 0.0 ? std::clamp(extrapolate_ ? std::sqrt(ratio) : ratio, 0.25, kGrowth) : kGrowth;
   fraction_ = std::clamp(fraction_ * factor, kMinFraction, 1.0);
   hold_error_.fraction = fraction_;
 }

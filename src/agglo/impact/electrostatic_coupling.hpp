@@ -10,14 +10,20 @@
 //   pair's force since the solve (tabulated two-sphere solutions, pair_table.hpp): the rapidly
 //   varying two-body part follows every step, only the many-body remainder is held. Measured gain:
 //   1.3-2x smaller force error than "constant" in a charged tetrahedron (kappa 15), exact for a pair.
+//   With hold = "extrapolated" (option) forces, torques and energy continue the straight line through
+//   the last two solutions in the step count, F(s) = F_1 + w (F_1 - F_0), w = (s - s_1) / (s_1 - s_0)
+//   limited to w <= 1 (never beyond the line's own span); constant until a second solve, and again
+//   whenever the set of particles in the solve changes. Second order in the interval where "constant"
+//   is first order (tests/impact/test_coupling.cpp); with error control 4-7x fewer solves in the seed
+//   tetrahedra (docs/seed000.md).
 // * Error-controlled re-solves (electrostatics.force_tolerance = tol > 0): at every solve after the
 //   first, the forces the hold would have applied at that step (held, pair-corrected if chosen) are
 //   compared with the new solution: e = max_k |F_k - F_held,k| / max_k |F_k|, the relative error the
 //   hold reached over the interval since the last solve (it grows with the motion, so it is largest at
 //   the solve). The motion threshold (in place of update_fraction; it starts at 1e-4 of the gap, as
-//   nothing is known before the first measurement) is then scaled by 0.8 tol / e, limited to [1/4, 2]
-//   per solve and to [1e-5, 1]: a hold error proportional to the motion stays below tol (doubling
-//   only while e < 0.4 tol) and settles near 0.8 tol. The measured errors (count, largest, mean) and
+//   nothing is known before the first measurement) is then scaled by 0.5 tol / e (its square root for
+//   the extrapolated hold, whose error grows as the motion squared), limited to [1/4, 1.5] per solve
+//   and to [1e-5, 1]: the hold error settles near 0.5 tol. The measured errors (count, largest, mean) and
 //   the final threshold go to result.json.
 // * Optional force scaling chi^(2/5), chi = E_reduced/E_real (for a reduced modulus).
 // * When every particle has kappa_p = kappa_0 there is no polarisation: the exact point-charge
@@ -70,7 +76,9 @@ class ElectrostaticForce : public dem::ExternalForce {
 
  private:
   bool needs_solve(const dem::Particles& p, long step) const;
-  std::vector<Vec3> held_forces(const dem::Particles& p);  // what a step without a solve would apply
+  std::vector<Vec3> held_forces(const dem::Particles& p, long step);  // what a step without a solve would apply
+  double ramp(long step) const;
+  void keep_previous(bool same_particles, long step);  // before a solve replaces last_  // extrapolated hold: (step - s) / (s - s_prev); 0 without a previous solve
   void adapt(const std::vector<Vec3>& held);                // measure e against last_, rescale fraction_
   void solve(const dem::Particles& p, long step);
   // Isolated-pair force on j (along i->j, > 0 repulsive) and energy of every pair at the current state.
@@ -90,6 +98,11 @@ class ElectrostaticForce : public dem::ExternalForce {
   es::Problem solve_problem_;
   es::Solution solve_out_;
   long step_at_solve_ = -1;
+  bool extrapolate_ = false;  // hold = "extrapolated"
+  std::vector<Vec3> prev_force_, prev_torque_;  // the solve before the last (extrapolated hold)
+  double prev_energy_ = 0.0;
+  long step_at_prev_ = -1;  // its step; -1: none (constant hold until the next solve)
+  long step_now_ = -1;      // step of the last add_forces
   double fraction_ = 0.0;  // the motion threshold in use (update_fraction, adapted with force_tolerance)
   HoldErrorStats hold_error_;
   double energy_ = 0.0;
