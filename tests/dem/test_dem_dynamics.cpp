@@ -171,20 +171,33 @@ void random_cloud(int n, unsigned seed, const Vec3& box, std::vector<Vec3>& x, s
   }
 }
 
+// Boxes that stress the sparse grid's row cursors: a flat slab, one cell, lines along x and z (the rows of
+// one cell's neighbourhood adjacent or coinciding in key), and a dense cloud with far-flung particles.
 TEST(DemDynamics, NeighborListMatchesBruteForce) {
-  std::vector<Vec3> x;
-  std::vector<double> r;
-  random_cloud(1500, 7, {4e-4, 4e-4, 1e-4}, x, r);
-  double skin = 2e-6;
-  NeighborList nl;
-  nl.build(x, r, skin, [](Pair&) {});
-  std::set<std::pair<unsigned, unsigned>> fast, slow;
-  for (const auto& p : nl.pairs()) fast.insert({p.i, p.j});
-  for (unsigned i = 0; i < x.size(); ++i)
-    for (unsigned j = i + 1; j < x.size(); ++j)
-      if (norm(x[j] - x[i]) < r[i] + r[j] + skin) slow.insert({i, j});
-  EXPECT_GT(slow.size(), 100u);
-  EXPECT_EQ(fast, slow);
+  struct Cloud {
+    int n;
+    Vec3 box;
+  };
+  for (const Cloud& cloud : {Cloud{1500, {4e-4, 4e-4, 1e-4}}, Cloud{60, {1e-5, 1e-5, 1e-5}},
+                             Cloud{400, {2e-3, 4e-5, 4e-5}}, Cloud{400, {4e-5, 4e-5, 2e-3}},
+                             Cloud{400, {1.5e-4, 1.5e-4, 1.5e-4}}}) {
+    std::vector<Vec3> x;
+    std::vector<double> r;
+    random_cloud(cloud.n, 7, cloud.box, x, r);
+    if (cloud.n == 400 && cloud.box.x == cloud.box.z)  // far-flung outliers
+      for (int k = 0; k < 6; ++k) x[static_cast<std::size_t>(k)] = Vec3{-1e-2, 5e-3, 2e-2} * double(k % 3 + 1);
+    const double skin = 2e-6;
+    NeighborList nl;
+    nl.build(x, r, skin, [](Pair&) {});
+    std::set<std::pair<unsigned, unsigned>> fast, slow;
+    for (const auto& p : nl.pairs()) fast.insert({p.i, p.j});
+    for (unsigned i = 0; i < x.size(); ++i)
+      for (unsigned j = i + 1; j < x.size(); ++j)
+        if (norm(x[j] - x[i]) < r[i] + r[j] + skin) slow.insert({i, j});
+    EXPECT_GT(slow.size(), 100u) << cloud.n;
+    EXPECT_EQ(fast.size(), nl.pairs().size()) << "repeated pairs, " << cloud.n;
+    EXPECT_EQ(fast, slow) << cloud.n;
+  }
 }
 
 // The list is sorted by (i, j) without repeats (the state merge of a rebuild and the pair loops rely on it),

@@ -16,8 +16,26 @@ bool NeighborList::needs_rebuild(const std::vector<Vec3>& x, double skin) const 
 namespace {
 
 using IndexPair = std::pair<std::uint32_t, std::uint32_t>;
+
+// The found pairs (p, q) ordered by p, each p's partners sorted: a counting sort by p (stable), then each
+// p's few partners sorted on their own (no sort of the whole list).
+std::vector<IndexPair> sorted_by_first(const std::vector<IndexPair>& found, std::size_t n) {
+  std::vector<std::size_t> start(n + 1, 0);
+  for (const auto& [p, q] : found) ++start[p + 1];
+  for (std::size_t p = 0; p < n; ++p) start[p + 1] += start[p];
+  std::vector<IndexPair> out(found.size());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (const auto& pq : found) out[fill[pq.first]++] = pq;
+  for (std::size_t p = 0; p < n; ++p)
+    std::sort(out.begin() + static_cast<std::ptrdiff_t>(start[p]), out.begin() + static_cast<std::ptrdiff_t>(start[p + 1]));
+  return out;
+}
+
 // The pairs (p, q), p < q, closer than r_p + r_q + skin, sorted: a sparse cell grid of cells 2 rmax + skin
-// wide, p in increasing order and each p's partners sorted on their own (a few each: no sort of the whole list).
+// wide. Sparse: the (cell key, particle) pairs sorted by key keep memory O(N) for far-flung particles (one
+// allocation); the cells (a, b, c - 1 .. c + 1) of one row have consecutive keys, one range. The particles
+// are visited in key order, so each of the nine rows' ranges only moves forward: one cursor per row
+// instead of a binary search per particle and row.
 std::vector<IndexPair> close_pairs(const std::vector<Vec3>& x, const std::vector<double>& r, double skin) {
   const std::size_t n = x.size();
   std::vector<IndexPair> found;
@@ -32,8 +50,6 @@ std::vector<IndexPair> close_pairs(const std::vector<Vec3>& x, const std::vector
   const double cell = 2.0 * rmax + skin;
   std::int64_t dims[3];
   for (int c = 0; c < 3; ++c) dims[c] = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi[c] - lo[c]) / cell) + 1);
-  // Sparse grid: the (cell key, particle) pairs sorted by key keep memory O(N) for far-flung particles
-  // (one allocation); the cells (a, b, c - 1 .. c + 1) of one row have consecutive keys, one range.
   auto key = [&](std::int64_t a, std::int64_t b, std::int64_t c) { return (a * dims[1] + b) * dims[2] + c; };
   std::vector<std::int64_t> ci(n * 3);
   std::vector<std::pair<std::int64_t, std::uint32_t>> bins(n);
@@ -42,28 +58,33 @@ std::vector<IndexPair> close_pairs(const std::vector<Vec3>& x, const std::vector
     bins[p] = {key(ci[3 * p], ci[3 * p + 1], ci[3 * p + 2]), static_cast<std::uint32_t>(p)};
   }
   std::sort(bins.begin(), bins.end());
-  const auto first_at = [&](std::int64_t k) {
-    return std::lower_bound(bins.begin(), bins.end(), std::make_pair(k, std::uint32_t{0}));
-  };
-  for (std::size_t p = 0; p < n; ++p) {
-    const std::size_t first_of_p = found.size();
-    const std::int64_t c_lo = std::max<std::int64_t>(ci[3 * p + 2] - 1, 0);
-    const std::int64_t c_hi = std::min<std::int64_t>(ci[3 * p + 2] + 1, dims[2] - 1);
-    for (std::int64_t da = -1; da <= 1; ++da)
-      for (std::int64_t db = -1; db <= 1; ++db) {
-        std::int64_t a = ci[3 * p] + da, b = ci[3 * p + 1] + db;
-        if (a < 0 || b < 0 || a >= dims[0] || b >= dims[1]) continue;
-        const std::int64_t k_hi = key(a, b, c_hi);
-        for (auto it = first_at(key(a, b, c_lo)); it != bins.end() && it->first <= k_hi; ++it) {
-          const std::uint32_t q = it->second;
+  // Row (a + da, b + db) of cell (a, b, c) starts at key(a, b, c) + (da dims[1] + db) dims[2] + (c_lo - c).
+  std::int64_t row_offset[9];
+  for (int row = 0; row < 9; ++row) row_offset[row] = ((row / 3 - 1) * dims[1] + (row % 3 - 1)) * dims[2];
+  std::size_t cursor[9] = {};
+  for (const auto& kp : bins) {
+    const std::uint32_t p = kp.second;
+    const std::int64_t a = ci[3 * p], b = ci[3 * p + 1], c = ci[3 * p + 2];
+    const std::int64_t lo_shift = c > 0 ? -1 : 0, hi_shift = c + 1 < dims[2] ? 1 : 0;
+    const bool a_ok[3] = {a > 0, true, a + 1 < dims[0]}, b_ok[3] = {b > 0, true, b + 1 < dims[1]};
+    for (int da = 0; da < 3; ++da) {
+      if (!a_ok[da]) continue;
+      for (int db = 0; db < 3; ++db) {
+        if (!b_ok[db]) continue;
+        const int row = 3 * da + db;
+        const std::int64_t k_lo = kp.first + row_offset[row] + lo_shift, k_hi = kp.first + row_offset[row] + hi_shift;
+        std::size_t& it = cursor[row];
+        while (it < n && bins[it].first < k_lo) ++it;
+        for (std::size_t s = it; s < n && bins[s].first <= k_hi; ++s) {
+          const std::uint32_t q = bins[s].second;
           if (q <= p) continue;
-          double lim = r[p] + r[q] + skin;
-          if (norm2(x[q] - x[p]) < lim * lim) found.emplace_back(static_cast<std::uint32_t>(p), q);
+          const double lim = r[p] + r[q] + skin;
+          if (norm2(x[q] - x[p]) < lim * lim) found.emplace_back(p, q);
         }
       }
-    std::sort(found.begin() + static_cast<std::ptrdiff_t>(first_of_p), found.end());
+    }
   }
-  return found;
+  return sorted_by_first(found, n);
 }
 
 }  // namespace
