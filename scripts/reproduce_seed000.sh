@@ -5,11 +5,11 @@
 #  2. Table 2 with the shipped cases, which carry a rounded point of the fitted set: v_crit of the neutral and
 #     kappa_p = 1 tetrahedron (the targets) and kappa_p = 2.5 and 15 (predictions, spectral solver);
 #  3. the U/U0 and R_g histories (seed Figs. 3d, 4d, 5) and the plots.
-# The three steps run side by side (below); calibration + Table 2 took 111-115 s on two idle cores
-# (docs/seed000.md, Cost).
+# The three steps run side by side (below); calibration + Table 2 took 53 s on two idle cores (111-115 s
+# before the kappa_p = 2.5 and 15 cases extrapolated their forces between solves; docs/seed000.md, Cost).
 # Writes results/seed000/{calibration/,table2.csv,table2.json,*.png}.
 #   --ranges  also predicts kappa_p = 2.5 and 15 over the whole fitted set (calibrate.predict = "range": the
-#             best fit and the set's extreme points, 10 spectral bisections, about 1 h on 2 cores)
+#             best fit and the set's extreme points, 10 spectral bisections; 4.6 min on 2 idle cores)
 # Other arguments go to every agglo call of steps 2-3 (e.g. --set electrostatics.update_fraction=0.0125).
 # AGGLO (build/agglo) and OUT (results/seed000): the agglo binary and the output folder (relative paths: to
 # the repository).
@@ -38,6 +38,18 @@ if [ "${SMOKE:-0}" = 1 ]; then
 fi
 mkdir -p "$OUT"
 start=$(date +%s)
+# A step that fails (or Ctrl-C, SIGTERM) stops the others too: none keeps running, or writing, on its own.
+pids=()
+hist=
+fit=
+stop_steps() {
+  local kids
+  kids=$(for p in "${pids[@]}" $hist; do pgrep -P "$p"; done 2>/dev/null || true)
+  kill "${pids[@]}" $hist $fit $kids 2>/dev/null || true
+}
+trap 'st=$?; if [ "$st" -ne 0 ]; then stop_steps; echo "reproduce_seed000: stopped with exit $st (a failed step or a signal); every other step stopped too" >&2; fi' EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
 # Steps 1-3 are independent (the shipped cases carry the fitted point) and run side by side: the four Table 2
 # bisections on one thread each (a bisection round is a chain of runs: on one thread vcrit.order = "top_down"
 # stops each round at its first intact speed), the two spectral ones first, as they take longest; the fit and
@@ -47,7 +59,6 @@ start=$(date +%s)
 echo "== 1. calibration of (E, e) on the neutral and kappa_p = 1 tetrahedron, and"
 echo "== 2. Table 2 with the shipped cases (kappa_p = 2.5 and 15: predictions of the spectral solver), and"
 echo "== 3. histories (seed Figs. 3d, 4d, 5)"
-pids=()
 for k in k15 k2p5 k1 neutral; do
   if [ $k = neutral ]; then c=cases/seed000_neutral_tetrahedron.toml; else c=cases/seed000_charged_tetrahedron_$k.toml; fi
   $A -q --no-plots vcrit "$c" --threads 1 --set 'vcrit.order="top_down"' --overwrite --out "$OUT/vcrit_$k" "$@" &
@@ -66,10 +77,21 @@ hist=$!
 # --resume: an interrupted fit (or the fit of a run without --ranges) continues from its journal.
 mode=--overwrite
 [ -f "$OUT/calibration/journal.jsonl" ] && mode=--resume
+# With --ranges the step budget's bound of the fit and its 10 spectral bisections (each at its worst case, a
+# step with induced charges counting 1000 particle-steps: docs/limits.md) is 1.7e12, above the default 1e12.
+budget=()
+[ "$predict" = range ] && budget=(--max-steps 1e13)
+# In the background and waited for, so that a signal reaches the trap at once (not after the fit).
 nice -n 10 $A -q calibrate cases/calibrate_seed000_tetrahedron.toml --out "$OUT/calibration" $mode \
-  --set "calibrate.predict=\"$predict\"" "${smoke_cal[@]}"
-cal=$(date +%s)
-for p in "${pids[@]}"; do wait "$p"; done
+  --set "calibrate.predict=\"$predict\"" "${budget[@]}" "${smoke_cal[@]}" &
+fit=$!
+# Whichever ends first is seen first (wait -n): a step that fails stops the script (set -e) and the others.
+running=("${pids[@]}" "$fit")
+while [ ${#running[@]} -gt 0 ]; do
+  wait -n -p done_pid "${running[@]}"
+  [ "$done_pid" = "$fit" ] && cal=$(date +%s)
+  for i in "${!running[@]}"; do [ "${running[$i]}" = "$done_pid" ] && unset 'running[i]'; done
+done
 end=$(date +%s)
 wait "$hist"
 echo "== calibration $((cal - start)) s; calibration + Table 2: $((end - start)) s"

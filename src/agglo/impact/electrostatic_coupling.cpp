@@ -84,7 +84,7 @@ bool ElectrostaticForce::needs_solve(const dem::Particles& p, long step) const {
 
 void ElectrostaticForce::solve(const dem::Particles& p, long step) {
   // The extrapolated hold keeps the solve before this one (same visible particles only).
-  const std::vector<std::size_t> was_visible = visible_;
+  std::swap(was_visible_, visible_);
   // Uncharged particles with kappa_p = kappa_0 are electrostatically invisible: leave them out.
   visible_.clear();
   for (std::size_t k = 0; k < p.size(); ++k)
@@ -136,7 +136,7 @@ void ElectrostaticForce::solve(const dem::Particles& p, long step) {
   } else {
     sub = solver_->solve(prob);
   }
-  keep_previous(was_visible == visible_, step);
+  keep_previous(was_visible_ == visible_, step);
   last_.energy = sub.energy;
   last_.stats = std::move(sub.stats);
   if (!s_.grounded.empty()) last_.energy *= 0.5;  // the real half of the mirrored system
@@ -250,8 +250,8 @@ void ElectrostaticForce::adapt(const std::vector<Vec3>& held) {
   hold_error_.max = std::max(hold_error_.max, e);
   hold_error_.sum += e;
   // The held error grows as the motion (constant hold) or its square (extrapolated hold).
-  const double ratio = kAim * tol / e;
-  const double factor = e > 0.0 ? std::clamp(extrapolate_ ? std::sqrt(ratio) : ratio, 0.25, kGrowth) : kGrowth;
+  double factor = kGrowth;
+  if (e > 0.0) factor = std::clamp(extrapolate_ ? std::sqrt(kAim * tol / e) : kAim * tol / e, 0.25, kGrowth);
   fraction_ = std::clamp(fraction_ * factor, kMinFraction, 1.0);
   hold_error_.fraction = fraction_;
 }

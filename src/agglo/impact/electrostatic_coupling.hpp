@@ -92,6 +92,7 @@ class ElectrostaticForce : public dem::ExternalForce {
   es::Solution last_;
   std::vector<Vec3> x_at_solve_;
   std::vector<std::size_t> visible_;  // particles in the last solve (charged or kappa_p != kappa_0)
+  std::vector<std::size_t> was_visible_;  // scratch of solve(): those of the solve before
   // Scratch of solve(), kept between solves so that a solve allocates no arrays of its own.
   std::vector<Vec3> solve_x_;
   std::vector<double> solve_r_, solve_q_, solve_kappa_;
