@@ -43,9 +43,14 @@ pids=()
 hist=
 fit=
 stop_steps() {
-  local kids
+  local kids all
   kids=$(for p in "${pids[@]}" $hist; do pgrep -P "$p"; done 2>/dev/null || true)
-  kill "${pids[@]}" $hist $fit $kids 2>/dev/null || true
+  all=("${pids[@]}" $hist $fit $kids)
+  kill "${all[@]}" 2>/dev/null || true
+  # Each agglo marks its output incomplete and exits within a second; the script ends after them: its own
+  # steps waited for, the histories' current run (a grandchild) polled for 5 s at most.
+  for p in "${pids[@]}" $hist $fit; do wait "$p" 2>/dev/null || true; done
+  for _ in $(seq 100); do [ -n "$kids" ] && kill -0 $kids 2>/dev/null || break; sleep 0.05; done
 }
 trap 'st=$?; if [ "$st" -ne 0 ]; then stop_steps; echo "reproduce_seed000: stopped with exit $st (a failed step or a signal); every other step stopped too" >&2; fi' EXIT
 trap 'exit 130' INT
