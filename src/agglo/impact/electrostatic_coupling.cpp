@@ -47,6 +47,12 @@ std::string overlap_advice(const dem::Particles& p, const es::EsConfig& es) {
   return fmt::format("raise {} or lower the impact speed", keys.min_gap.dotted());
 }
 
+// The extrapolated hold's value w of the way past the last solution v1 along the line from v0.
+template <class T>
+T along(const T& v1, const T& v0, double w) {
+  return v1 + w * (v1 - v0);
+}
+
 }  // namespace
 
 ElectrostaticForce::ElectrostaticForce(const CouplingSettings& s)
@@ -174,10 +180,10 @@ void ElectrostaticForce::add_forces(const dem::Particles& p, long step, double, 
   const double w = ramp(step);
   if (w != 0.0) {
     for (std::size_t k = 0; k < p.size(); ++k) {
-      force[k] += s_.force_scale * (last_.force[k] + w * (last_.force[k] - prev_force_[k]));
-      torque[k] += s_.force_scale * (last_.torque[k] + w * (last_.torque[k] - prev_torque_[k]));
+      force[k] += s_.force_scale * along(last_.force[k], prev_force_[k], w);
+      torque[k] += s_.force_scale * along(last_.torque[k], prev_torque_[k], w);
     }
-    energy_ = last_.energy + w * (last_.energy - prev_energy_);
+    energy_ = along(last_.energy, prev_energy_, w);
     return;
   }
   for (std::size_t k = 0; k < p.size(); ++k) {
@@ -219,7 +225,7 @@ double ElectrostaticForce::ramp(long step) const {
 std::vector<Vec3> ElectrostaticForce::held_forces(const dem::Particles& p, long step) {
   std::vector<Vec3> f = last_.force;
   if (const double w = ramp(step); w != 0.0)
-    for (std::size_t k = 0; k < f.size(); ++k) f[k] += w * (last_.force[k] - prev_force_[k]);
+    for (std::size_t k = 0; k < f.size(); ++k) f[k] = along(last_.force[k], prev_force_[k], w);
   if (!correct_) return f;
   pair_terms(p, f_now_, u_now_, n_now_);
   std::size_t k = 0;
