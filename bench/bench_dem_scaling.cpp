@@ -15,7 +15,8 @@
 //   iteration, as its LAMMPS twin (bench/lammps/block_case.py) runs it: AGGLO_BLOCK_WARM untimed steps
 //   (default 200), then AGGLO_BLOCK_STEPS timed steps (default 1000) in block_steps(), which
 //   bench/dem_block_vs_lammps.sh also counts instructions of (callgrind --toggle-collect). reference = 1
-//   runs the reference twin of the DEM step (DemSystem::set_reference_kernel), 0 the fast path.
+//   runs the reference twin of the DEM step (DemSystem::set_reference_kernel), 0 the fast path (eight pairs
+//   at a time where the CPU has AVX-512, dem/contact/lanes.hpp), 2 the fast path four pairs at a time.
 //   Counter "ns_per_particle_step" uses the process CPU time (all threads).
 // BM_DemAggregateWall/N/reference: the second system of bench/dem_block_vs_lammps.sh, an N-primary fractal
 //   aggregate hitting a wall, run like BM_DemBlock (AGGLO_BLOCK_WARM untimed + AGGLO_BLOCK_STEPS timed
@@ -48,6 +49,7 @@
 #include "agglo/impact/impact_case.hpp"
 #include "agglo/impact/experiment.hpp"
 #include "agglo/core/config.hpp"
+#include "agglo/dem/contact/lanes.hpp"
 #include "agglo/dem/contact/marshall_sliding.hpp"
 #include "agglo/dem/dem_system.hpp"
 #include "agglo/dem/jkr.hpp"
@@ -113,7 +115,8 @@ long env_steps(const char* name, long fallback) {
 // counters contacts, steps and ns_per_particle_step (CPU time / (particles x steps)).
 void timed_steps_of(benchmark::State& state, dem::DemSystem& sys) {
   const long warm = env_steps("AGGLO_BLOCK_WARM", 200), steps = env_steps("AGGLO_BLOCK_STEPS", 1000);
-  sys.set_reference_kernel(state.range(1) != 0);
+  sys.set_reference_kernel(state.range(1) == 1);
+  dem::contact::lanes::set_wide_lanes(state.range(1) == 0);
   sys.run(warm);
   for (auto _ : state) block_steps(sys, steps);
   state.counters["contacts"] = sys.active_contacts();
@@ -121,6 +124,8 @@ void timed_steps_of(benchmark::State& state, dem::DemSystem& sys) {
   state.counters["ns_per_particle_step"] =
       benchmark::Counter(static_cast<double>(sys.particles().size()) * static_cast<double>(steps) * 1e-9,
                          benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["wide_lanes"] = dem::contact::lanes::wide_lanes();
+  dem::contact::lanes::set_wide_lanes(true);
 }
 
 void BM_DemBlock(benchmark::State& state) {
@@ -128,7 +133,7 @@ void BM_DemBlock(benchmark::State& state) {
   timed_steps_of(state, sys);
 }
 BENCHMARK(BM_DemBlock)
-    ->ArgsProduct({{1000, 10000, 100000}, {0, 1}})
+    ->ArgsProduct({{1000, 10000, 100000}, {0, 1, 2}})
     ->Iterations(1)
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kMillisecond);
@@ -195,7 +200,7 @@ void BM_DemAggregateWall(benchmark::State& state) {
   state.counters["ke_end"] = sys.translational_kinetic_energy();  // [J], LAMMPS' ke after the same steps
 }
 BENCHMARK(BM_DemAggregateWall)
-    ->ArgsProduct({{100, 1000}, {0, 1}})
+    ->ArgsProduct({{100, 1000}, {0, 1, 2}})
     ->Iterations(1)
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kMillisecond);

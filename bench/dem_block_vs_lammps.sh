@@ -3,11 +3,13 @@
 # (issue 27 item 1; docs/benchmarks_dem.md §3):
 #   - LAMMPS: bench/lammps/block_case.py (the same block, contact law and dt; Debian's `lammps`, installed
 #     if missing), loop CPU time (loop wall time x LAMMPS' "% CPU use") of STEPS steps after WARM steps;
-#   - agglo: bench_dem_scaling's BM_DemBlock (the same WARM + STEPS), process CPU time, the fast path and
-#     the reference twin (DemSystem::set_reference_kernel), rounds interleaved with LAMMPS;
+#   - agglo: bench_dem_scaling's BM_DemBlock (the same WARM + STEPS), process CPU time, the fast path (eight
+#     pairs at a time where the CPU has AVX-512), the same path four pairs at a time ("four", what a CPU
+#     without AVX-512 runs) and the reference twin (DemSystem::set_reference_kernel), rounds interleaved
+#     with LAMMPS;
 #   - threads: agglo's fast path on OMP_NUM_THREADS=1 and 2 (GOMP_SPINCOUNT=1000 as agglo sets it), wall time, speed-up;
 #   - instructions (callgrind, block_steps() only) per particle-step of the fast path and the reference, of
-#     the block at CG_SIZE and of the aggregate on the wall.
+#     the block at CG_SIZE and of the aggregate on the wall (valgrind has no AVX-512: the four-pair form).
 # The second system, a fractal aggregate of AGG_N primaries hitting a wall (BM_DemAggregateWall, built by
 # agglo's structure builder; its start state goes to bench/lammps/aggregate_wall_case.py, LAMMPS' wall is
 # fix wall/gran with the same jkr law), is run the same way, rounds interleaved.
@@ -65,7 +67,7 @@ export AGGLO_BLOCK_STEPS=$STEPS AGGLO_BLOCK_WARM=$WARM
 
 # One BM_DemBlock (system block) or BM_DemAggregateWall (system aggregate_wall) run -> a JSON line
 # {code, system, n, kernel, threads, cpu_s, wall_s, ns_per_particle_step, ...}.
-agglo_block() {  # n reference(0|1) threads [system]
+agglo_block() {  # n kernel(0 fast | 1 reference | 2 fast, four pairs at a time) threads [system]
   local js=$OUT/bm.json sys=${4:-block} bm=BM_DemBlock
   [ "$sys" = aggregate_wall ] && bm=BM_DemAggregateWall
   OMP_NUM_THREADS=$3 "$BUILD/bench_dem_scaling" --benchmark_filter="^$bm/$1/$2/" \
@@ -73,13 +75,13 @@ agglo_block() {  # n reference(0|1) threads [system]
   $PY - "$js" "$1" "$2" "$3" "$STEPS" "$sys" <<'EOF'
 import json, sys
 b = json.load(open(sys.argv[1]))["benchmarks"][0]
-n, ref, th, steps = int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5])
+n, kernel, th, steps = int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5])
 unit = {"ms": 1e-3, "us": 1e-6, "ns": 1e-9, "s": 1.0}[b["time_unit"]]
 cpu, wall = b["cpu_time"] * unit, b["real_time"] * unit
-extra = {k: b[k] for k in ("wall_contacts", "ke_end") if k in b}
+extra = {k: b[k] for k in ("wall_contacts", "ke_end", "wide_lanes") if k in b}
 if "particles" in b:  # the aggregate: n primaries, and the wall spheres; per particle = per atom as LAMMPS
     extra["primaries"], n = n, int(b["particles"])
-print(json.dumps({"code": "agglo", "system": sys.argv[6], "n": n, "kernel": "reference" if ref else "fast",
+print(json.dumps({"code": "agglo", "system": sys.argv[6], "n": n, "kernel": ["fast", "reference", "four"][kernel],
                   "threads": th, "cpu_s": cpu, "wall_s": wall, "contacts": b.get("contacts"),
                   "ns_per_particle_step": cpu / (n * steps) * 1e9} | extra))
 EOF
@@ -93,6 +95,7 @@ for n in $SIZES; do
     $PY "$SRC/bench/lammps/block_case.py" "$n" --steps "$STEPS" --warm "$WARM" --workdir "$OUT/lammps_$n" | tee -a "$RES"
     agglo_block "$n" 0 1 | tee -a "$RES"
     agglo_block "$n" 1 1 | tee -a "$RES"
+    agglo_block "$n" 2 1 | tee -a "$RES"
   done
   if [ -n "$THREADS" ]; then
     # short OpenMP spin waits, as the agglo CLI sets them (apps/agglo/omp_wait): long spins on a shared
@@ -110,6 +113,7 @@ if [ -n "$AGG_N" ]; then
         --workdir "$OUT/lammps_aggregate_wall" | tee -a "$RES"
     agglo_block "$AGG_N" 0 1 aggregate_wall | tee -a "$RES"
     agglo_block "$AGG_N" 1 1 aggregate_wall | tee -a "$RES"
+    agglo_block "$AGG_N" 2 1 aggregate_wall | tee -a "$RES"
   done
 fi
 if [ -n "$CG_SIZE" ] && [ -n "${BEFORE:-}" ]; then
@@ -153,13 +157,18 @@ def ns(code, system, n, kernel=None):
     return [r["ns_per_particle_step"] for r in rows if r["code"] == code and r["n"] == n and
             r.get("system") == system and (kernel is None or r.get("kernel") == kernel)]
 rng = lambda v: f"{min(v):.0f}-{max(v):.0f}" if len(v) > 1 else f"{v[0]:.0f}"
-print("\nns per particle-step (CPU time, one core; min-max over the rounds) and ratios of the medians:")
-print(f"{'system':>14} {'N':>7} {'LAMMPS':>11} {'agglo fast':>11} {'agglo ref':>11} {'LAMMPS/fast':>12} {'ref/fast':>9}")
+wide = any(r.get("wide_lanes") for r in rows if r["code"] == "agglo" and r.get("kernel") == "fast")
+print("\nns per particle-step (CPU time, one core; min-max over the rounds) and ratios of the medians; agglo's fast")
+print("path " + ("eight pairs at a time (this CPU has AVX-512), 'four' the same path four at a time:" if wide else
+                 "four pairs at a time (no AVX-512 here: 'four' is the same code):"))
+print(f"{'system':>14} {'N':>7} {'LAMMPS':>11} {'agglo fast':>11} {'agglo four':>11} {'agglo ref':>11} {'LAMMPS/fast':>12} "
+      f"{'LAMMPS/four':>12} {'ref/fast':>9}")
 for system, n in sorted({(r["system"], r["n"]) for r in rows if r["code"] == "lammps"}):
     l, f, rf = ns("lammps", system, n), ns("agglo", system, n, "fast"), ns("agglo", system, n, "reference")
+    fo = ns("agglo", system, n, "four") or f
     med = statistics.median
-    print(f"{system:>14} {n:>7} {rng(l):>11} {rng(f):>11} {rng(rf):>11} {med(l) / med(f):>11.2f}x "
-          f"{med(rf) / med(f):>8.2f}x")
+    print(f"{system:>14} {n:>7} {rng(l):>11} {rng(f):>11} {rng(fo):>11} {rng(rf):>11} {med(l) / med(f):>11.2f}x "
+          f"{med(l) / med(fo):>11.2f}x {med(rf) / med(f):>8.2f}x")
 seen = set()
 for r in rows:  # the same system in both codes: translational kinetic energy after the last step (first round)
     if r.get("system") == "aggregate_wall" and "ke_end" in r and (r["code"], r.get("kernel")) not in seen:

@@ -1,7 +1,8 @@
-// The fast pair loop's lanes (dem/contact/lanes.hpp, pair_kernel.hpp; docs/benchmarks_dem.md §9): the
-// one-thread loop evaluates the engaged pairs of a chunk four at a time; the parallel path's crossing pairs
-// run the same law one pair at a time. Both must give the same bits, for every supported model set, with
-// mixed material pairs inside a group of four, fresh, held, breaking and beyond-the-table contacts.
+// The fast pair loop's lanes (dem/contact/lanes.hpp, pair_kernel.hpp; docs/benchmarks_dem.md §9, §12): the
+// one-thread loop evaluates the engaged pairs of a chunk four at a time (eight in its wide form, where the
+// CPU has AVX-512); the parallel path's crossing pairs run the same law one pair at a time. Both must give
+// the same bits, for every supported model set, in both forms, with mixed material pairs inside a group,
+// fresh, held, breaking and beyond-the-table contacts.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "agglo/dem/contact/builtin_models.hpp"
+#include "agglo/dem/contact/lanes.hpp"
 #include "agglo/dem/contact/pair_blocks.hpp"
 #include "agglo/dem/contact_law.hpp"
 #include "agglo/dem/material.hpp"
@@ -47,9 +49,9 @@ PairSet random_pairs(int n, const MaterialPairs& mats, unsigned seed) {
   PairSet s;
   for (int k = 0; k < n; ++k) {
     const double r1 = kR * (1.0 + 0.5 * u(gen)), r2 = kR * (1.0 + 0.5 * u(gen));
-    // runs of 12 pairs of one kind (whole groups of four), then 4 of random kinds (mixed groups)
-    const bool run = k % 16 < 12;
-    const std::uint32_t m1 = run ? (k / 16) % 2 : gen() % 2, m2 = run ? m1 : gen() % 2;
+    // runs of 24 pairs of one kind (whole groups of four and of eight), then 8 of random kinds (mixed groups)
+    const bool run = k % 32 < 24;
+    const std::uint32_t m1 = run ? (k / 32) % 2 : gen() % 2, m2 = run ? m1 : gen() % 2;
     const Vec3 dir{u(gen), u(gen), 1.5};
     const Vec3 n_hat = dir / norm(dir);
     const double gap = (k % 9 == 0) ? -0.1 * kR : 2e-3 * kR * u(gen);  // deep overlaps: beyond the table
@@ -120,7 +122,10 @@ std::vector<contact::ModelNames> every_combination() {
   return out;
 }
 
-TEST(PairLanes, LanesEqualOnePairAtATime) {
+// Every model combination in one form of the loop: lanes::set_wide_lanes(wide) (the wide form only where the
+// CPU has it; the other cases run the four-pair form twice).
+void expect_lanes_equal_one_pair_at_a_time(bool wide) {
+  contact::lanes::set_wide_lanes(wide);
   const MaterialPairs mats = two_materials();
   const auto combinations = every_combination();
   ASSERT_EQ(combinations.size(), 10u);
@@ -129,11 +134,20 @@ TEST(PairLanes, LanesEqualOnePairAtATime) {
     for (unsigned seed = 1; seed <= 4; ++seed) {
       const PairSet s = random_pairs(150, mats, seed);  // 150: chunks of 64 and a partial one
       int engaged = 0;
-      EXPECT_EQ(lane_differences(law, s, &engaged), 0)
-          << names.tangential << " " << names.damping << " " << names.rolling << " " << names.twisting << " seed " << seed;
+      EXPECT_EQ(lane_differences(law, s, &engaged), 0) << names.tangential << " " << names.damping << " "
+                                                       << names.rolling << " " << names.twisting << " seed " << seed
+                                                       << (contact::lanes::wide_lanes() ? " wide" : " four");
       EXPECT_GT(engaged, 60) << "the comparison needs engaged contacts";
     }
   }
+  contact::lanes::set_wide_lanes(true);
+}
+
+TEST(PairLanes, LanesEqualOnePairAtATime) { expect_lanes_equal_one_pair_at_a_time(false); }
+
+TEST(PairLanes, WideLanesEqualOnePairAtATime) {
+  expect_lanes_equal_one_pair_at_a_time(true);
+  if (!contact::lanes::wide_lanes()) GTEST_SKIP() << "this CPU has no AVX-512 (x86-64-v4): the wide form never runs";
 }
 
 // Negative control: the comparison sees a relative change of 1e-12 in one velocity of one engaged pair.

@@ -9,8 +9,8 @@
 namespace agglo::dem {
 namespace {
 
-using contact::lanes::Lane;
-using contact::lanes::Mask;
+using Lane = contact::lanes::Quad;                              // four doubles
+using Mask = std::int64_t __attribute__((vector_size(32)));  // a comparison of two Lanes
 
 // Four consecutive Vec3s as three lanes: x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3.
 struct Four {

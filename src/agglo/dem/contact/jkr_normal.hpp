@@ -7,13 +7,12 @@
 // A contact forms at delta >= 0 and breaks below -delta_C (break_rule "marshall") or at the force
 // minimum -F_C, delta = -0.48075 delta_C (break_rule "lammps", LAMMPS' pair granular jkr).
 #include <cstdint>
+#include <utility>
 
 #include "agglo/dem/contact/lanes.hpp"
 #include "agglo/dem/contact/sub_model.hpp"
 
 namespace agglo::dem::contact {
-
-using Cells = std::int32_t __attribute__((vector_size(4 * lanes::kLanes)));  // table cells of a Lane
 
 class JkrNormal {
  public:
@@ -45,21 +44,23 @@ class JkrNormal {
       return jkr_root_fast(t);
     } else {
       using namespace lanes;
+      constexpr int W = kWidth<T>;
       const T x = sqrt(maximum(t + kJkrSMin, T{})) * (kJkrTableCells / kJkrTableW);
       bool in_table = true;
-      for (int l = 0; l < kLanes; ++l) in_table = in_table && x[l] < kJkrTableCells;
+      for (int l = 0; l < W; ++l) in_table = in_table && x[l] < kJkrTableCells;
       if (!in_table) [[unlikely]] {
         T s;
-        for (int l = 0; l < kLanes; ++l) s[l] = jkr_root_fast(t[l]);
+        for (int l = 0; l < W; ++l) s[l] = jkr_root_fast(t[l]);
         return s;
       }
-      const Cells cell = __builtin_convertvector(x, Cells);
+      const Cells<W> cell = __builtin_convertvector(x, Cells<W>);
       const T u = x - __builtin_convertvector(cell, T);
-      static_assert(kLanes == 4);
       const auto& tab = kJkrRootTable.c;
-      const double *r0 = tab[cell[0]], *r1 = tab[cell[1]], *r2 = tab[cell[2]], *r3 = tab[cell[3]];
-      const T c0{r0[0], r1[0], r2[0], r3[0]}, c1{r0[1], r1[1], r2[1], r3[1]}, c2{r0[2], r1[2], r2[2], r3[2]},
-          c3{r0[3], r1[3], r2[3], r3[3]};
+      const auto coefficient = [&]<std::size_t... L>(int e, std::index_sequence<L...>) {
+        return T{tab[cell[L]][e]...};
+      };
+      constexpr auto all = std::make_index_sequence<W>{};
+      const T c0 = coefficient(0, all), c1 = coefficient(1, all), c2 = coefficient(2, all), c3 = coefficient(3, all);
       const T s = c0 + u * (c1 + u * (c2 + u * c3));
       const T s3 = s * s * s;
       const T g = 2.0 * s3 * s - 4.0 / 3.0 * s - t;

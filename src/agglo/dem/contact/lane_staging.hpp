@@ -8,6 +8,7 @@
 // index when a Lane is read. No physics.
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 
 #include "agglo/core/vec3.hpp"
 #include "agglo/dem/contact/lanes.hpp"
@@ -38,37 +39,49 @@ struct LaneOut {
 [[gnu::always_inline]] inline lanes::V3<double> to_lanes(const Vec3& v) { return {v.x, v.y, v.z}; }
 [[gnu::always_inline]] inline Vec3 to_vec(const lanes::V3<double>& v) { return {v.x, v.y, v.z}; }
 
-// T of a[idx[0]] (a Lane: of a[idx[0 .. kLanes)]).
+// T of a[idx[0]] (a Lane: of a[idx[0 .. kWidth<T>)]).
 template <class T>
 [[gnu::always_inline]] inline T gather(const std::vector<double>& a, const std::uint32_t* idx) {
   if constexpr (sizeof(T) == sizeof(double)) {
     return a[idx[0]];
   } else {
-    static_assert(lanes::kLanes == 4);
-    return T{a[idx[0]], a[idx[1]], a[idx[2]], a[idx[3]]};
+    return [&]<std::size_t... L>(std::index_sequence<L...>) {
+      return T{a[idx[L]]...};
+    }(std::make_index_sequence<lanes::kWidth<T>>{});
   }
+}
+// Four Vec3s into x, y, z lanes of four: (x, y) of each element as one 16-byte load, interleaved into the x and
+// y lanes; z one by one.
+[[gnu::always_inline]] inline lanes::V3<lanes::Quad> gather3_four(const std::vector<Vec3>& a,
+                                                                 const std::uint32_t* idx) {
+  using Q = lanes::Quad;
+  using Half = double __attribute__((vector_size(16)));
+  const Vec3 &e0 = a[idx[0]], &e1 = a[idx[1]], &e2 = a[idx[2]], &e3 = a[idx[3]];
+  Half h0, h1, h2, h3;
+  __builtin_memcpy(&h0, &e0.x, sizeof h0), __builtin_memcpy(&h1, &e1.x, sizeof h1);
+  __builtin_memcpy(&h2, &e2.x, sizeof h2), __builtin_memcpy(&h3, &e3.x, sizeof h3);
+  const Q xy02 = __builtin_shufflevector(h0, h2, 0, 1, 2, 3), xy13 = __builtin_shufflevector(h1, h3, 0, 1, 2, 3);
+  return {__builtin_shufflevector(xy02, xy13, 0, 4, 2, 6), __builtin_shufflevector(xy02, xy13, 1, 5, 3, 7),
+          Q{e0.z, e1.z, e2.z, e3.z}};
 }
 template <class T>
 [[gnu::always_inline]] inline lanes::V3<T> gather3(const std::vector<Vec3>& a, const std::uint32_t* idx) {
   if constexpr (sizeof(T) == sizeof(double)) {
     return to_lanes(a[idx[0]]);
+  } else if constexpr (lanes::kWidth<T> == 4) {
+    return gather3_four(a, idx);
   } else {
-    static_assert(lanes::kLanes == 4);
-    // (x, y) of each element as one 16-byte load, interleaved into the x and y lanes; z one by one
-    using Half = double __attribute__((vector_size(16)));
-    const Vec3 &e0 = a[idx[0]], &e1 = a[idx[1]], &e2 = a[idx[2]], &e3 = a[idx[3]];
-    Half h0, h1, h2, h3;
-    __builtin_memcpy(&h0, &e0.x, sizeof h0), __builtin_memcpy(&h1, &e1.x, sizeof h1);
-    __builtin_memcpy(&h2, &e2.x, sizeof h2), __builtin_memcpy(&h3, &e3.x, sizeof h3);
-    const T xy02 = __builtin_shufflevector(h0, h2, 0, 1, 2, 3), xy13 = __builtin_shufflevector(h1, h3, 0, 1, 2, 3);
-    return {__builtin_shufflevector(xy02, xy13, 0, 4, 2, 6), __builtin_shufflevector(xy02, xy13, 1, 5, 3, 7),
-            T{e0.z, e1.z, e2.z, e3.z}};
+    static_assert(lanes::kWidth<T> == 8);
+    const lanes::V3<lanes::Quad> lo = gather3_four(a, idx), hi = gather3_four(a, idx + 4);
+    const auto join = [](lanes::Quad l, lanes::Quad h) { return __builtin_shufflevector(l, h, 0, 1, 2, 3, 4, 5, 6, 7); };
+    return {join(lo.x, hi.x), join(lo.y, hi.y), join(lo.z, hi.z)};
   }
 }
 
-template <std::size_t kChunk, bool kSpring, bool kRoll, bool kTwist>
+// W: the pairs of a Lane (pass 2 reads and writes W entries at a time).
+template <std::size_t kChunk, int W, bool kSpring, bool kRoll, bool kTwist>
 struct LaneStaging {
-  static constexpr std::size_t kCap = kChunk + lanes::kLanes;
+  static constexpr std::size_t kCap = kChunk + W;
   enum Field { t = 0, a0, fc, estar, xi_t, R = xi_t + 3, xi_r, xi_q = xi_r + 3, kInputs, f = kInputs, ti = f + 3,
                tj = ti + 3, a = tj + 3, kFields };
   alignas(64) double v[kFields][kCap];
@@ -96,9 +109,9 @@ struct LaneStaging {
     }
     if constexpr (kTwist) v[xi_q][n] = pr.state.xi_q;
   }
-  // Entries n .. the next multiple of kLanes copied from entry n - 1 (n > 0).
+  // Entries n .. the next multiple of W copied from entry n - 1 (n > 0).
   [[gnu::always_inline]] void pad(std::size_t n) {
-    for (std::size_t e = n; e % lanes::kLanes != 0; ++e) {
+    for (std::size_t e = n; e % W != 0; ++e) {
       for (int fld = 0; fld < kInputs; ++fld) v[fld][e] = v[fld][n - 1];
       i[e] = i[n - 1], j[e] = j[n - 1], kind[e] = kind[n - 1];
     }
@@ -107,7 +120,7 @@ struct LaneStaging {
   [[gnu::always_inline]] lanes::V3<T> get3(int field, std::size_t g) const {
     return {lanes::load<T>(&v[field][g]), lanes::load<T>(&v[field + 1][g]), lanes::load<T>(&v[field + 2][g])};
   }
-  // The inputs of entries g .. g + kLanes (T = Lane) or of entry g (T = double).
+  // The inputs of entries g .. g + W (T = Lane) or of entry g (T = double).
   template <class T>
   [[gnu::always_inline]] LaneIn<T> read(std::size_t g, const Particles& p) const {
     using lanes::load;

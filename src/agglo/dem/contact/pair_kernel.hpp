@@ -42,7 +42,10 @@ class PairKernel final : public ContactKernel {
   // Pairs per chunk of accumulate_range's passes (their states stay in the L1 cache between the passes).
   static constexpr std::size_t kChunk = 64;
 
-  using Staged = LaneStaging<kChunk, KeepsSlidingSpring<Tangential>, !Inactive<Rolling>, !Inactive<Twisting>>;
+  template <int W>
+  using Staged = LaneStaging<kChunk, W, KeepsSlidingSpring<Tangential>, !Inactive<Rolling>, !Inactive<Twisting>>;
+  // Pairs per Lane: 4, or 8 in the wide form (lanes::wide_lanes()).
+  static constexpr int kNarrow = 4, kWide = 8;
 
   // The inputs of one engaged pair for respond_lanes.
   [[gnu::always_inline]] static LaneIn<double> lane_in(const JkrPair& jkr, const PairKinematics& k,
@@ -56,7 +59,7 @@ class PairKernel final : public ContactKernel {
   }
 
  public:
-  // Whether the fast path runs kLanes pairs at once (sub_model.hpp: every model has a lane form).
+  // Whether the fast path runs several pairs at once (sub_model.hpp: every model has a lane form).
   static constexpr bool kLaned = HasLanes<Normal> && HasLanes<Damping> && HasLanes<Tangential> &&
                                  (Inactive<Rolling> || HasLanes<Rolling>) && (Inactive<Twisting> || HasLanes<Twisting>);
 
@@ -80,7 +83,10 @@ class PairKernel final : public ContactKernel {
   // Serially in pair order, with the fast arithmetic (Models::fast_force). flatten: the sub-model calls are
   // inlined into the loop (without it GCC keeps the tangential force out of line).
   void accumulate_pairs(std::vector<Pair>& pairs, Particles& p, double dt) const override {
-    accumulate_all(pairs, p, dt);
+    if (lanes::wide_lanes())
+      accumulate_all_wide(pairs, p, dt);
+    else
+      accumulate_all(pairs, p, dt);
   }
   void crossing_forces(std::vector<Pair>& pairs, const Particles& p, double dt, const PairBlocks& b, std::size_t part,
                        std::size_t parts, std::vector<PairForce>& crossing) const override {
@@ -88,14 +94,24 @@ class PairKernel final : public ContactKernel {
   }
   void block_forces(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& b, std::size_t t,
                     const std::vector<PairForce>& crossing) const override {
-    block_part(pairs, p, dt, b, t, crossing);
+    if (lanes::wide_lanes())
+      block_part_wide(pairs, p, dt, b, t, crossing);
+    else
+      block_part(pairs, p, dt, b, t, crossing);
   }
 
   // (the bodies of the three above; GCC clones no virtual function)
   [[gnu::flatten]] AGGLO_LANE_CLONES void accumulate_all(std::vector<Pair>& pairs, Particles& p, double dt) const {
+    accumulate_all_of<kNarrow>(pairs, p, dt);
+  }
+  [[gnu::flatten]] AGGLO_WIDE_TARGET void accumulate_all_wide(std::vector<Pair>& pairs, Particles& p, double dt) const {
+    accumulate_all_of<kWide>(pairs, p, dt);
+  }
+  template <int W>
+  [[gnu::always_inline]] void accumulate_all_of(std::vector<Pair>& pairs, Particles& p, double dt) const {
     std::fill(p.f.begin(), p.f.end(), Vec3{});
     std::fill(p.t.begin(), p.t.end(), Vec3{});
-    accumulate_range<false>(pairs, p, dt, 0, pairs.size(), 0, nullptr);
+    accumulate_range<false, W>(pairs, p, dt, 0, pairs.size(), 0, nullptr);
   }
 
   // Pairs [k0, k1) added to their particles in pair order, in chunks of kChunk pairs: the three passes of
@@ -106,25 +122,25 @@ class PairKernel final : public ContactKernel {
   // parallel path's phase 1 uses: a pair whose j is >= j_end (a crossing pair of a block, pair_blocks.hpp; only
   // with Crossing) was evaluated there, and its force crossing[k] goes to i. So the sums are the same bits on
   // any number of threads.
-  template <bool Crossing>
+  template <bool Crossing, int W>
   [[gnu::always_inline]] void accumulate_range(std::vector<Pair>& pairs, Particles& p, double dt, std::size_t k0,
                                                std::size_t k1, std::uint32_t j_end, const PairForce* crossing) const {
     if constexpr (kLaned)
-      accumulate_range_lanes<Crossing>(pairs, p, dt, k0, k1, j_end, crossing);
+      accumulate_range_lanes<Crossing, W>(pairs, p, dt, k0, k1, j_end, crossing);
     else
       accumulate_range_scalar<Crossing>(pairs, p, dt, k0, k1, j_end, crossing);
   }
 
   // accumulate_range with the lanes (kLaned): pass 1 as in accumulate_range_scalar, the engaged pairs' inputs
-  // copied into the chunk's Staged arrays; pass 2 the rest of the law kLanes pairs at a time (respond_lanes; a
+  // copied into the chunk's Staged arrays; pass 2 the rest of the law W pairs at a time (respond_lanes; a
   // group of different material pairs one pair at a time), outputs back into Staged; pass 3 the sums in pair
   // order. respond_lanes is the same code on one double and on a Lane, so the bits are those of one pair at a
   // time (fast_force on the parallel path's crossing pairs).
-  template <bool Crossing>
+  template <bool Crossing, int W>
   [[gnu::always_inline]] void accumulate_range_lanes(std::vector<Pair>& pairs, Particles& p, double dt,
                                                      std::size_t k0, std::size_t k1, std::uint32_t j_end,
                                                      const PairForce* crossing) const {
-    Staged st;
+    Staged<W> st;
     for (std::size_t c0 = k0; c0 < k1; c0 += kChunk) {
       const std::size_t c1 = std::min(k1, c0 + kChunk);
       std::size_t n = 0;
@@ -159,17 +175,19 @@ class PairKernel final : public ContactKernel {
   }
 
   // Pass 2 of accumulate_range_lanes on the n staged pairs.
-  [[gnu::always_inline]] void respond_staged(Staged& st, std::size_t n, const Particles& p, double dt) const {
+  template <int W>
+  [[gnu::always_inline]] void respond_staged(Staged<W>& st, std::size_t n, const Particles& p, double dt) const {
+    using L = lanes::Lane<W>;
     if (n == 0) return;
     st.pad(n);
-    for (std::size_t g = 0; g < n; g += lanes::kLanes) {
+    for (std::size_t g = 0; g < n; g += W) {
       const std::uint32_t kind = st.kind[g];
       bool same = true;
-      for (std::size_t l = 1; l < lanes::kLanes; ++l) same = same && st.kind[g + l] == kind;
+      for (std::size_t l = 1; l < W; ++l) same = same && st.kind[g + l] == kind;
       if (same) {
-        st.template write<lanes::Lane>(g, models_[kind].respond_lanes(st.template read<lanes::Lane>(g, p), dt));
+        st.template write<L>(g, models_[kind].respond_lanes(st.template read<L>(g, p), dt));
       } else {
-        for (std::size_t l = g; l < std::min(n, g + lanes::kLanes); ++l)
+        for (std::size_t l = g; l < std::min(n, g + W); ++l)
           st.template write<double>(l, models_[st.kind[l]].respond_lanes(st.template read<double>(l, p), dt));
       }
     }
@@ -209,13 +227,23 @@ class PairKernel final : public ContactKernel {
   [[gnu::flatten]] AGGLO_LANE_CLONES void block_part(std::vector<Pair>& pairs, Particles& p, double dt,
                                                      const PairBlocks& b, std::size_t t,
                                                      const std::vector<PairForce>& crossing) const {
+    block_part_of<kNarrow>(pairs, p, dt, b, t, crossing);
+  }
+  [[gnu::flatten]] AGGLO_WIDE_TARGET void block_part_wide(std::vector<Pair>& pairs, Particles& p, double dt,
+                                                          const PairBlocks& b, std::size_t t,
+                                                          const std::vector<PairForce>& crossing) const {
+    block_part_of<kWide>(pairs, p, dt, b, t, crossing);
+  }
+  template <int W>
+  [[gnu::always_inline]] void block_part_of(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& b,
+                                            std::size_t t, const std::vector<PairForce>& crossing) const {
     const std::uint32_t end = b.first_particle[t + 1];
     for (std::uint32_t q = b.first_particle[t]; q < end; ++q) p.f[q] = p.t[q] = Vec3{};
     for (std::size_t k : b.crossing_in[t]) {
       p.f[pairs[k].j] -= crossing[k].f_on_i;
       p.t[pairs[k].j] += crossing[k].t_on_j;
     }
-    accumulate_range<true>(pairs, p, dt, b.first_pair[t], b.first_pair[t + 1], end, crossing.data());
+    accumulate_range<true, W>(pairs, p, dt, b.first_pair[t], b.first_pair[t + 1], end, crossing.data());
   }
 
   PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
@@ -312,7 +340,7 @@ class PairKernel final : public ContactKernel {
       if constexpr (kLaned) {
         double t = 0.0;
         if (!engage_root_arg(jkr, k, s, t)) return PairForce{};
-        return Staged::settle(respond_lanes(lane_in(jkr, k, s, t), dt), s);
+        return Staged<kNarrow>::settle(respond_lanes(lane_in(jkr, k, s, t), dt), s);
       } else {
         double root = 0.0;
         if (!fast_engage(jkr, k, s, root)) return PairForce{};
