@@ -106,14 +106,14 @@ template <bool kGas>
 }  // namespace
 
 // (a copy of the arrays' pointers, which the stores through them cannot change: no reload per iteration)
-AGGLO_LANE_CLONES bool kick_drift(const VerletArrays& arrays, std::size_t begin, std::size_t end) {
+AGGLO_WIDE_CLONES bool kick_drift(const VerletArrays& arrays, std::size_t begin, std::size_t end) {
   const VerletArrays a = arrays;
   if (a.decay)
     return a.x_at_build ? kick_drift_range<true, true>(a, begin, end) : kick_drift_range<true, false>(a, begin, end);
   return a.x_at_build ? kick_drift_range<false, true>(a, begin, end) : kick_drift_range<false, false>(a, begin, end);
 }
 
-AGGLO_LANE_CLONES void kick(const VerletArrays& arrays, std::size_t begin, std::size_t end) {
+AGGLO_WIDE_CLONES void kick(const VerletArrays& arrays, std::size_t begin, std::size_t end) {
   const VerletArrays a = arrays;
   if (a.decay)
     kick_range<true>(a, begin, end);

@@ -31,6 +31,13 @@
 #else
 #define AGGLO_WIDE_TARGET
 #endif
+// AGGLO_LANE_CLONES with an x86-64-v4 clone as well (the kick-drift loops, dem/kick_drift.cpp: the same four
+// particles at a time, in AVX-512's encoding).
+#if AGGLO_WIDE_LANES && !defined(__AVX2__)
+#define AGGLO_WIDE_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
+#else
+#define AGGLO_WIDE_CLONES AGGLO_LANE_CLONES
+#endif
 
 // Every function here is inlined, so passing Lanes by value has no ABI to keep (GCC warns for 32-byte vectors).
 #pragma GCC diagnostic push
