@@ -150,6 +150,55 @@ TEST(PairLanes, WideLanesEqualOnePairAtATime) {
   if (!contact::lanes::wide_lanes()) GTEST_SKIP() << "this CPU has no AVX-512 (x86-64-v4): the wide form never runs";
 }
 
+// A 4 x 4 x 4 block of touching spheres (jittered), every pair within 2.2 r listed in the neighbour list's
+// order (by i, then j): consecutive pairs share their i, and a particle is the j of earlier pairs and the i
+// of later ones, which the sums of the pair loop keep in registers (PairKernel::RunningSum).
+PairSet block_pairs(unsigned seed) {
+  std::mt19937_64 gen(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  PairSet s;
+  const double spacing = 2.0 * kR * (1.0 - 1e-3);
+  for (int q = 0; q < 64; ++q) {
+    const Vec3 x = Vec3{double(q % 4), double(q / 4 % 4), double(q / 16)} * spacing +
+                   Vec3{u(gen), u(gen), u(gen)} * (2e-4 * kR);
+    s.p.add(x, kR, kRho, Vec3{u(gen), u(gen), u(gen)} * 0.01, 0.0, 1.0, 0);
+    s.p.w.back() = Vec3{u(gen), u(gen), u(gen)} * 1e3;
+  }
+  const ContactParams c;
+  for (std::uint32_t i = 0; i < 64; ++i)
+    for (std::uint32_t j = i + 1; j < 64; ++j) {
+      if (norm(s.p.x[j] - s.p.x[i]) > 2.2 * kR) continue;
+      Pair pr;
+      pr.i = i, pr.j = j;
+      pr.jkr = JkrPair::make(0.5 * kR, c.estar(), c.surface_energy);
+      pr.state.active = gen() % 4 != 0;
+      if (pr.state.active) pr.state.xi_t = Vec3{u(gen), u(gen), u(gen)} * 1e-9;
+      s.pairs.push_back(pr);
+    }
+  return s;
+}
+
+TEST(PairLanes, SumsOfPairsSharingParticlesEqualOnePairAtATime) {
+  contact::ModelNames names;
+  names.tangential = contact::MarshallSliding::name;
+  MaterialPairs one;
+  one.table = {ContactParams{}};
+  const ContactLaw law(one, names);
+  for (bool wide : {false, true}) {
+    contact::lanes::set_wide_lanes(wide);
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      const PairSet s = block_pairs(seed);
+      int shared = 0;  // pairs whose i is the previous pair's i (what the test is about)
+      for (std::size_t k = 1; k < s.pairs.size(); ++k) shared += s.pairs[k].i == s.pairs[k - 1].i;
+      ASSERT_GT(shared, 60);
+      int engaged = 0;
+      EXPECT_EQ(lane_differences(law, s, &engaged), 0) << "seed " << seed << (wide ? " wide" : " four");
+      EXPECT_GT(engaged, 80);
+    }
+  }
+  contact::lanes::set_wide_lanes(true);
+}
+
 // Negative control: the comparison sees a relative change of 1e-12 in one velocity of one engaged pair.
 TEST(PairLanes, ComparisonSeesATinyChange) {
   const MaterialPairs mats = two_materials();

@@ -159,20 +159,46 @@ class PairKernel final : public ContactKernel {
   // The sums of pairs [c0, c1) in pair order: force_of(pair) of each active pair (an engaged contact is active
   // after step 1; an inactive pair's zero force is not added, which changes no bit, as in
   // ContactKernel::accumulate_wall: the sums start at +0 and only add, so they are never -0), a crossing pair's
-  // buffered force to its i only.
+  // buffered force to its i only. The sums into i run in registers while consecutive pairs share it (RunningSum).
   template <bool Crossing, class ForceOf>
   [[gnu::always_inline]] static void add_chunk(std::vector<Pair>& pairs, Particles& p, std::size_t c0, std::size_t c1,
                                                std::uint32_t j_end, const PairForce* crossing, ForceOf&& force_of) {
+    RunningSum sum;
     for (std::size_t k = c0; k < c1; ++k) {
       Pair& pr = pairs[k];
       if (Crossing && pr.j >= j_end) {
-        p.f[pr.i] += crossing[k].f_on_i;
-        p.t[pr.i] += crossing[k].t_on_i;
+        sum.to(pr.i, p);
+        sum.f += crossing[k].f_on_i;
+        sum.t += crossing[k].t_on_i;
         continue;
       }
-      if (pr.state.active) add_pair_force(pr, force_of(pr), p);
+      if (!pr.state.active) continue;
+      const PairForce out = force_of(pr);
+      sum.to(pr.i, p);
+      sum.f += out.f_on_i;
+      sum.t += out.t_on_i;
+      p.f[pr.j] -= out.f_on_i;
+      p.t[pr.j] += out.t_on_j;
     }
+    sum.store(p);
   }
+
+  // The force and torque of particle q, read once and written back once while the pairs of q as their i follow
+  // each other (the neighbour list is sorted by i): the same additions in the same order as adding into p.f[q]
+  // and p.t[q] pair by pair, since a pair's other particle j is never q.
+  struct RunningSum {
+    static constexpr std::uint32_t kNone = UINT32_MAX;
+    std::uint32_t q = kNone;
+    Vec3 f, t;
+    [[gnu::always_inline]] void to(std::uint32_t i, Particles& p) {
+      if (i == q) return;
+      store(p);
+      q = i, f = p.f[i], t = p.t[i];
+    }
+    [[gnu::always_inline]] void store(Particles& p) const {
+      if (q != kNone) p.f[q] = f, p.t[q] = t;
+    }
+  };
 
   // Pass 2 of accumulate_range_lanes on the n staged pairs.
   template <int W>
@@ -291,14 +317,6 @@ class PairKernel final : public ContactKernel {
   // The fast path's force of one pair (Models::fast_force).
   [[gnu::always_inline]] PairForce fast_pair_force(Pair& pr, const Particles& p, double dt) const {
     return models_[pr.kind].fast_force(pr.jkr, kinematics(pr, p), pr.state, dt);
-  }
-
-  // Pair pr's force and torques added to its two particles, in the order of the gathered buffer.
-  [[gnu::always_inline]] static void add_pair_force(const Pair& pr, const PairForce& out, Particles& p) {
-    p.f[pr.i] += out.f_on_i;
-    p.t[pr.i] += out.t_on_i;
-    p.f[pr.j] -= out.f_on_i;
-    p.t[pr.j] += out.t_on_j;
   }
 
   // The sub-models of one pair of materials and the contact they compute.
