@@ -75,34 +75,66 @@ PairSet random_pairs(int n, const MaterialPairs& mats, unsigned seed) {
   return s;
 }
 
-// Forces, torques and pair states after one evaluation by the chunked lanes loop (accumulate_pairs) and by
-// the one-pair path (crossing_forces with every pair crossing, summed in pair order) are bit for bit equal.
-int lane_differences(const ContactLaw& law, const PairSet& start, int* engaged) {
-  PairSet a = start, b = start;
-  law.accumulate_pairs(a.pairs, a.p, kDt);
-  contact::PairBlocks blocks;
-  for (std::size_t k = 0; k < b.pairs.size(); ++k) blocks.crossing.push_back(k);
-  std::vector<PairForce> one(b.pairs.size());
-  law.crossing_forces(b.pairs, b.p, kDt, blocks, 0, 1, one);
+// Forces and torques of `start` summed in pair order from one pair at a time by the fast path's law
+// (ContactLaw::fast_pair), with the pair states it leaves.
+PairSet one_pair_at_a_time(const ContactLaw& law, const PairSet& start) {
+  PairSet b = start;
   for (auto& f : b.p.f) f = Vec3{};
   for (auto& t : b.p.t) t = Vec3{};
-  for (std::size_t k = 0; k < b.pairs.size(); ++k) {
-    const Pair& pr = b.pairs[k];
-    b.p.f[pr.i] += one[k].f_on_i;
-    b.p.t[pr.i] += one[k].t_on_i;
-    b.p.f[pr.j] -= one[k].f_on_i;
-    b.p.t[pr.j] += one[k].t_on_j;
+  for (Pair& pr : b.pairs) {
+    const Particles& q = b.p;
+    const PairKinematics kin{q.x[pr.i], q.x[pr.j], q.v[pr.i], q.v[pr.j], q.w[pr.i],
+                             q.w[pr.j], q.r[pr.i], q.r[pr.j], q.m[pr.i], q.m[pr.j]};
+    const PairForce one = law.fast_pair(pr.jkr, kin, pr.state, kDt, pr.kind);
+    b.p.f[pr.i] += one.f_on_i;
+    b.p.t[pr.i] += one.t_on_i;
+    b.p.f[pr.j] -= one.f_on_i;
+    b.p.t[pr.j] += one.t_on_j;
   }
+  return b;
+}
+
+// The same sums from the parallel path's phase 1 (crossing_forces with every pair crossing, in `parts` parts).
+PairSet all_crossing(const ContactLaw& law, const PairSet& start, std::size_t parts) {
+  PairSet c = start;
+  contact::PairBlocks blocks;
+  for (std::size_t k = 0; k < c.pairs.size(); ++k) blocks.crossing.push_back(k);
+  std::vector<PairForce> one(c.pairs.size());
+  for (std::size_t part = 0; part < parts; ++part) law.crossing_forces(c.pairs, c.p, kDt, blocks, part, parts, one);
+  for (auto& f : c.p.f) f = Vec3{};
+  for (auto& t : c.p.t) t = Vec3{};
+  for (std::size_t k = 0; k < c.pairs.size(); ++k) {
+    const Pair& pr = c.pairs[k];
+    c.p.f[pr.i] += one[k].f_on_i;
+    c.p.t[pr.i] += one[k].t_on_i;
+    c.p.f[pr.j] -= one[k].f_on_i;
+    c.p.t[pr.j] += one[k].t_on_j;
+  }
+  return c;
+}
+
+// Particles' forces and torques and pair states that differ in any bit between a and b.
+int differences(const PairSet& a, const PairSet& b) {
   int diff = 0;
-  *engaged = 0;
   for (std::size_t q = 0; q < a.p.size(); ++q) diff += !same_bits(a.p.f[q], b.p.f[q]) + !same_bits(a.p.t[q], b.p.t[q]);
   for (std::size_t k = 0; k < a.pairs.size(); ++k) {
     const ContactState &sa = a.pairs[k].state, &sb = b.pairs[k].state;
     diff += sa.active != sb.active || std::memcmp(&sa.a, &sb.a, sizeof(double)) != 0 || !same_bits(sa.xi_t, sb.xi_t) ||
             !same_bits(sa.xi_r, sb.xi_r) || std::memcmp(&sa.xi_q, &sb.xi_q, sizeof(double)) != 0;
-    *engaged += sa.active;
   }
   return diff;
+}
+
+// Forces, torques and pair states after one evaluation by the chunked lanes loop (accumulate_pairs) and by
+// the parallel path's phase 1 (crossing_forces, in three parts) against one pair at a time: the number of
+// differing bits patterns of both; *engaged: the contacts active after the evaluation.
+int lane_differences(const ContactLaw& law, const PairSet& start, int* engaged) {
+  PairSet a = start;
+  law.accumulate_pairs(a.pairs, a.p, kDt);
+  const PairSet b = one_pair_at_a_time(law, start);
+  *engaged = 0;
+  for (const Pair& pr : a.pairs) *engaged += pr.state.active;
+  return differences(a, b) + differences(all_crossing(law, start, 3), b);
 }
 
 // Every combination of the built-in models (all have lane forms); Marshall's rolling and twisting springs

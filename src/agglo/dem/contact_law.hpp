@@ -41,6 +41,11 @@ class ContactLaw {
                     const std::vector<PairForce>& crossing) const {
     kernel_->block_forces(pairs, p, dt, blocks, b, crossing);
   }
+  // The fast path's law on one pair (ContactKernel::fast_pair; tests).
+  PairForce fast_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
+                      std::uint32_t kind = 0) const {
+    return kernel_->fast_pair(jkr, k, s, dt, kind);
+  }
   // One contact evaluation: updates `s` (formation, break, springs) and returns the forces.
   PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
                           std::uint32_t kind = 0) const {

@@ -33,6 +33,10 @@ class ContactKernel {
   // pairs in order (a crossing pair's buffered force to its i only); touches only block b's particles and pairs.
   virtual void block_forces(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& blocks, std::size_t b,
                             const std::vector<PairForce>& crossing) const = 0;
+  // One pair of material pair `kind` by the fast path's law, one pair at a time (tests: the lanes of
+  // accumulate_pairs, block_forces and crossing_forces give its bits).
+  virtual PairForce fast_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
+                              std::uint32_t kind) const = 0;
   // One pair of material pair `kind` (tests and diagnostics; a virtual call per pair).
   virtual PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
                                   std::uint32_t kind) const = 0;

@@ -90,7 +90,10 @@ class PairKernel final : public ContactKernel {
   }
   void crossing_forces(std::vector<Pair>& pairs, const Particles& p, double dt, const PairBlocks& b, std::size_t part,
                        std::size_t parts, std::vector<PairForce>& crossing) const override {
-    crossing_part(pairs, p, dt, b, part, parts, crossing);
+    if (lanes::wide_lanes())
+      crossing_part_wide(pairs, p, dt, b, part, parts, crossing);
+    else
+      crossing_part(pairs, p, dt, b, part, parts, crossing);
   }
   void block_forces(std::vector<Pair>& pairs, Particles& p, double dt, const PairBlocks& b, std::size_t t,
                     const std::vector<PairForce>& crossing) const override {
@@ -118,10 +121,10 @@ class PairKernel final : public ContactKernel {
   // accumulate_range_lanes, or for models without lane forms the two of accumulate_range_scalar (first step 1 and
   // the contact root of every pair, Models::fast_engage: short independent chains of a square root and a
   // division, which the core overlaps across pairs; then the rest of the law, Models::fast_respond, and the
-  // sums). The same operations as fast_force pair by pair, so the same bits as fast_pair_force, which the
-  // parallel path's phase 1 uses: a pair whose j is >= j_end (a crossing pair of a block, pair_blocks.hpp; only
-  // with Crossing) was evaluated there, and its force crossing[k] goes to i. So the sums are the same bits on
-  // any number of threads.
+  // sums). The same operations as fast_force pair by pair, so the same bits as fast_pair, and as the parallel
+  // path's phase 1 (crossing_part_of, the same passes): a pair whose j is >= j_end (a crossing pair of a block,
+  // pair_blocks.hpp; only with Crossing) was evaluated there, and its force crossing[k] goes to i. So the sums
+  // are the same bits on any number of threads.
   template <bool Crossing, int W>
   [[gnu::always_inline]] void accumulate_range(std::vector<Pair>& pairs, Particles& p, double dt, std::size_t k0,
                                                std::size_t k1, std::uint32_t j_end, const PairForce* crossing) const {
@@ -238,14 +241,42 @@ class PairKernel final : public ContactKernel {
     }
   }
 
-  // Phase 1 of the blocks (contact_kernel.hpp): the crossing pairs of part `part`, one pair at a time.
+  // Phase 1 of the blocks (contact_kernel.hpp): the crossing pairs of part `part`, in chunks as accumulate_range
+  // (lanes where the sub-models have them, one pair at a time otherwise), each pair's force into crossing[k].
   [[gnu::flatten]] AGGLO_LANE_CLONES void crossing_part(std::vector<Pair>& pairs, const Particles& p, double dt,
                                                         const PairBlocks& b, std::size_t part, std::size_t parts,
                                                         std::vector<PairForce>& crossing) const {
-    const std::size_t n = b.crossing.size();
-    for (std::size_t c = part * n / parts; c < (part + 1) * n / parts; ++c) {
-      const std::size_t k = b.crossing[c];
-      crossing[k] = fast_pair_force(pairs[k], p, dt);
+    crossing_part_of<kNarrow>(pairs, p, dt, b, part, parts, crossing);
+  }
+  [[gnu::flatten]] AGGLO_WIDE_TARGET void crossing_part_wide(std::vector<Pair>& pairs, const Particles& p, double dt,
+                                                             const PairBlocks& b, std::size_t part, std::size_t parts,
+                                                             std::vector<PairForce>& crossing) const {
+    crossing_part_of<kWide>(pairs, p, dt, b, part, parts, crossing);
+  }
+  template <int W>
+  [[gnu::always_inline]] void crossing_part_of(std::vector<Pair>& pairs, const Particles& p, double dt,
+                                               const PairBlocks& b, std::size_t part, std::size_t parts,
+                                               std::vector<PairForce>& crossing) const {
+    const std::size_t n = b.crossing.size(), end = (part + 1) * n / parts;
+    if constexpr (!kLaned) {
+      for (std::size_t c = part * n / parts; c < end; ++c) crossing[b.crossing[c]] = fast_pair_force(pairs[b.crossing[c]], p, dt);
+    } else {
+      Staged<W> st;
+      for (std::size_t c0 = part * n / parts; c0 < end; c0 += kChunk) {
+        const std::size_t c1 = std::min(end, c0 + kChunk);
+        std::size_t m = 0;
+        for (std::size_t c = c0; c < c1; ++c) {
+          Pair& pr = pairs[b.crossing[c]];
+          double t = 0.0;
+          if (models_[pr.kind].engage_root_arg(pr.jkr, kinematics(pr, p), pr.state, t)) st.put(m++, pr, t);
+        }
+        respond_staged(st, m, p, dt);
+        std::size_t q = 0;
+        for (std::size_t c = c0; c < c1; ++c) {
+          Pair& pr = pairs[b.crossing[c]];
+          crossing[b.crossing[c]] = pr.state.active ? st.take(q++, pr.state) : PairForce{};
+        }
+      }
     }
   }
 
@@ -272,6 +303,10 @@ class PairKernel final : public ContactKernel {
     accumulate_range<true, W>(pairs, p, dt, b.first_pair[t], b.first_pair[t + 1], end, crossing.data());
   }
 
+  PairForce fast_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
+                      std::uint32_t kind) const override {
+    return models_[kind].fast_force(jkr, k, s, dt);
+  }
   PairForce evaluate_pair(const JkrPair& jkr, const PairKinematics& k, ContactState& s, double dt,
                           std::uint32_t kind) const override {
     return models_[kind].force(jkr, k, s, dt);
