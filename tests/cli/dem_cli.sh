@@ -42,6 +42,8 @@ done
 head -1 "$T/good/timeseries.csv" | grep -q '^t,kinetic_energy,electrostatic_energy,U_over_U0,radius_of_gyration,n_contacts' \
   || fail "timeseries header"
 grep -q '"broken"' "$T/good/result.json" || fail "result.json lacks broken"
+# run.json names the CPU level the run ran on (what its wall time depends on)
+grep -Eq '"cpu_level": "(x86-64-v4|x86-64-v3|x86-64-v2|x86-64|other)"' "$T/good/run.json" || fail "run.json lacks cpu_level"
 ls "$T/good" | grep -q 'tmp-' && fail "temporary files left behind"
 # The resolved config reproduces the run.
 $A -q collide "$T/good/config.resolved.toml" --out "$T/again" > /dev/null 2>&1 || fail "resolved config does not run"

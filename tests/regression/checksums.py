@@ -5,7 +5,7 @@ Usage: checksums.py OUTROOT            -> prints "<sha256>  <relative path>" for
        checksums.py OUTROOT --compare FILE -> compares with a stored list; exit 1 on any difference
 
 Stripped before hashing (they change from run to run or machine to machine, never with the physics):
-  JSON keys  wall_time_s, time_s, finished_utc, git_hash, version, threads, and any key containing 'seconds'
+  JSON keys  wall_time_s, time_s, finished_utc, git_hash, version, threads, cpu_level, and any key containing 'seconds'
              (run.json, summary.json, result.json, stats.json, vcrit.json, breakup.json);
   run.log    'wall_time=<x> s';
   CSV        columns whose header is one of those keys or contains 'seconds' (sweep.csv), and rows naming one
@@ -25,7 +25,7 @@ import re
 import sys
 from pathlib import Path
 
-DROP = {"wall_time_s", "time_s", "finished_utc", "git_hash", "version", "threads"}
+DROP = {"wall_time_s", "time_s", "finished_utc", "git_hash", "version", "threads", "cpu_level"}
 
 
 def dropped(key: str) -> bool:

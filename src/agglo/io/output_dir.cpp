@@ -233,6 +233,18 @@ void OutputDir::write_json(const std::string& name, const nlohmann::json& j) con
   write(name, [&](std::ostream& o) { o << j.dump(2) << '\n'; });
 }
 
+std::string cpu_level() {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("x86-64-v4")) return "x86-64-v4";
+  if (__builtin_cpu_supports("x86-64-v3")) return "x86-64-v3";
+  if (__builtin_cpu_supports("x86-64-v2")) return "x86-64-v2";
+  return "x86-64";
+#else
+  return "other";
+#endif
+}
+
 nlohmann::json run_metadata(const std::string& command, const std::string& case_file, long long seed,
                             double wall_time_s) {
   auto now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
@@ -245,6 +257,7 @@ nlohmann::json run_metadata(const std::string& command, const std::string& case_
                         {"case", case_file},
                         {"seed", seed},
                         {"threads", omp_get_max_threads()},
+                        {"cpu_level", cpu_level()},
                         {"wall_time_s", wall_time_s},
                         {"finished_utc", buf}};
 }

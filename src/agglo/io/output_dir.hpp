@@ -57,7 +57,12 @@ OutputError output_error(const std::filesystem::path& file, const std::string& r
 // temporary file and throws output_error.
 void write_file_atomic(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body);
 
-// Metadata common to every run (run.json): version, git hash, command, case, seed, threads, time.
+// The x86-64 micro-architecture level of this CPU ("x86-64-v4": AVX-512, where the DEM pair loop runs eight
+// pairs at a time; "x86-64-v3": AVX2; "x86-64-v2", "x86-64"; "other" off x86-64): what a run's wall time
+// depends on beyond the thread count (the results do not).
+std::string cpu_level();
+
+// Metadata common to every run (run.json): version, git hash, command, case, seed, threads, CPU level, time.
 nlohmann::json run_metadata(const std::string& command, const std::string& case_file, long long seed,
                             double wall_time_s);
 
