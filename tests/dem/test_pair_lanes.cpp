@@ -75,41 +75,42 @@ PairSet random_pairs(int n, const MaterialPairs& mats, unsigned seed) {
   return s;
 }
 
-// Forces and torques of `start` summed in pair order from one pair at a time by the fast path's law
-// (ContactLaw::fast_pair), with the pair states it leaves.
+// The particles' forces and torques of s: per-pair forces `one` added in pair order (from zero).
+void add_in_pair_order(PairSet& s, const std::vector<PairForce>& one) {
+  for (auto& f : s.p.f) f = Vec3{};
+  for (auto& t : s.p.t) t = Vec3{};
+  for (std::size_t k = 0; k < s.pairs.size(); ++k) {
+    const Pair& pr = s.pairs[k];
+    s.p.f[pr.i] += one[k].f_on_i;
+    s.p.t[pr.i] += one[k].t_on_i;
+    s.p.f[pr.j] -= one[k].f_on_i;
+    s.p.t[pr.j] += one[k].t_on_j;
+  }
+}
+
+// Forces and torques of `start` from one pair at a time by the fast path's law (ContactLaw::fast_pair), with
+// the pair states it leaves.
 PairSet one_pair_at_a_time(const ContactLaw& law, const PairSet& start) {
   PairSet b = start;
-  for (auto& f : b.p.f) f = Vec3{};
-  for (auto& t : b.p.t) t = Vec3{};
+  std::vector<PairForce> one;
   for (Pair& pr : b.pairs) {
     const Particles& q = b.p;
     const PairKinematics kin{q.x[pr.i], q.x[pr.j], q.v[pr.i], q.v[pr.j], q.w[pr.i],
                              q.w[pr.j], q.r[pr.i], q.r[pr.j], q.m[pr.i], q.m[pr.j]};
-    const PairForce one = law.fast_pair(pr.jkr, kin, pr.state, kDt, pr.kind);
-    b.p.f[pr.i] += one.f_on_i;
-    b.p.t[pr.i] += one.t_on_i;
-    b.p.f[pr.j] -= one.f_on_i;
-    b.p.t[pr.j] += one.t_on_j;
+    one.push_back(law.fast_pair(pr.jkr, kin, pr.state, kDt, pr.kind));
   }
+  add_in_pair_order(b, one);
   return b;
 }
 
-// The same sums from the parallel path's phase 1 (crossing_forces with every pair crossing, in `parts` parts).
+// The same from the parallel path's phase 1 (crossing_forces with every pair crossing, in `parts` parts).
 PairSet all_crossing(const ContactLaw& law, const PairSet& start, std::size_t parts) {
   PairSet c = start;
   contact::PairBlocks blocks;
   for (std::size_t k = 0; k < c.pairs.size(); ++k) blocks.crossing.push_back(k);
   std::vector<PairForce> one(c.pairs.size());
   for (std::size_t part = 0; part < parts; ++part) law.crossing_forces(c.pairs, c.p, kDt, blocks, part, parts, one);
-  for (auto& f : c.p.f) f = Vec3{};
-  for (auto& t : c.p.t) t = Vec3{};
-  for (std::size_t k = 0; k < c.pairs.size(); ++k) {
-    const Pair& pr = c.pairs[k];
-    c.p.f[pr.i] += one[k].f_on_i;
-    c.p.t[pr.i] += one[k].t_on_i;
-    c.p.f[pr.j] -= one[k].f_on_i;
-    c.p.t[pr.j] += one[k].t_on_j;
-  }
+  add_in_pair_order(c, one);
   return c;
 }
 

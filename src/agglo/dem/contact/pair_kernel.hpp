@@ -146,17 +146,27 @@ class PairKernel final : public ContactKernel {
     Staged<W> st;
     for (std::size_t c0 = k0; c0 < k1; c0 += kChunk) {
       const std::size_t c1 = std::min(k1, c0 + kChunk);
-      std::size_t n = 0;
-      for (std::size_t k = c0; k < c1; ++k) {
-        Pair& pr = pairs[k];
-        if (Crossing && pr.j >= j_end) continue;
-        double t = 0.0;
-        if (models_[pr.kind].engage_root_arg(pr.jkr, kinematics(pr, p), pr.state, t)) st.put(n++, pr, t);
-      }
-      respond_staged(st, n, p, dt);
+      respond_engaged(
+          st, p, dt, c0, c1, [&](std::size_t k) -> Pair& { return pairs[k]; },
+          [&](const Pair& pr) { return Crossing && pr.j >= j_end; });
       std::size_t q = 0;
       add_chunk<Crossing>(pairs, p, c0, c1, j_end, crossing, [&](Pair& pr) { return st.take(q++, pr.state); });
     }
+  }
+
+  // Passes 1 and 2 of a chunk: step 1 of pairs pair_at(c0) .. pair_at(c1 - 1) but those skip(pair) names, the
+  // engaged ones staged into st in that order, then the rest of their law (respond_staged).
+  template <int W, class PairAt, class Skip>
+  [[gnu::always_inline]] void respond_engaged(Staged<W>& st, const Particles& p, double dt, std::size_t c0,
+                                              std::size_t c1, PairAt&& pair_at, Skip&& skip) const {
+    std::size_t n = 0;
+    for (std::size_t c = c0; c < c1; ++c) {
+      Pair& pr = pair_at(c);
+      if (skip(pr)) continue;
+      double t = 0.0;
+      if (models_[pr.kind].engage_root_arg(pr.jkr, kinematics(pr, p), pr.state, t)) st.put(n++, pr, t);
+    }
+    respond_staged(st, n, p, dt);
   }
 
   // The sums of pairs [c0, c1) in pair order: force_of(pair) of each active pair (an engaged contact is active
@@ -259,18 +269,15 @@ class PairKernel final : public ContactKernel {
                                                std::vector<PairForce>& crossing) const {
     const std::size_t n = b.crossing.size(), end = (part + 1) * n / parts;
     if constexpr (!kLaned) {
-      for (std::size_t c = part * n / parts; c < end; ++c) crossing[b.crossing[c]] = fast_pair_force(pairs[b.crossing[c]], p, dt);
+      for (std::size_t c = part * n / parts; c < end; ++c)
+        crossing[b.crossing[c]] = fast_pair_force(pairs[b.crossing[c]], p, dt);
     } else {
       Staged<W> st;
       for (std::size_t c0 = part * n / parts; c0 < end; c0 += kChunk) {
         const std::size_t c1 = std::min(end, c0 + kChunk);
-        std::size_t m = 0;
-        for (std::size_t c = c0; c < c1; ++c) {
-          Pair& pr = pairs[b.crossing[c]];
-          double t = 0.0;
-          if (models_[pr.kind].engage_root_arg(pr.jkr, kinematics(pr, p), pr.state, t)) st.put(m++, pr, t);
-        }
-        respond_staged(st, m, p, dt);
+        respond_engaged(
+            st, p, dt, c0, c1, [&](std::size_t c) -> Pair& { return pairs[b.crossing[c]]; },
+            [](const Pair&) { return false; });
         std::size_t q = 0;
         for (std::size_t c = c0; c < c1; ++c) {
           Pair& pr = pairs[b.crossing[c]];
